@@ -1,0 +1,132 @@
+// Shader binding table layout: pure arithmetic over a device's SBT properties.
+//
+//   proceduray::SbtProperties props{.handle_size = 32, .handle_alignment = 16,
+//                                   .base_alignment = 32, .max_stride = 16384};
+//   auto layout = proceduray::layout_sbt(props, {{
+//       {.count = 1, .max_data_size = 0},    // raygen
+//       {.count = 2, .max_data_size = 0},    // miss
+//       {.count = 4, .max_data_size = 16},   // hit
+//       {}}});                                // callable
+//   layout.data_offset(proceduray::SbtRegionKind::hit, 3);  // where record 3's data goes
+//
+// The buffer this describes must itself start at a multiple of base_alignment.
+//
+//   offset 0          base-aligned       base-aligned             base-aligned
+//   | raygen record  | miss 0 | miss 1 | hit 0 | hit 1 | ...     | callable ...
+//   |<- stride ----->|<-stride->        |<-stride->
+//   record = [ group handle (handle_size) | record data (shaderRecordEXT) | pad ]
+//   stride = align(handle_size + max data of the region, handle_alignment)
+//   raygen: stride = size = align(handle_size + data, base_alignment) (Vulkan requires size == stride)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace proceduray {
+
+/// Ray-tracing pipeline properties the SBT layout depends on (VkPhysicalDeviceRayTracingPipelinePropertiesKHR).
+struct SbtProperties {
+  std::uint32_t handle_size = 32;        ///< shaderGroupHandleSize
+  std::uint32_t handle_alignment = 32;   ///< shaderGroupHandleAlignment: record stride multiple
+  std::uint32_t base_alignment = 64;     ///< shaderGroupBaseAlignment: region start multiple
+  std::uint32_t max_stride = 4096;       ///< maxShaderGroupStride
+};
+
+/// The four SBT regions, in the order they are laid out.
+enum class SbtRegionKind : std::uint32_t { raygen = 0, miss = 1, hit = 2, callable = 3 };
+
+inline const char* to_string(SbtRegionKind kind) {
+  constexpr const char* names[] = {"raygen", "miss", "hit", "callable"};
+  return names[static_cast<std::uint32_t>(kind)];
+}
+
+/// What one region holds: its record count and the largest record data (bytes after the handle).
+struct SbtRegionRecords {
+  std::uint32_t count = 0;          ///< records in the region; 0 = empty region
+  std::uint32_t max_data_size = 0;  ///< largest shaderRecordEXT block of the region; 0 = handles only
+};
+
+/// One region as vkCmdTraceRaysKHR sees it, offsets relative to the SBT buffer start.
+struct SbtRegion {
+  std::uint64_t offset = 0;  ///< start, a multiple of base_alignment
+  std::uint64_t stride = 0;  ///< bytes between records; 0 for an empty region
+  std::uint64_t size = 0;    ///< bytes the trace call reads (raygen: one record)
+  std::uint32_t count = 0;   ///< records in the region
+};
+
+/// The computed table: where every region and record lies.
+struct SbtLayout {
+  SbtProperties properties;
+  std::array<SbtRegion, 4> regions{};
+  std::uint64_t size = 0;  ///< bytes of the whole buffer
+
+  const SbtRegion& region(SbtRegionKind kind) const { return regions[static_cast<std::uint32_t>(kind)]; }
+
+  /// Byte offset of a record's handle; throws std::out_of_range past the region's count.
+  std::uint64_t record_offset(SbtRegionKind kind, std::uint32_t index) const {
+    const SbtRegion& r = region(kind);
+    if (index >= r.count) {
+      throw std::out_of_range("SbtLayout::record_offset: " + std::string(to_string(kind)) + " record " +
+                              std::to_string(index) + " does not exist; the region holds " +
+                              std::to_string(r.count) + " records");
+    }
+    return r.offset + std::uint64_t{index} * r.stride;
+  }
+
+  /// Byte offset of a record's data (its shaderRecordEXT block), right after the handle.
+  std::uint64_t data_offset(SbtRegionKind kind, std::uint32_t index) const {
+    return record_offset(kind, index) + properties.handle_size;
+  }
+};
+
+namespace detail {
+constexpr bool is_power_of_two(std::uint64_t v) { return v != 0 && (v & (v - 1)) == 0; }
+constexpr std::uint64_t align_up(std::uint64_t v, std::uint64_t a) { return (v + a - 1) / a * a; }
+}  // namespace detail
+
+/// Lays out the four regions; throws std::invalid_argument for impossible properties and
+/// std::length_error when a record stride exceeds the device's maximum.
+inline SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegionRecords, 4>& records) {
+  using detail::align_up;
+  using detail::is_power_of_two;
+  if (props.handle_size == 0 || !is_power_of_two(props.handle_alignment) || !is_power_of_two(props.base_alignment) ||
+      props.base_alignment < props.handle_alignment) {
+    throw std::invalid_argument(
+        "layout_sbt: device properties handle_size " + std::to_string(props.handle_size) + ", handle_alignment " +
+        std::to_string(props.handle_alignment) + ", base_alignment " + std::to_string(props.base_alignment) +
+        " are impossible; alignments must be powers of two with handle_alignment <= base_alignment "
+        "(read them from VkPhysicalDeviceRayTracingPipelinePropertiesKHR)");
+  }
+  if (records[0].count == 0) {
+    throw std::invalid_argument("layout_sbt: the raygen region is empty; a trace needs one raygen record");
+  }
+  SbtLayout layout;
+  layout.properties = props;
+  std::uint64_t cursor = 0;
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const auto kind = static_cast<SbtRegionKind>(k);
+    const SbtRegionRecords& in = records[k];
+    SbtRegion& out = layout.regions[k];
+    out.count = in.count;
+    if (in.count == 0) continue;
+    const std::uint64_t record = std::uint64_t{props.handle_size} + in.max_data_size;
+    out.stride = align_up(record, kind == SbtRegionKind::raygen ? props.base_alignment : props.handle_alignment);
+    if (out.stride > props.max_stride) {
+      throw std::length_error("layout_sbt: " + std::string(to_string(kind)) + " record stride " +
+                              std::to_string(out.stride) + " bytes (handle " + std::to_string(props.handle_size) +
+                              " + data " + std::to_string(in.max_data_size) + ", aligned) exceeds the device's "
+                              "maxShaderGroupStride " + std::to_string(props.max_stride) +
+                              "; move large record data into a buffer and store its device address instead");
+    }
+    out.offset = align_up(cursor, props.base_alignment);
+    // Vulkan requires the raygen region's size to equal its stride: a trace reads one raygen record.
+    out.size = kind == SbtRegionKind::raygen ? out.stride : out.stride * in.count;
+    cursor = out.offset + out.stride * in.count;
+  }
+  layout.size = cursor;
+  return layout;
+}
+
+}  // namespace proceduray
