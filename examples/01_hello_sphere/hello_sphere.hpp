@@ -1,0 +1,198 @@
+// Two procedural spheres: one AABB BLAS, two instances of it, a colour per instance
+// carried in its hit record, a background colour in the miss record.
+//
+//   proceduray::vk::Context ctx;
+//   hello_sphere::HelloSphere scene(ctx);
+//   std::vector<std::uint8_t> rgba = scene.render(640, 360);
+//
+// SBT (one ray type, so record = instance offset + geometry index * 1 + 0):
+//   raygen | miss: background | hit 0: red sphere | hit 1: blue sphere
+//   instance 0 -> sbtOffset 0 -> hit 0;  instance 1 -> sbtOffset 1 -> hit 1
+#pragma once
+
+#include <proceduray/proceduray.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace hello_sphere {
+
+namespace pr = proceduray;
+namespace vk = proceduray::vk;
+
+/// Pinhole camera as the raygen shader reads it (push constants).
+struct Camera {
+  glm::vec4 eye;
+  glm::vec4 forward;  ///< unit view direction
+  glm::vec4 right;    ///< scaled by tan(fov/2) * aspect
+  glm::vec4 up;       ///< scaled by tan(fov/2)
+};
+
+struct HitRecord {
+  glm::vec4 albedo;
+};
+struct MissRecord {
+  glm::vec4 background;
+};
+
+inline const char* const raygen_glsl = R"(#version 460
+#extension GL_EXT_ray_tracing : require
+layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;
+layout(set = 0, binding = 1, rgba8) uniform writeonly image2D image;
+layout(push_constant) uniform Camera { vec4 eye; vec4 forward; vec4 right; vec4 up; } camera;
+layout(location = 0) rayPayloadEXT vec3 colour;
+void main() {
+  vec2 uv = (vec2(gl_LaunchIDEXT.xy) + 0.5) / vec2(gl_LaunchSizeEXT.xy) * 2.0 - 1.0;
+  vec3 direction = normalize(camera.forward.xyz + uv.x * camera.right.xyz - uv.y * camera.up.xyz);
+  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, 0, camera.eye.xyz, 0.0, direction, 1e30, 0);
+  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(colour, 1.0));
+}
+)";
+
+inline const char* const miss_glsl = R"(#version 460
+#extension GL_EXT_ray_tracing : require
+layout(shaderRecordEXT, std430) buffer MissRecord { vec4 background; };
+layout(location = 0) rayPayloadInEXT vec3 colour;
+void main() { colour = background.rgb; }
+)";
+
+inline const char* const intersection_glsl = R"(#version 460
+#extension GL_EXT_ray_tracing : require
+#include "primitives/sphere.glsl"
+hitAttributeEXT vec3 object_normal;
+void main() {
+  vec3 o = gl_ObjectRayOriginEXT;
+  vec3 d = gl_ObjectRayDirectionEXT;
+  float t0, t1;
+  if (!ray_sphere(o, d, vec3(0.0), 1.0, t0, t1)) return;
+  float t = t0 >= gl_RayTminEXT ? t0 : t1;
+  if (t < gl_RayTminEXT || t > gl_RayTmaxEXT) return;
+  object_normal = o + t * d;
+  reportIntersectionEXT(t, 0u);
+}
+)";
+
+inline const char* const closest_hit_glsl = R"(#version 460
+#extension GL_EXT_ray_tracing : require
+layout(shaderRecordEXT, std430) buffer HitRecord { vec4 albedo; };
+hitAttributeEXT vec3 object_normal;
+layout(location = 0) rayPayloadInEXT vec3 colour;
+void main() {
+  // Normals take the inverse transpose of the object-to-world transform.
+  vec3 n = normalize(transpose(mat3(gl_WorldToObjectEXT)) * object_normal);
+  vec3 light = normalize(vec3(0.4, 0.8, 0.6));
+  colour = albedo.rgb * (0.3 + 0.7 * max(dot(n, light), 0.0));
+}
+)";
+
+/// The scene's fixed numbers, shared by the renderer and the tests that check its pixels.
+struct Layout {
+  static constexpr std::array<glm::vec3, 2> centres{glm::vec3(-1.2f, 0.0f, 0.0f), glm::vec3(1.3f, 0.0f, 0.0f)};
+  static constexpr std::array<float, 2> radii{1.0f, 0.8f};
+  static constexpr std::array<glm::vec4, 2> albedo{glm::vec4(0.9f, 0.15f, 0.1f, 1.0f), glm::vec4(0.1f, 0.3f, 0.9f, 1.0f)};
+  static constexpr glm::vec4 background{0.1f, 0.12f, 0.16f, 1.0f};
+  static constexpr glm::vec3 eye{0.0f, 0.6f, 6.0f};
+  static constexpr float fov_y_degrees = 40.0f;
+};
+
+/// Camera looking at the origin from Layout::eye.
+inline Camera make_camera(std::uint32_t width, std::uint32_t height) {
+  const glm::vec3 forward = glm::normalize(-Layout::eye);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tan_half = std::tan(glm::radians(Layout::fov_y_degrees) * 0.5f);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  return {glm::vec4(Layout::eye, 1), glm::vec4(forward, 0), glm::vec4(right * tan_half * aspect, 0),
+          glm::vec4(up * tan_half, 0)};
+}
+
+/// Pixel where a world point appears (the inverse of the raygen shader's mapping).
+inline glm::ivec2 project(const Camera& c, glm::vec3 p, std::uint32_t width, std::uint32_t height) {
+  const glm::vec3 v = p - glm::vec3(c.eye);
+  const float z = glm::dot(v, glm::vec3(c.forward));
+  const float u = glm::dot(v, glm::vec3(c.right)) / glm::dot(glm::vec3(c.right), glm::vec3(c.right)) / z;
+  const float w = glm::dot(v, glm::vec3(c.up)) / glm::dot(glm::vec3(c.up), glm::vec3(c.up)) / z;
+  return {static_cast<int>(std::floor((u + 1) * 0.5f * width)), static_cast<int>(std::floor((1 - w) * 0.5f * height))};
+}
+
+/// The GPU objects of the scene, built once; render() traces it at any size.
+class HelloSphere {
+ public:
+  explicit HelloSphere(const vk::Context& ctx)
+      : m_ctx(&ctx),
+        m_blas(build_unit_sphere_blas(ctx)),
+        m_tlas(vk::build_tlas(ctx, instances())),
+        m_set(ctx, {{0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}),
+        m_pipeline(ctx, pipeline_desc(m_set)),
+        m_sbt(ctx, m_pipeline, sbt_layout(ctx), records()) {
+    m_set.write(0, m_tlas);
+  }
+
+  /// Traces one frame and returns its RGBA8 pixels.
+  std::vector<std::uint8_t> render(std::uint32_t width, std::uint32_t height) {
+    vk::check_trace_size(*m_ctx, width, height);
+    vk::StorageImage image(*m_ctx, width, height);
+    m_set.write(1, image.view());
+    const Camera camera = make_camera(width, height);
+    vk::trace(*m_ctx, m_pipeline, m_set, m_sbt, width, height, vk::bytes_of(camera));
+    return image.read();
+  }
+
+  const vk::ShaderBindingTable& sbt() const noexcept { return m_sbt; }
+
+ private:
+  static vk::AccelerationStructure build_unit_sphere_blas(const vk::Context& ctx) {
+    const VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
+    const vk::AabbGeometry geometry{{&box, 1}};
+    return vk::build_blas(ctx, {&geometry, 1});
+  }
+  std::vector<vk::Instance> instances() const {
+    std::vector<vk::Instance> out;
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      glm::mat4 m = glm::translate(glm::mat4(1.0f), Layout::centres[i]);
+      m = glm::scale(m, glm::vec3(Layout::radii[i]));
+      out.push_back({.blas = &m_blas, .transform = m, .sbt_offset = i});
+    }
+    return out;
+  }
+  static vk::PipelineDesc pipeline_desc(const vk::DescriptorSet& set) {
+    vk::PipelineDesc desc;
+    auto stage = [&](vk::ShaderStage s, const char* name, const char* code) {
+      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = name, .code = code}));
+    };
+    const auto rgen = stage(vk::ShaderStage::raygen, "hello_sphere.rgen", raygen_glsl);
+    const auto miss = stage(vk::ShaderStage::miss, "hello_sphere.rmiss", miss_glsl);
+    const auto chit = stage(vk::ShaderStage::closest_hit, "hello_sphere.rchit", closest_hit_glsl);
+    const auto isec = stage(vk::ShaderStage::intersection, "hello_sphere.rint", intersection_glsl);
+    desc.groups = {vk::ShaderGroup::general_shader(rgen), vk::ShaderGroup::general_shader(miss),
+                   vk::ShaderGroup::procedural(chit, isec)};
+    desc.set_layouts = {set.layout()};
+    desc.push_constant_size = sizeof(Camera);
+    return desc;
+  }
+  static pr::SbtLayout sbt_layout(const vk::Context& ctx) {
+    return pr::layout_sbt(ctx.sbt_properties(),
+                          {{{1, 0}, {1, sizeof(MissRecord)}, {2, sizeof(HitRecord)}, {}}});
+  }
+  std::vector<vk::SbtRecord> records() const {
+    return {{pr::SbtRegionKind::raygen, 0, 0},
+            {pr::SbtRegionKind::miss, 0, 1, vk::bytes_of(m_miss)},
+            {pr::SbtRegionKind::hit, 0, 2, vk::bytes_of(m_hits[0])},
+            {pr::SbtRegionKind::hit, 1, 2, vk::bytes_of(m_hits[1])}};
+  }
+
+  const vk::Context* m_ctx;
+  MissRecord m_miss{Layout::background};
+  std::array<HitRecord, 2> m_hits{HitRecord{Layout::albedo[0]}, HitRecord{Layout::albedo[1]}};
+  vk::AccelerationStructure m_blas;
+  vk::AccelerationStructure m_tlas;
+  vk::DescriptorSet m_set;
+  vk::Pipeline m_pipeline;
+  vk::ShaderBindingTable m_sbt;
+};
+
+}  // namespace hello_sphere

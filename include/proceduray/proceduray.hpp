@@ -1,0 +1,25 @@
+// Proceduray: ray tracing of procedural geometry with Vulkan, in a few typed calls.
+//
+//   #include <proceduray/proceduray.hpp>
+//   proceduray::vk::Context ctx;                       // GPU if present, else lavapipe
+//   auto blas = proceduray::vk::build_blas(ctx, ...);  // AABBs of procedural primitives
+//   ...                                                // see examples/01_hello_sphere
+//
+// Layers: scene/ (pure, no Vulkan) and shader/ (pure) under vk/ (the thin backend), and
+// image/ for output. Each header also compiles on its own.
+#pragma once
+
+#include <proceduray/image/png.hpp>
+#include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/vk/acceleration.hpp>
+#include <proceduray/vk/buffer.hpp>
+#include <proceduray/vk/context.hpp>
+#include <proceduray/vk/descriptors.hpp>
+#include <proceduray/vk/error.hpp>
+#include <proceduray/vk/handle.hpp>
+#include <proceduray/vk/pipeline.hpp>
+#include <proceduray/vk/shader_binding_table.hpp>
+#include <proceduray/vk/shader_compiler.hpp>
+#include <proceduray/vk/storage_image.hpp>
+#include <proceduray/vk/structs.hpp>
+#include <proceduray/vk/trace.hpp>

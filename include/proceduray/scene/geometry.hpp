@@ -1,0 +1,165 @@
+// Geometry: triangles (vertices + indices) or procedural (AABBs), its instance transforms,
+// its opaque flag and the BLAS it lives in.
+//
+//   auto pacman = scene.add_geometry("Pacman", proceduray::GeometryDesc::procedural(
+//       {{glm::vec3(-0.5f), glm::vec3(0.5f)}},                       // one AABB
+//       {proceduray::instance_transform(glm::translate(glm::mat4(1), {0, 1, 0}))}));
+//
+// Each geometry gets its own BLAS unless `blas` names one shared with other geometries of
+// the same kind; its geometry index is its position in that BLAS (registration order).
+// Instances belong to the BLAS: geometries sharing one declare the same instances, or none.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "proceduray/scene/errors.hpp"
+
+namespace proceduray {
+
+/// Triangles or AABBs; a BLAS holds one kind.
+enum class GeometryKind : std::uint32_t { triangles = 0, procedural = 1 };
+
+inline const char* to_string(GeometryKind kind) { return kind == GeometryKind::triangles ? "triangles" : "procedural"; }
+
+/// An axis-aligned box in BLAS space.
+struct Aabb {
+  glm::vec3 min{-1.0f};  ///< default: the unit box's corner (-1, -1, -1)
+  glm::vec3 max{1.0f};   ///< default: (1, 1, 1)
+};
+
+/// A triangle mesh: positions and a triangle list.
+struct TriangleMesh {
+  std::vector<glm::vec3> vertices;      ///< positions
+  std::vector<std::uint32_t> indices;   ///< three per triangle
+};
+
+/// Rows of a 3x4 affine transform: t[r][c] is row r, column c; memory-identical to VkTransformMatrixKHR.
+using InstanceTransform = glm::mat3x4;
+
+/// The identity instance transform.
+inline InstanceTransform identity_transform() { return InstanceTransform(glm::transpose(glm::mat4(1.0f))); }
+
+/// Converts a column-major glm::mat4 (affine) to an InstanceTransform.
+inline InstanceTransform instance_transform(const glm::mat4& m) { return InstanceTransform(glm::transpose(m)); }
+
+/// What the user declares for a geometry.
+struct GeometryDesc {
+  GeometryKind kind = GeometryKind::procedural;  ///< default: procedural
+  TriangleMesh mesh;                             ///< triangles only
+  std::vector<Aabb> aabbs;                       ///< procedural only: one or more boxes
+  std::vector<InstanceTransform> instances;      ///< TLAS instances of its BLAS; empty = inherit from the BLAS
+  bool opaque = true;                            ///< VK_GEOMETRY_OPAQUE_BIT; default on (any-hit skipped)
+  std::string blas;                              ///< BLAS shared with other geometries; empty = its own BLAS
+
+  /// A procedural geometry.
+  static GeometryDesc procedural(std::vector<Aabb> aabbs, std::vector<InstanceTransform> instances = {identity_transform()}) {
+    GeometryDesc d;
+    d.kind = GeometryKind::procedural;
+    d.aabbs = std::move(aabbs);
+    d.instances = std::move(instances);
+    return d;
+  }
+  /// A triangle geometry.
+  static GeometryDesc triangles(TriangleMesh mesh, std::vector<InstanceTransform> instances = {identity_transform()}) {
+    GeometryDesc d;
+    d.kind = GeometryKind::triangles;
+    d.mesh = std::move(mesh);
+    d.instances = std::move(instances);
+    return d;
+  }
+};
+
+/// A registered geometry.
+struct Geometry {
+  GeometryDesc desc;               ///< as declared (instances moved to the BLAS)
+  std::uint32_t blas = 0;          ///< index of its BLAS in Scene::blases()
+  std::uint32_t geometry_index = 0;  ///< position in its BLAS: Vulkan's geometryIndex
+};
+
+namespace detail {
+inline std::string vec_string(const glm::vec3& v) {
+  return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace detail
+
+/// Throws InvalidGeometryError for an AABB with min > max or non-finite bounds.
+inline void validate(const Aabb& box, std::string_view where) {
+  if (!detail::finite(box.min) || !detail::finite(box.max)) {
+    throw InvalidGeometryError(std::string(where) + " has non-finite bounds min " + detail::vec_string(box.min) +
+                               " max " + detail::vec_string(box.max) + "; give finite bounds (NaN or inf "
+                               "breaks BVH builds)");
+  }
+  if (box.min.x > box.max.x || box.min.y > box.max.y || box.min.z > box.max.z) {
+    throw InvalidGeometryError(std::string(where) + " has min " + detail::vec_string(box.min) + " > max " +
+                               detail::vec_string(box.max) + "; swap the corners so min <= max on every axis");
+  }
+}
+
+/// Throws InvalidGeometryError for a non-finite or singular transform.
+inline void validate(const InstanceTransform& t, std::string_view where) {
+  float largest = 0.0f;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      if (!std::isfinite(t[r][c])) {
+        throw InvalidGeometryError(std::string(where) + " has a non-finite element at row " + std::to_string(r) +
+                                   " column " + std::to_string(c) + " (" + std::to_string(t[r][c]) +
+                                   "); give a finite affine transform");
+      }
+      if (c < 3) largest = std::max(largest, std::fabs(t[r][c]));
+    }
+  }
+  const glm::mat3 linear{glm::vec3(t[0]), glm::vec3(t[1]), glm::vec3(t[2])};
+  const double det = glm::determinant(linear);
+  const double scale = double{largest} * largest * largest;
+  if (!(std::fabs(det) > 1e-9 * scale) || largest == 0.0f) {
+    throw InvalidGeometryError(std::string(where) + " is singular (determinant " + std::to_string(det) +
+                               "); an instance needs an invertible 3x3 part: check for a zero scale");
+  }
+}
+
+/// Throws InvalidGeometryError for an empty or out-of-range mesh, no AABBs, a bad AABB or transform.
+inline void validate(const GeometryDesc& desc, std::string_view id, std::string_view operation) {
+  const std::string where = std::string(operation) + ": geometry \"" + std::string(id) + "\"";
+  if (desc.kind == GeometryKind::procedural) {
+    if (desc.aabbs.empty()) {
+      throw InvalidGeometryError(where + " is procedural with no AABB; give it at least one box");
+    }
+    if (!desc.mesh.vertices.empty() || !desc.mesh.indices.empty()) {
+      throw InvalidGeometryError(where + " is procedural but has a triangle mesh; use kind = triangles or drop the mesh");
+    }
+    for (std::size_t i = 0; i < desc.aabbs.size(); ++i) validate(desc.aabbs[i], where + " AABB " + std::to_string(i));
+  } else {
+    const TriangleMesh& m = desc.mesh;
+    if (m.indices.empty() || m.indices.size() % 3 != 0) {
+      throw InvalidGeometryError(where + " has " + std::to_string(m.indices.size()) +
+                                 " indices; a triangle list needs a non-zero multiple of 3");
+    }
+    if (!desc.aabbs.empty()) {
+      throw InvalidGeometryError(where + " is triangles but has AABBs; use kind = procedural or drop the AABBs");
+    }
+    for (std::size_t i = 0; i < m.indices.size(); ++i) {
+      if (m.indices[i] >= m.vertices.size()) {
+        throw InvalidGeometryError(where + " index " + std::to_string(i) + " is " + std::to_string(m.indices[i]) +
+                                   " but there are " + std::to_string(m.vertices.size()) + " vertices; fix the index buffer");
+      }
+    }
+    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+      if (!detail::finite(m.vertices[i])) {
+        throw InvalidGeometryError(where + " vertex " + std::to_string(i) + " is " + detail::vec_string(m.vertices[i]) +
+                                   "; give finite positions");
+      }
+    }
+  }
+  for (std::size_t i = 0; i < desc.instances.size(); ++i) {
+    validate(desc.instances[i], where + " instance " + std::to_string(i) + " transform");
+  }
+}
+
+}  // namespace proceduray

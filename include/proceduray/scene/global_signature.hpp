@@ -1,0 +1,69 @@
+// The global signature: descriptor bindings and push constants every shader sees
+// (DXR's global root signature; in Vulkan, descriptor set layouts + a push constant range).
+//
+//   auto global = scene.add_global_signature("Global", {.bindings = {
+//       {.kind = proceduray::BindingKind::acceleration_structure, .binding = 0},
+//       {.kind = proceduray::BindingKind::storage_image, .binding = 1},
+//       {.kind = proceduray::BindingKind::uniform_buffer, .binding = 2}},
+//     .push_constant_size = 16});
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "proceduray/scene/errors.hpp"
+
+namespace proceduray {
+
+/// What a descriptor binding holds.
+enum class BindingKind : std::uint32_t { acceleration_structure, storage_image, uniform_buffer, storage_buffer };
+
+inline const char* to_string(BindingKind kind) {
+  constexpr const char* names[] = {"acceleration_structure", "storage_image", "uniform_buffer", "storage_buffer"};
+  return names[static_cast<std::uint32_t>(kind)];
+}
+
+/// One descriptor binding, visible to every ray-tracing stage.
+struct Binding {
+  BindingKind kind = BindingKind::storage_buffer;  ///< default: storage buffer
+  std::uint32_t binding = 0;                       ///< binding number in its set
+  std::uint32_t set = 0;                           ///< descriptor set; default 0
+  std::uint32_t count = 1;                         ///< array size; default 1
+};
+
+/// What the user declares for a global signature.
+struct GlobalSignatureDesc {
+  std::vector<Binding> bindings;         ///< descriptor bindings; none by default
+  std::uint32_t push_constant_size = 0;  ///< bytes of push constants, a multiple of 4; 0 = none
+};
+
+/// A registered global signature.
+struct GlobalSignature {
+  GlobalSignatureDesc desc;  ///< as declared
+};
+
+/// Throws SceneError for a (set, binding) used twice, a zero count or a push constant size not a multiple of 4.
+inline void validate(const GlobalSignatureDesc& desc, std::string_view id, std::string_view operation) {
+  const std::string where = std::string(operation) + ": global signature \"" + std::string(id) + "\"";
+  for (std::size_t i = 0; i < desc.bindings.size(); ++i) {
+    const Binding& b = desc.bindings[i];
+    if (b.count == 0) {
+      throw SceneError(where + " binding " + std::to_string(b.binding) + " has count 0; use count >= 1");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (desc.bindings[j].set == b.set && desc.bindings[j].binding == b.binding) {
+        throw DuplicateIdError(where + " declares set " + std::to_string(b.set) + " binding " +
+                               std::to_string(b.binding) + " twice; give each binding its own number");
+      }
+    }
+  }
+  if (desc.push_constant_size % 4 != 0) {
+    throw SceneError(where + " push_constant_size " + std::to_string(desc.push_constant_size) +
+                     " is not a multiple of 4; pad the push constant block");
+  }
+}
+
+}  // namespace proceduray

@@ -1,0 +1,23 @@
+// A local signature: the type of the record data (shaderRecordEXT block) its entries carry
+// (DXR's local root signature + root arguments type).
+//
+//   struct ProceduralArgs { glm::vec4 albedo; std::uint32_t instance; };
+//   proceduray::LocalSignatureId<ProceduralArgs> sig =
+//       scene.add_local_signature<ProceduralArgs>("Procedural");
+//   table.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Args must match
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <typeindex>
+#include <typeinfo>
+
+namespace proceduray {
+
+/// A registered local signature.
+struct LocalSignature {
+  std::uint32_t data_size = 0;                  ///< sizeof(Args): bytes after the handle in each record
+  std::type_index data_type = typeid(void);     ///< Args, for run-time checks of string lookups
+};
+
+}  // namespace proceduray

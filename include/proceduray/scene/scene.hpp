@@ -1,0 +1,240 @@
+// The scene registry: rays, hit groups, geometry, global and local signatures, each
+// registered by string id and returned as a strong typed id.
+//
+//   proceduray::Scene scene;
+//   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
+//   auto shadow   = scene.add_ray<ShadowPayload>("Shadow", {.miss = "shadow.rmiss"});
+//   auto pacman   = scene.add_hit_group<Attributes>("Pacman", {.kind = proceduray::HitGroupKind::procedural,
+//                                                   .closest_hit = "pacman.rchit", .intersection = "pacman.rint"});
+//   auto geometry = scene.add_geometry("Pacman", proceduray::GeometryDesc::procedural({{}}, transforms));
+//   auto sig      = scene.add_local_signature<ProceduralArgs>("Procedural");
+//   const proceduray::HitGroup* maybe = scene.find_hit_group("Pacman");   // nullptr if absent
+//   auto again = scene.ray_id<RayPayload>("Radiance");   // throws: unknown id, wrong payload type
+//
+// Registration order is the index order: rays' order is their SBT ray index and miss index.
+// Geometry goes into BLASes (Scene::blases()): its own, or the one named by GeometryDesc::blas.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <typeindex>
+#include <typeinfo>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/geometry.hpp"
+#include "proceduray/scene/global_signature.hpp"
+#include "proceduray/scene/hit_group.hpp"
+#include "proceduray/scene/ids.hpp"
+#include "proceduray/scene/local_signature.hpp"
+#include "proceduray/scene/ray.hpp"
+#include "proceduray/scene/registry.hpp"
+#include "proceduray/scene/shader_data.hpp"
+
+namespace proceduray {
+
+/// A bottom-level acceleration structure: geometries of one kind and the TLAS instances of it.
+struct Blas {
+  std::string name;                          ///< the shared BLAS name, or the id of its only geometry
+  GeometryKind kind = GeometryKind::procedural;  ///< kind of all its geometries
+  std::vector<GeometryId> geometries;        ///< in geometry-index order
+  std::vector<InstanceTransform> instances;  ///< one TLAS instance each
+  bool shared = false;                       ///< named by GeometryDesc::blas
+};
+
+/// Every entity of a scene, keyed by id.
+class Scene {
+ public:
+  /// Registers a ray type with payload type Payload; throws DuplicateIdError.
+  template <PayloadData Payload>
+  RayId<Payload> add_ray(std::string id, RayDesc desc) {
+    return RayId<Payload>(m_rays.add("Scene::add_ray", std::move(id),
+                                     Ray{std::move(desc), sizeof(Payload), typeid(Payload)}));
+  }
+
+  /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
+  /// or the built-in barycentrics for triangles). Throws HitGroupKindError, DuplicateIdError.
+  template <class Attributes = void>
+    requires(std::is_void_v<Attributes> || AttributeData<Attributes>)
+  HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
+    validate(desc, id, "Scene::add_hit_group");
+    std::uint32_t size = 0;
+    if constexpr (!std::is_void_v<Attributes>) {
+      if (desc.kind == HitGroupKind::triangles) {
+        throw HitGroupKindError("Scene::add_hit_group: triangle hit group \"" + id + "\" declares an attribute type (" +
+                                std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
+                                "barycentrics: call add_hit_group<void>");
+      }
+      size = sizeof(Attributes);
+    } else if (desc.kind == HitGroupKind::triangles) {
+      size = triangle_attribute_size;
+    }
+    return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
+                                       HitGroup{std::move(desc), size, typeid(Attributes)}));
+  }
+
+  /// Registers a geometry and puts it in its BLAS; throws InvalidGeometryError, DuplicateIdError.
+  GeometryId add_geometry(std::string id, GeometryDesc desc) {
+    constexpr std::string_view op = "Scene::add_geometry";
+    validate(desc, id, op);
+    if (m_geometries.find(id)) m_geometries.add(op, id, Geometry{});  // throws DuplicateIdError
+    std::uint32_t blas_index = 0;
+    if (desc.blas.empty()) {
+      blas_index = static_cast<std::uint32_t>(m_blases.size());
+      m_blases.push_back(Blas{id, desc.kind, {}, std::move(desc.instances), false});
+    } else {
+      auto [it, inserted] = m_shared_blas.try_emplace(desc.blas, static_cast<std::uint32_t>(m_blases.size()));
+      blas_index = it->second;
+      if (inserted) {
+        m_blases.push_back(Blas{desc.blas, desc.kind, {}, std::move(desc.instances), true});
+      } else {
+        Blas& blas = m_blases[blas_index];
+        if (blas.kind != desc.kind) {
+          throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" is " + to_string(desc.kind) +
+                                     " but BLAS \"" + blas.name + "\" holds " + to_string(blas.kind) +
+                                     " geometry; a BLAS holds one kind: name another BLAS");
+        }
+        if (blas.instances.empty()) {
+          blas.instances = std::move(desc.instances);
+        } else if (!desc.instances.empty() && desc.instances != blas.instances) {
+          throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" declares " +
+                                     std::to_string(desc.instances.size()) + " instances that differ from the " +
+                                     std::to_string(blas.instances.size()) + " of its BLAS \"" + blas.name +
+                                     "\"; instances belong to the BLAS: declare them once (others leave them empty)");
+        }
+      }
+    }
+    desc.instances.clear();
+    Blas& blas = m_blases[blas_index];
+    const auto geometry_index = static_cast<std::uint32_t>(blas.geometries.size());
+    const GeometryId gid(m_geometries.add(op, std::move(id), Geometry{std::move(desc), blas_index, geometry_index}));
+    blas.geometries.push_back(gid);
+    return gid;
+  }
+
+  /// Registers a global signature; throws SceneError for bad bindings, DuplicateIdError.
+  GlobalSignatureId add_global_signature(std::string id, GlobalSignatureDesc desc) {
+    validate(desc, id, "Scene::add_global_signature");
+    return GlobalSignatureId(m_global_signatures.add("Scene::add_global_signature", std::move(id),
+                                                     GlobalSignature{std::move(desc)}));
+  }
+
+  /// Registers a local signature whose records carry Args; throws DuplicateIdError.
+  template <RecordData Args>
+  LocalSignatureId<Args> add_local_signature(std::string id) {
+    return LocalSignatureId<Args>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
+                                                         LocalSignature{sizeof(Args), typeid(Args)}));
+  }
+
+  /// The ray registered as `id`, or nullptr.
+  const Ray* find_ray(std::string_view id) const { return m_rays.find(id); }
+  /// The hit group registered as `id`, or nullptr.
+  const HitGroup* find_hit_group(std::string_view id) const { return m_hit_groups.find(id); }
+  /// The geometry registered as `id`, or nullptr.
+  const Geometry* find_geometry(std::string_view id) const { return m_geometries.find(id); }
+  /// The global signature registered as `id`, or nullptr.
+  const GlobalSignature* find_global_signature(std::string_view id) const { return m_global_signatures.find(id); }
+  /// The local signature registered as `id`, or nullptr.
+  const LocalSignature* find_local_signature(std::string_view id) const { return m_local_signatures.find(id); }
+
+  /// The ray of `id`; throws UnknownIdError (nearest ids) or, for a typed lookup, TypeMismatchError.
+  template <class Payload = void>
+  RayId<Payload> ray_id(std::string_view id) const {
+    const std::uint32_t index = m_rays.index_of(id, "Scene::ray_id");
+    if constexpr (!std::is_void_v<Payload>) {
+      check_type(m_rays.entities()[index].payload_type, typeid(Payload), "Scene::ray_id", "ray", id, "payload");
+    }
+    return RayId<Payload>(index);
+  }
+  /// The hit group of `id`; throws UnknownIdError.
+  HitGroupId hit_group_id(std::string_view id) const { return HitGroupId(m_hit_groups.index_of(id, "Scene::hit_group_id")); }
+  /// The geometry of `id`; throws UnknownIdError.
+  GeometryId geometry_id(std::string_view id) const { return GeometryId(m_geometries.index_of(id, "Scene::geometry_id")); }
+  /// The global signature of `id`; throws UnknownIdError.
+  GlobalSignatureId global_signature_id(std::string_view id) const {
+    return GlobalSignatureId(m_global_signatures.index_of(id, "Scene::global_signature_id"));
+  }
+  /// The local signature of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
+  template <class Args = void>
+  LocalSignatureId<Args> local_signature_id(std::string_view id) const {
+    const std::uint32_t index = m_local_signatures.index_of(id, "Scene::local_signature_id");
+    if constexpr (!std::is_void_v<Args>) {
+      check_type(m_local_signatures.entities()[index].data_type, typeid(Args), "Scene::local_signature_id",
+                 "local signature", id, "record data");
+    }
+    return LocalSignatureId<Args>(index);
+  }
+
+  /// The ray of an id; throws UnknownIdError for an id this scene did not issue.
+  const Ray& ray(RayId<> id) const { return m_rays.at(id.index(), "Scene::ray"); }
+  /// The ray registered as `id`; throws UnknownIdError.
+  const Ray& ray(std::string_view id) const { return m_rays.at(id, "Scene::ray"); }
+  /// The hit group of an id; throws UnknownIdError.
+  const HitGroup& hit_group(HitGroupId id) const { return m_hit_groups.at(id.index(), "Scene::hit_group"); }
+  /// The hit group registered as `id`; throws UnknownIdError.
+  const HitGroup& hit_group(std::string_view id) const { return m_hit_groups.at(id, "Scene::hit_group"); }
+  /// The geometry of an id; throws UnknownIdError.
+  const Geometry& geometry(GeometryId id) const { return m_geometries.at(id.index(), "Scene::geometry"); }
+  /// The geometry registered as `id`; throws UnknownIdError.
+  const Geometry& geometry(std::string_view id) const { return m_geometries.at(id, "Scene::geometry"); }
+  /// The global signature of an id; throws UnknownIdError.
+  const GlobalSignature& global_signature(GlobalSignatureId id) const {
+    return m_global_signatures.at(id.index(), "Scene::global_signature");
+  }
+  /// The local signature of an id; throws UnknownIdError.
+  const LocalSignature& local_signature(LocalSignatureId<> id) const {
+    return m_local_signatures.at(id.index(), "Scene::local_signature");
+  }
+  /// The BLAS a geometry lives in; throws UnknownIdError.
+  const Blas& blas_of(GeometryId id) const { return m_blases[geometry(id).blas]; }
+
+  /// All rays in ray-index order.
+  const Registry<Ray>& rays() const { return m_rays; }
+  /// All hit groups in registration order.
+  const Registry<HitGroup>& hit_groups() const { return m_hit_groups; }
+  /// All geometries in registration order.
+  const Registry<Geometry>& geometries() const { return m_geometries; }
+  /// All global signatures.
+  const Registry<GlobalSignature>& global_signatures() const { return m_global_signatures; }
+  /// All local signatures.
+  const Registry<LocalSignature>& local_signatures() const { return m_local_signatures; }
+  /// All BLASes in creation order (the order of their first geometry).
+  std::span<const Blas> blases() const { return m_blases; }
+  /// TLAS instances over all BLASes.
+  std::uint64_t instance_count() const {
+    std::uint64_t n = 0;
+    for (const Blas& b : m_blases) n += b.instances.size();
+    return n;
+  }
+
+  /// Reserves room for `count` geometries (and their BLASes).
+  void reserve_geometries(std::size_t count) {
+    m_geometries.reserve(count);
+    m_blases.reserve(count);
+  }
+
+ private:
+  static void check_type(std::type_index have, std::type_index want, std::string_view op, std::string_view kind,
+                         std::string_view id, std::string_view what) {
+    if (have != want) {
+      throw TypeMismatchError(std::string(op) + ": " + std::string(kind) + " \"" + std::string(id) + "\" has " +
+                              std::string(what) + " type " + have.name() + ", not the requested " + want.name() +
+                              "; ask for the type it was registered with");
+    }
+  }
+
+  Registry<Ray> m_rays{"ray"};
+  Registry<HitGroup> m_hit_groups{"hit group"};
+  Registry<Geometry> m_geometries{"geometry"};
+  Registry<GlobalSignature> m_global_signatures{"global signature"};
+  Registry<LocalSignature> m_local_signatures{"local signature"};
+  std::vector<Blas> m_blases;
+  std::unordered_map<std::string, std::uint32_t> m_shared_blas;
+};
+
+}  // namespace proceduray

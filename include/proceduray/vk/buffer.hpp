@@ -1,0 +1,113 @@
+// Buffers with their own memory and, when asked, a device address.
+//
+//   using proceduray::vk::Buffer;
+//   Buffer aabbs(ctx, sizeof(boxes), VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+//                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, Buffer::host_visible);
+//   aabbs.write(boxes);          // host-visible buffers are written in place
+//   aabbs.address();             // VkDeviceAddress for builds and shaders
+//
+// Memory is host-visible and coherent unless Buffer::device_local is asked for; every
+// buffer gets VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT when its usage needs an address.
+#pragma once
+
+#include <proceduray/vk/context.hpp>
+
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace proceduray::vk {
+
+/// A VkBuffer bound to its own VkDeviceMemory.
+class Buffer {
+ public:
+  /// Where the memory lives.
+  enum Memory { device_local, host_visible };
+
+  Buffer() = default;
+  /// Creates a buffer of `size` bytes (must be > 0) with `usage`; device addresses are enabled when usage asks.
+  Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory = host_visible);
+
+  VkBuffer get() const noexcept { return m_buffer.get(); }
+  VkDeviceSize size() const noexcept { return m_size; }
+  /// The buffer's device address; throws if it was made without VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT.
+  VkDeviceAddress address() const;
+  /// Mapped pointer of a host-visible buffer, else nullptr.
+  void* data() const noexcept { return m_mapped; }
+
+  /// Copies `bytes` to `offset`; throws std::out_of_range past the end or std::logic_error for device-local memory.
+  void write(std::span<const std::byte> bytes, VkDeviceSize offset = 0);
+  template <class T>
+  void write(std::span<const T> values, VkDeviceSize offset = 0) {
+    write(std::as_bytes(values), offset);
+  }
+
+ private:
+  const Context* m_ctx = nullptr;
+  DeviceHandle<VkDeviceMemory> m_memory;  // declared before the buffer: the buffer is destroyed first
+  DeviceHandle<VkBuffer> m_buffer;
+  VkDeviceSize m_size = 0;
+  VkDeviceAddress m_address = 0;
+  void* m_mapped = nullptr;
+};
+
+inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory)
+    : m_ctx(&ctx), m_size(size) {
+  if (size == 0) {
+    throw std::invalid_argument("Buffer: size 0 requested; Vulkan buffers need at least one byte");
+  }
+  auto info = make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkBuffer raw = VK_NULL_HANDLE;
+  check(vkCreateBuffer(ctx.device(), &info, nullptr, &raw), "vkCreateBuffer", std::to_string(size) + " bytes");
+  m_buffer = own(ctx.device(), raw, vkDestroyBuffer);
+
+  VkMemoryRequirements needs{};
+  vkGetBufferMemoryRequirements(ctx.device(), raw, &needs);
+  const VkMemoryPropertyFlags flags = memory == host_visible
+                                          ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                          : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  auto address_flags = make<VkMemoryAllocateFlagsInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO);
+  address_flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
+  const bool wants_address = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
+  auto alloc = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, wants_address ? &address_flags : nullptr);
+  alloc.allocationSize = needs.size;
+  alloc.memoryTypeIndex = ctx.memory_type(needs.memoryTypeBits, flags);
+  VkDeviceMemory mem = VK_NULL_HANDLE;
+  check(vkAllocateMemory(ctx.device(), &alloc, nullptr, &mem), "vkAllocateMemory", std::to_string(needs.size) + " bytes");
+  m_memory = own(ctx.device(), mem, vkFreeMemory);
+  check(vkBindBufferMemory(ctx.device(), raw, mem, 0), "vkBindBufferMemory");
+  if (memory == host_visible) {
+    check(vkMapMemory(ctx.device(), mem, 0, VK_WHOLE_SIZE, 0, &m_mapped), "vkMapMemory");
+  }
+  if (wants_address) {
+    auto where = make<VkBufferDeviceAddressInfo>(VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO);
+    where.buffer = raw;
+    m_address = vkGetBufferDeviceAddress(ctx.device(), &where);
+  }
+}
+
+inline VkDeviceAddress Buffer::address() const {
+  if (m_address == 0) {
+    throw std::logic_error("Buffer::address: the buffer was created without VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT; "
+                           "add it to the usage flags");
+  }
+  return m_address;
+}
+
+inline void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset) {
+  if (m_mapped == nullptr) {
+    throw std::logic_error("Buffer::write: the buffer is device-local; create it with Buffer::host_visible to write it "
+                           "from the host");
+  }
+  if (offset > m_size || bytes.size() > m_size - offset) {
+    throw std::out_of_range("Buffer::write: " + std::to_string(bytes.size()) + " bytes at offset " +
+                            std::to_string(offset) + " overrun the buffer's " + std::to_string(m_size) + " bytes");
+  }
+  std::memcpy(static_cast<std::byte*>(m_mapped) + offset, bytes.data(), bytes.size());
+}
+
+}  // namespace proceduray::vk

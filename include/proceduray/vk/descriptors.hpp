@@ -1,0 +1,146 @@
+// One descriptor set with its layout and pool, made from a list of bindings.
+//
+//   proceduray::vk::DescriptorSet set(ctx, {{0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
+//                                           {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+//   set.write(0, tlas);
+//   set.write(1, image);
+//   set.layout();   // for the pipeline layout
+#pragma once
+
+#include <proceduray/vk/acceleration.hpp>
+
+#include <initializer_list>
+#include <map>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// Every ray-tracing stage; the default visibility of a binding.
+inline constexpr VkShaderStageFlags all_ray_tracing_stages =
+    VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+    VK_SHADER_STAGE_ANY_HIT_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+
+/// One binding of a descriptor set.
+struct Binding {
+  std::uint32_t binding = 0;                        ///< layout(binding = N)
+  VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;  ///< required
+  VkShaderStageFlags stages = all_ray_tracing_stages;   ///< default: every ray-tracing stage
+};
+
+/// A descriptor set layout, a pool sized for it, and the one set allocated from it.
+class DescriptorSet {
+ public:
+  DescriptorSet(const Context& ctx, std::initializer_list<Binding> bindings)
+      : DescriptorSet(ctx, std::vector<Binding>(bindings)) {}
+  DescriptorSet(const Context& ctx, const std::vector<Binding>& bindings);
+
+  VkDescriptorSetLayout layout() const noexcept { return m_layout.get(); }
+  VkDescriptorSet get() const noexcept { return m_set; }
+
+  void write(std::uint32_t binding, const AccelerationStructure& tlas);
+  void write(std::uint32_t binding, VkImageView storage_image);
+  void write(std::uint32_t binding, const Buffer& buffer);
+
+ private:
+  VkDescriptorType type_of(std::uint32_t binding, const char* what) const;
+
+  const Context* m_ctx;
+  std::map<std::uint32_t, VkDescriptorType> m_types;
+  DeviceHandle<VkDescriptorSetLayout> m_layout;
+  DeviceHandle<VkDescriptorPool> m_pool;  // freeing the pool frees the set
+  VkDescriptorSet m_set = VK_NULL_HANDLE;
+};
+
+inline DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<Binding>& bindings) : m_ctx(&ctx) {
+  std::vector<VkDescriptorSetLayoutBinding> described;
+  std::map<VkDescriptorType, std::uint32_t> counts;
+  for (const Binding& b : bindings) {
+    if (!m_types.emplace(b.binding, b.type).second) {
+      throw std::invalid_argument("DescriptorSet: binding " + std::to_string(b.binding) +
+                                  " is listed twice; give each binding its own number");
+    }
+    described.push_back({b.binding, b.type, 1, b.stages, nullptr});
+    ++counts[b.type];
+  }
+  auto info = make<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  info.bindingCount = static_cast<std::uint32_t>(described.size());
+  info.pBindings = described.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  check(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &layout), "vkCreateDescriptorSetLayout");
+  m_layout = own(ctx.device(), layout, vkDestroyDescriptorSetLayout);
+
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (auto [type, count] : counts) sizes.push_back({type, count});
+  auto pool_info = make<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  check(vkCreateDescriptorPool(ctx.device(), &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
+  m_pool = own(ctx.device(), pool, vkDestroyDescriptorPool);
+
+  auto alloc = make<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+  alloc.descriptorPool = pool;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &layout;
+  check(vkAllocateDescriptorSets(ctx.device(), &alloc, &m_set), "vkAllocateDescriptorSets");
+}
+
+inline VkDescriptorType DescriptorSet::type_of(std::uint32_t binding, const char* what) const {
+  auto it = m_types.find(binding);
+  if (it == m_types.end()) {
+    throw std::invalid_argument(std::string("DescriptorSet::write: binding ") + std::to_string(binding) +
+                                " does not exist in this set; write " + what + " to a binding the set was made with");
+  }
+  return it->second;
+}
+
+inline void DescriptorSet::write(std::uint32_t binding, const AccelerationStructure& tlas) {
+  if (type_of(binding, "an acceleration structure") != VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR) {
+    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) +
+                                " is not an acceleration structure binding");
+  }
+  VkAccelerationStructureKHR handle = tlas.get();
+  auto as = make<VkWriteDescriptorSetAccelerationStructureKHR>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
+  as.accelerationStructureCount = 1;
+  as.pAccelerationStructures = &handle;
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &as);
+  write.dstSet = m_set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
+}
+
+inline void DescriptorSet::write(std::uint32_t binding, VkImageView storage_image) {
+  if (type_of(binding, "a storage image") != VK_DESCRIPTOR_TYPE_STORAGE_IMAGE) {
+    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) +
+                                " is not a storage image binding");
+  }
+  VkDescriptorImageInfo image{VK_NULL_HANDLE, storage_image, VK_IMAGE_LAYOUT_GENERAL};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  write.dstSet = m_set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  write.pImageInfo = &image;
+  vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
+}
+
+inline void DescriptorSet::write(std::uint32_t binding, const Buffer& buffer) {
+  const VkDescriptorType type = type_of(binding, "a buffer");
+  if (type != VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER && type != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER) {
+    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) +
+                                " is not a uniform or storage buffer binding");
+  }
+  VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  write.dstSet = m_set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  write.pBufferInfo = &info;
+  vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
+}
+
+}  // namespace proceduray::vk

@@ -1,0 +1,90 @@
+// Vulkan failures as exceptions that name the call that failed.
+//
+//   proceduray::vk::check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
+//   try { ... } catch (const proceduray::vk::VulkanError& e) { e.result(); e.call(); }
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <system_error>
+
+namespace proceduray::vk {
+
+/// Spelled name of a VkResult ("VK_ERROR_DEVICE_LOST"), or its number.
+inline std::string result_name(VkResult r) {
+  switch (r) {
+#define PROCEDURAY_RESULT_CASE(x) \
+  case x:                         \
+    return #x;
+    PROCEDURAY_RESULT_CASE(VK_SUCCESS)
+    PROCEDURAY_RESULT_CASE(VK_NOT_READY)
+    PROCEDURAY_RESULT_CASE(VK_TIMEOUT)
+    PROCEDURAY_RESULT_CASE(VK_INCOMPLETE)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_OUT_OF_HOST_MEMORY)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_INITIALIZATION_FAILED)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_DEVICE_LOST)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_MEMORY_MAP_FAILED)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_LAYER_NOT_PRESENT)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_EXTENSION_NOT_PRESENT)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_FEATURE_NOT_PRESENT)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_INCOMPATIBLE_DRIVER)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_TOO_MANY_OBJECTS)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_FORMAT_NOT_SUPPORTED)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_FRAGMENTED_POOL)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_UNKNOWN)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_OUT_OF_POOL_MEMORY)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_INVALID_EXTERNAL_HANDLE)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_FRAGMENTATION)
+    PROCEDURAY_RESULT_CASE(VK_ERROR_INVALID_OPAQUE_CAPTURE_ADDRESS)
+    PROCEDURAY_RESULT_CASE(VK_PIPELINE_COMPILE_REQUIRED)
+    PROCEDURAY_RESULT_CASE(VK_THREAD_IDLE_KHR)
+    PROCEDURAY_RESULT_CASE(VK_THREAD_DONE_KHR)
+    PROCEDURAY_RESULT_CASE(VK_OPERATION_DEFERRED_KHR)
+    PROCEDURAY_RESULT_CASE(VK_OPERATION_NOT_DEFERRED_KHR)
+#undef PROCEDURAY_RESULT_CASE
+    default:
+      return "VkResult(" + std::to_string(static_cast<int>(r)) + ")";
+  }
+}
+
+/// The error category of VkResult codes, so VulkanError is a std::system_error.
+inline const std::error_category& vulkan_category() noexcept {
+  struct Category final : std::error_category {
+    const char* name() const noexcept override { return "vulkan"; }
+    std::string message(int code) const override { return result_name(static_cast<VkResult>(code)); }
+  };
+  static const Category category;
+  return category;
+}
+
+/// A failed Vulkan call: carries the VkResult and the call's name.
+class VulkanError : public std::system_error {
+ public:
+  VulkanError(VkResult result, std::string call, const std::string& what)
+      : std::system_error(static_cast<int>(result), vulkan_category(), what),
+        m_result(result), m_call(std::move(call)) {}
+  VkResult result() const noexcept { return m_result; }
+  const std::string& call() const noexcept { return m_call; }
+
+ private:
+  VkResult m_result;
+  std::string m_call;
+};
+
+/// Throws VulkanError unless `result` is VK_SUCCESS; `call` names the failed function.
+inline void check(VkResult result, const char* call, const std::string& context = {}) {
+  if (result == VK_SUCCESS) return;
+  std::string what = std::string(call) + " failed";
+  if (!context.empty()) what += " (" + context + ")";
+  if (result == VK_ERROR_DEVICE_LOST) {
+    what += ": the device was lost; a shader ran too long or read out of bounds. Run with the validation "
+            "layer (ContextOptions::validation) to find the cause";
+  } else if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY) {
+    what += ": out of memory; render smaller images or fewer instances";
+  }
+  throw VulkanError(result, call, what);
+}
+
+}  // namespace proceduray::vk

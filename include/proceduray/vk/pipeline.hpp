@@ -1,0 +1,192 @@
+// A ray-tracing pipeline from compiled shaders and the groups that use them.
+//
+//   proceduray::vk::PipelineDesc desc;
+//   auto rgen = desc.add_shader(ShaderStage::raygen, compile_glsl(...));
+//   auto miss = desc.add_shader(ShaderStage::miss, compile_glsl(...));
+//   auto hit  = desc.add_shader(ShaderStage::closest_hit, compile_glsl(...));
+//   auto isec = desc.add_shader(ShaderStage::intersection, compile_glsl(...));
+//   desc.groups = {ShaderGroup::general(rgen), ShaderGroup::general(miss),
+//                  ShaderGroup::procedural(hit, isec)};
+//   desc.set_layouts = {set.layout()};
+//   desc.push_constant_size = sizeof(Camera);
+//   proceduray::vk::Pipeline pipeline(ctx, desc);
+//   pipeline.group_handle(2);   // bytes for SBT record of group 2
+#pragma once
+
+#include <proceduray/vk/descriptors.hpp>
+#include <proceduray/vk/shader_compiler.hpp>
+
+#include <cstring>
+#include <span>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// One shader group: a general shader (raygen, miss, callable) or a hit group.
+struct ShaderGroup {
+  VkRayTracingShaderGroupTypeKHR type = VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
+  std::uint32_t general = VK_SHADER_UNUSED_KHR;       ///< raygen, miss or callable shader index
+  std::uint32_t closest_hit = VK_SHADER_UNUSED_KHR;   ///< shader index or unused
+  std::uint32_t any_hit = VK_SHADER_UNUSED_KHR;       ///< shader index or unused
+  std::uint32_t intersection = VK_SHADER_UNUSED_KHR;  ///< required for procedural hit groups
+
+  static ShaderGroup general_shader(std::uint32_t shader) { return {VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, shader}; }
+  static ShaderGroup procedural(std::uint32_t closest_hit, std::uint32_t intersection,
+                                std::uint32_t any_hit = VK_SHADER_UNUSED_KHR) {
+    return {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, VK_SHADER_UNUSED_KHR, closest_hit, any_hit,
+            intersection};
+  }
+  static ShaderGroup triangles(std::uint32_t closest_hit, std::uint32_t any_hit = VK_SHADER_UNUSED_KHR) {
+    return {VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, VK_SHADER_UNUSED_KHR, closest_hit, any_hit};
+  }
+};
+
+/// Everything a pipeline is made from.
+struct PipelineDesc {
+  struct Shader {
+    ShaderStage stage;
+    std::vector<std::uint32_t> spirv;
+  };
+  std::vector<Shader> shaders;
+  std::vector<ShaderGroup> groups;
+  std::vector<VkDescriptorSetLayout> set_layouts;
+  std::uint32_t push_constant_size = 0;  ///< bytes of push constants, visible to every stage; default none
+  std::uint32_t max_recursion_depth = 1;  ///< deepest traceRayEXT nesting; 1 = raygen traces only
+
+  /// Adds a shader and returns its index for ShaderGroup.
+  std::uint32_t add_shader(ShaderStage stage, std::vector<std::uint32_t> spirv) {
+    shaders.push_back({stage, std::move(spirv)});
+    return static_cast<std::uint32_t>(shaders.size() - 1);
+  }
+};
+
+namespace detail {
+inline VkShaderStageFlagBits vk_stage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::raygen: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    case ShaderStage::miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
+    case ShaderStage::closest_hit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+    case ShaderStage::any_hit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+    case ShaderStage::intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    case ShaderStage::callable: return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+  }
+  return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+}
+}  // namespace detail
+
+/// A ray-tracing pipeline, its layout and its shader group handles.
+class Pipeline {
+ public:
+  Pipeline(const Context& ctx, const PipelineDesc& desc);
+
+  VkPipeline get() const noexcept { return m_pipeline.get(); }
+  VkPipelineLayout layout() const noexcept { return m_layout.get(); }
+  std::uint32_t group_count() const noexcept { return m_group_count; }
+  std::uint32_t push_constant_size() const noexcept { return m_push_constant_size; }
+  /// The opaque handle of group `group` (shaderGroupHandleSize bytes) to copy into an SBT record.
+  std::span<const std::byte> group_handle(std::uint32_t group) const;
+
+ private:
+  DeviceHandle<VkPipelineLayout> m_layout;
+  DeviceHandle<VkPipeline> m_pipeline;
+  std::uint32_t m_group_count = 0;
+  std::uint32_t m_handle_size = 0;
+  std::uint32_t m_push_constant_size = 0;
+  std::vector<std::byte> m_handles;
+};
+
+inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
+    : m_group_count(static_cast<std::uint32_t>(desc.groups.size())),
+      m_handle_size(ctx.ray_tracing_properties().shaderGroupHandleSize),
+      m_push_constant_size(desc.push_constant_size) {
+  const std::uint32_t device_depth = ctx.ray_tracing_properties().maxRayRecursionDepth;
+  if (desc.max_recursion_depth > device_depth) {
+    throw std::invalid_argument("Pipeline: max_recursion_depth " + std::to_string(desc.max_recursion_depth) +
+                                " exceeds the device's maxRayRecursionDepth " + std::to_string(device_depth) +
+                                "; trace deeper paths iteratively from the raygen shader");
+  }
+  const auto shader_count = static_cast<std::uint32_t>(desc.shaders.size());
+  auto check_index = [&](std::size_t g, std::uint32_t index, const char* role) {
+    if (index != VK_SHADER_UNUSED_KHR && index >= shader_count) {
+      throw std::invalid_argument("Pipeline: group " + std::to_string(g) + " names " + role + " shader " +
+                                  std::to_string(index) + " but only " + std::to_string(shader_count) +
+                                  " shaders were added");
+    }
+  };
+  for (std::size_t g = 0; g < desc.groups.size(); ++g) {
+    const ShaderGroup& group = desc.groups[g];
+    check_index(g, group.general, "general");
+    check_index(g, group.closest_hit, "closest-hit");
+    check_index(g, group.any_hit, "any-hit");
+    check_index(g, group.intersection, "intersection");
+    if (group.type == VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR &&
+        group.intersection == VK_SHADER_UNUSED_KHR) {
+      throw std::invalid_argument("Pipeline: procedural hit group " + std::to_string(g) +
+                                  " has no intersection shader; procedural geometry needs one");
+    }
+  }
+
+  VkPushConstantRange push{all_ray_tracing_stages, 0, desc.push_constant_size};
+  auto layout_info = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+  layout_info.setLayoutCount = static_cast<std::uint32_t>(desc.set_layouts.size());
+  layout_info.pSetLayouts = desc.set_layouts.data();
+  layout_info.pushConstantRangeCount = desc.push_constant_size > 0 ? 1 : 0;
+  layout_info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
+  m_layout = own(ctx.device(), layout, vkDestroyPipelineLayout);
+
+  std::vector<DeviceHandle<VkShaderModule>> modules;
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  for (const auto& shader : desc.shaders) {
+    auto info = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    info.codeSize = shader.spirv.size() * sizeof(std::uint32_t);
+    info.pCode = shader.spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    check(vkCreateShaderModule(ctx.device(), &info, nullptr, &module), "vkCreateShaderModule");
+    modules.push_back(own(ctx.device(), module, vkDestroyShaderModule));
+    auto stage = make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    stage.stage = detail::vk_stage(shader.stage);
+    stage.module = module;
+    stage.pName = "main";
+    stages.push_back(stage);
+  }
+  std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+  for (const ShaderGroup& g : desc.groups) {
+    auto info = make<VkRayTracingShaderGroupCreateInfoKHR>(VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR);
+    info.type = g.type;
+    info.generalShader = g.general;
+    info.closestHitShader = g.closest_hit;
+    info.anyHitShader = g.any_hit;
+    info.intersectionShader = g.intersection;
+    groups.push_back(info);
+  }
+  auto info = make<VkRayTracingPipelineCreateInfoKHR>(VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR);
+  info.stageCount = static_cast<std::uint32_t>(stages.size());
+  info.pStages = stages.data();
+  info.groupCount = static_cast<std::uint32_t>(groups.size());
+  info.pGroups = groups.data();
+  info.maxPipelineRayRecursionDepth = desc.max_recursion_depth;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  check(ctx.rt().create_ray_tracing_pipelines(ctx.device(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateRayTracingPipelinesKHR");
+  m_pipeline = own(ctx.device(), pipeline, vkDestroyPipeline);
+
+  m_handles.resize(std::size_t{m_group_count} * m_handle_size);
+  if (m_group_count > 0) {
+    check(ctx.rt().get_ray_tracing_shader_group_handles(ctx.device(), pipeline, 0, m_group_count, m_handles.size(),
+                                                        m_handles.data()),
+          "vkGetRayTracingShaderGroupHandlesKHR");
+  }
+}
+
+inline std::span<const std::byte> Pipeline::group_handle(std::uint32_t group) const {
+  if (group >= m_group_count) {
+    throw std::out_of_range("Pipeline::group_handle: group " + std::to_string(group) + " does not exist; the pipeline has " +
+                            std::to_string(m_group_count) + " groups");
+  }
+  return std::span<const std::byte>(m_handles).subspan(std::size_t{group} * m_handle_size, m_handle_size);
+}
+
+}  // namespace proceduray::vk

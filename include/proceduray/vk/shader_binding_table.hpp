@@ -1,0 +1,102 @@
+// The SBT buffer: group handles and record data written where layout_sbt says.
+//
+//   auto layout = layout_sbt(ctx.sbt_properties(), {{{1, 0}, {1, 0}, {2, sizeof(Colour)}, {}}});
+//   std::vector<proceduray::vk::SbtRecord> records{
+//       {SbtRegionKind::raygen, 0, /*group*/ 0},
+//       {SbtRegionKind::miss, 0, 1},
+//       {SbtRegionKind::hit, 0, 2, proceduray::vk::bytes_of(red)},
+//       {SbtRegionKind::hit, 1, 2, proceduray::vk::bytes_of(blue)}};
+//   proceduray::vk::ShaderBindingTable sbt(ctx, pipeline, layout, records);
+//   sbt.regions();   // the four VkStridedDeviceAddressRegionKHR for vkCmdTraceRaysKHR
+#pragma once
+
+#include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/vk/pipeline.hpp>
+
+#include <array>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// The bytes of a trivially copyable value, for record data.
+template <class T>
+std::span<const std::byte> bytes_of(const T& value) {
+  static_assert(std::is_trivially_copyable_v<T>, "bytes_of: record data must be trivially copyable");
+  return std::as_bytes(std::span<const T>(&value, 1));
+}
+
+/// One record to write: which region and slot, which pipeline group's handle, and its data.
+struct SbtRecord {
+  SbtRegionKind region = SbtRegionKind::hit;
+  std::uint32_t index = 0;  ///< slot within the region
+  std::uint32_t group = 0;  ///< pipeline group whose handle heads the record
+  std::span<const std::byte> data{};  ///< shaderRecordEXT bytes; at most the region's max_data_size
+};
+
+/// A host-visible buffer holding the SBT, its start aligned to shaderGroupBaseAlignment.
+class ShaderBindingTable {
+ public:
+  ShaderBindingTable(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
+                     std::span<const SbtRecord> records);
+
+  /// Raygen, miss, hit and callable regions with device addresses, in vkCmdTraceRaysKHR's order.
+  const std::array<VkStridedDeviceAddressRegionKHR, 4>& regions() const noexcept { return m_regions; }
+  const SbtLayout& layout() const noexcept { return m_layout; }
+  /// The table's bytes as the device sees them (for tests and printing).
+  std::span<const std::byte> bytes() const {
+    return {static_cast<const std::byte*>(m_buffer.data()) + m_start, m_layout.size};
+  }
+
+ private:
+  SbtLayout m_layout;
+  Buffer m_buffer;
+  VkDeviceSize m_start = 0;  // bytes skipped so the table starts base-aligned
+  std::array<VkStridedDeviceAddressRegionKHR, 4> m_regions{};
+};
+
+inline ShaderBindingTable::ShaderBindingTable(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
+                                              std::span<const SbtRecord> records)
+    : m_layout(layout),
+      m_buffer(ctx, layout.size + layout.properties.base_alignment,
+               VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
+  const VkDeviceSize align = layout.properties.base_alignment;
+  const VkDeviceAddress base = (m_buffer.address() + align - 1) / align * align;
+  m_start = base - m_buffer.address();
+  std::array<std::vector<bool>, 4> written;
+  for (std::uint32_t k = 0; k < 4; ++k) written[k].assign(layout.regions[k].count, false);
+
+  for (const SbtRecord& r : records) {
+    const auto k = static_cast<std::uint32_t>(r.region);
+    const std::uint64_t at = layout.record_offset(r.region, r.index);  // throws past the region
+    const std::uint64_t room = layout.regions[k].stride - layout.properties.handle_size;
+    if (r.data.size() > room) {
+      throw std::length_error("ShaderBindingTable: " + std::string(to_string(r.region)) + " record " +
+                              std::to_string(r.index) + " has " + std::to_string(r.data.size()) +
+                              " bytes of data but the layout left room for " + std::to_string(room) +
+                              "; lay the table out with the region's largest record data");
+    }
+    if (written[k][r.index]) {
+      throw std::invalid_argument("ShaderBindingTable: " + std::string(to_string(r.region)) + " record " +
+                                  std::to_string(r.index) + " is given twice");
+    }
+    written[k][r.index] = true;
+    const auto handle = pipeline.group_handle(r.group);  // throws for an unknown group
+    m_buffer.write(handle, m_start + at);
+    if (!r.data.empty()) m_buffer.write(r.data, m_start + at + layout.properties.handle_size);
+  }
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    for (std::uint32_t i = 0; i < layout.regions[k].count; ++i) {
+      if (!written[k][i]) {
+        throw std::invalid_argument("ShaderBindingTable: " + std::string(to_string(static_cast<SbtRegionKind>(k))) +
+                                    " record " + std::to_string(i) +
+                                    " was laid out but never given; a trace reaching it would run no shader");
+      }
+    }
+    const SbtRegion& region = layout.regions[k];
+    if (region.count > 0) m_regions[k] = {base + region.offset, region.stride, region.size};
+  }
+}
+
+}  // namespace proceduray::vk

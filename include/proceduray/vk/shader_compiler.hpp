@@ -1,0 +1,192 @@
+// GLSL ray-tracing shaders compiled to SPIR-V at run time with the glslang library.
+//
+//   proceduray::vk::ShaderSource src{.stage = proceduray::vk::ShaderStage::intersection,
+//                                    .name = "sphere.rint", .code = glsl_text};
+//   std::vector<std::uint32_t> spirv = proceduray::vk::compile_glsl(src);
+//
+// `#include "primitives/sphere.glsl"` resolves against the including file's folder, then the
+// include folders, then the library's shaders/ folder (PROCEDURAY_SHADER_DIR, at build time
+// or in the environment). The target is Vulkan 1.2 / SPIR-V 1.4, which ray tracing needs.
+// A failed compile throws ShaderCompileError with glslang's log, the shader's name and line.
+#pragma once
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// Ray-tracing shader stages.
+enum class ShaderStage { raygen, miss, closest_hit, any_hit, intersection, callable };
+
+inline const char* to_string(ShaderStage s) {
+  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable"};
+  return names[static_cast<int>(s)];
+}
+
+/// One shader to compile: its stage, a name for messages (a file name), and its GLSL text.
+struct ShaderSource {
+  ShaderStage stage = ShaderStage::raygen;
+  std::string name;                               ///< shown in errors; also the base for relative #includes
+  std::string code;                               ///< GLSL starting with #version 460
+  std::vector<std::filesystem::path> include_dirs;  ///< searched after the file's folder; default none
+  std::string preamble;  ///< text inserted after #version (defines, generated declarations); default empty
+};
+
+/// A shader that did not compile: what() holds the name, the first error line and glslang's log.
+class ShaderCompileError : public std::logic_error {
+ public:
+  ShaderCompileError(std::string name, int line, std::string log)
+      : std::logic_error("compile_glsl: shader '" + name + "' failed to compile" +
+                         (line > 0 ? " at line " + std::to_string(line) : std::string()) + ":\n" + log),
+        m_name(std::move(name)), m_line(line), m_log(std::move(log)) {}
+  const std::string& name() const noexcept { return m_name; }
+  /// First line glslang reported an error on; 0 when it named none.
+  int line() const noexcept { return m_line; }
+  const std::string& log() const noexcept { return m_log; }
+
+ private:
+  std::string m_name;
+  int m_line;
+  std::string m_log;
+};
+
+/// The library's GLSL folder: $PROCEDURAY_SHADER_DIR, else the one known at build time.
+inline std::filesystem::path library_shader_dir() {
+  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') return env;
+#ifdef PROCEDURAY_SHADER_DIR
+  return PROCEDURAY_SHADER_DIR;
+#else
+  return {};
+#endif
+}
+
+/// Reads a text file; throws std::runtime_error naming the path when it cannot.
+inline std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw std::runtime_error("read_text_file: cannot open '" + path.string() + "'; check the path" +
+                             (path.is_relative() ? " (relative to " + std::filesystem::current_path().string() + ")"
+                                                 : std::string()));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+namespace detail {
+
+inline EShLanguage glslang_stage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::raygen: return EShLangRayGen;
+    case ShaderStage::miss: return EShLangMiss;
+    case ShaderStage::closest_hit: return EShLangClosestHit;
+    case ShaderStage::any_hit: return EShLangAnyHit;
+    case ShaderStage::intersection: return EShLangIntersect;
+    case ShaderStage::callable: return EShLangCallable;
+  }
+  return EShLangRayGen;
+}
+
+/// glslang needs one process-wide initialisation before any compile.
+inline void ensure_glslang() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+/// Resolves #include "x" against the includer's folder, then the include folders.
+class Includer final : public glslang::TShader::Includer {
+ public:
+  explicit Includer(std::vector<std::filesystem::path> dirs) : m_dirs(std::move(dirs)) {}
+
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
+    std::vector<std::filesystem::path> candidates;
+    if (includer != nullptr && *includer != '\0') {
+      candidates.push_back(std::filesystem::path(includer).parent_path() / header);
+    }
+    for (const auto& dir : m_dirs) candidates.push_back(dir / header);
+    for (const auto& path : candidates) {
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) continue;
+      auto* text = new std::string(read_text_file(path));
+      return new IncludeResult(path.string(), text->data(), text->size(), text);
+    }
+    return nullptr;  // glslang reports "could not be found" with the line
+  }
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
+    return includeLocal(header, includer, depth);
+  }
+  void releaseInclude(IncludeResult* result) override {
+    if (result == nullptr) return;
+    delete static_cast<std::string*>(result->userData);
+    delete result;
+  }
+
+ private:
+  std::vector<std::filesystem::path> m_dirs;
+};
+
+inline int first_error_line(const std::string& log) {
+  // glslang writes "ERROR: name:LINE: message".
+  std::smatch m;
+  static const std::regex pattern(R"(ERROR: [^\n]*?:(\d+):)");
+  if (std::regex_search(log, m, pattern)) return std::stoi(m[1].str());
+  return 0;
+}
+
+}  // namespace detail
+
+/// Compiles one shader to SPIR-V (entry point "main"); throws ShaderCompileError on failure.
+inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source) {
+  detail::ensure_glslang();
+  const EShLanguage stage = detail::glslang_stage(source.stage);
+  glslang::TShader shader(stage);
+  const char* text = source.code.c_str();
+  const char* name = source.name.c_str();
+  shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 460);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_4);
+  shader.setEntryPoint("main");
+  const std::string preamble = "#extension GL_GOOGLE_include_directive : require\n" + source.preamble;
+  shader.setPreamble(preamble.c_str());
+
+  std::vector<std::filesystem::path> dirs = source.include_dirs;
+  if (auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
+  detail::Includer includer(dirs);
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
+    std::string log = shader.getInfoLog();
+    throw ShaderCompileError(source.name, detail::first_error_line(log), log);
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    std::string log = program.getInfoLog();
+    throw ShaderCompileError(source.name, detail::first_error_line(log), log);
+  }
+  std::vector<std::uint32_t> spirv;
+  glslang::SpvOptions options;
+  options.validate = false;
+  glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &options);
+  return spirv;
+}
+
+/// Reads and compiles a GLSL file; its folder is searched first for #includes.
+inline std::vector<std::uint32_t> compile_glsl_file(ShaderStage stage, const std::filesystem::path& path,
+                                                    std::string preamble = {}) {
+  return compile_glsl({stage, path.string(), read_text_file(path), {}, std::move(preamble)});
+}
+
+}  // namespace proceduray::vk

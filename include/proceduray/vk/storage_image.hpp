@@ -1,0 +1,132 @@
+// An RGBA8 storage image that ray-tracing shaders write and the host reads back.
+//
+//   proceduray::vk::StorageImage image(ctx, 640, 480);   // in VK_IMAGE_LAYOUT_GENERAL
+//   set.write(1, image.view());
+//   ... trace ...
+//   std::vector<std::uint8_t> rgba = image.read();        // width * height * 4 bytes, rows top to bottom
+#pragma once
+
+#include <proceduray/vk/buffer.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// A 2D VK_FORMAT_R8G8B8A8_UNORM image in the general layout, with a view for storage writes.
+class StorageImage {
+ public:
+  StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height);
+
+  VkImage get() const noexcept { return m_image.get(); }
+  VkImageView view() const noexcept { return m_view.get(); }
+  std::uint32_t width() const noexcept { return m_width; }
+  std::uint32_t height() const noexcept { return m_height; }
+  /// Copies the image to the host (waits for the queue): width * height RGBA8 pixels, row by row.
+  std::vector<std::uint8_t> read() const;
+
+ private:
+  const Context* m_ctx;
+  std::uint32_t m_width;
+  std::uint32_t m_height;
+  DeviceHandle<VkDeviceMemory> m_memory;
+  DeviceHandle<VkImage> m_image;
+  DeviceHandle<VkImageView> m_view;
+};
+
+inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height)
+    : m_ctx(&ctx), m_width(width), m_height(height) {
+  const std::uint32_t limit = ctx.properties().limits.maxImageDimension2D;
+  if (width == 0 || height == 0 || width > limit || height > limit) {
+    throw std::invalid_argument("StorageImage: size " + std::to_string(width) + "x" + std::to_string(height) +
+                                " is outside 1.." + std::to_string(limit) + " (the device's maxImageDimension2D)");
+  }
+  auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = VK_FORMAT_R8G8B8A8_UNORM;
+  info.extent = {width, height, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImage image = VK_NULL_HANDLE;
+  check(vkCreateImage(ctx.device(), &info, nullptr, &image), "vkCreateImage");
+  m_image = own(ctx.device(), image, vkDestroyImage);
+
+  VkMemoryRequirements needs{};
+  vkGetImageMemoryRequirements(ctx.device(), image, &needs);
+  auto alloc = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+  alloc.allocationSize = needs.size;
+  alloc.memoryTypeIndex = ctx.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  check(vkAllocateMemory(ctx.device(), &alloc, nullptr, &memory), "vkAllocateMemory", "storage image");
+  m_memory = own(ctx.device(), memory, vkFreeMemory);
+  // m_memory is declared first so the image is destroyed before its memory is freed.
+  check(vkBindImageMemory(ctx.device(), image, memory, 0), "vkBindImageMemory");
+
+  auto view_info = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+  view_info.image = image;
+  view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  view_info.format = VK_FORMAT_R8G8B8A8_UNORM;
+  view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  VkImageView view = VK_NULL_HANDLE;
+  check(vkCreateImageView(ctx.device(), &view_info, nullptr, &view), "vkCreateImageView");
+  m_view = own(ctx.device(), view, vkDestroyImageView);
+
+  ctx.submit([&](VkCommandBuffer cmd) {
+    auto barrier = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+    barrier.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0,
+                         nullptr, 0, nullptr, 1, &barrier);
+  });
+}
+
+inline std::vector<std::uint8_t> StorageImage::read() const {
+  const VkDeviceSize size = VkDeviceSize{m_width} * m_height * 4;
+  Buffer staging(*m_ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  m_ctx->submit([&](VkCommandBuffer cmd) {
+    // GENERAL -> TRANSFER_SRC for the copy, then back so the next trace can write again.
+    auto barrier = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
+    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = m_image.get();
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                         nullptr, 0, nullptr, 1, &barrier);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {m_width, m_height, 1};
+    vkCmdCopyImageToBuffer(cmd, m_image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.get(), 1, &copy);
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0,
+                         nullptr, 0, nullptr, 1, &barrier);
+    auto to_host = make<VkBufferMemoryBarrier>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER);
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    to_host.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_host.buffer = staging.get();
+    to_host.size = VK_WHOLE_SIZE;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &to_host,
+                         0, nullptr);
+  });
+  const auto* bytes = static_cast<const std::uint8_t*>(staging.data());
+  return std::vector<std::uint8_t>(bytes, bytes + size);
+}
+
+}  // namespace proceduray::vk

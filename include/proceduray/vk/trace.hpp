@@ -1,0 +1,50 @@
+// Records and runs one vkCmdTraceRaysKHR over a width x height grid.
+//
+//   proceduray::vk::trace(ctx, pipeline, set, sbt, 640, 480, proceduray::vk::bytes_of(camera));
+//
+// The size is checked against the device's dispatch limits before anything is recorded.
+#pragma once
+
+#include <proceduray/vk/shader_binding_table.hpp>
+
+namespace proceduray::vk {
+
+/// Throws std::invalid_argument unless width x height can be dispatched on this device.
+inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint32_t height) {
+  const auto& limits = ctx.properties().limits;
+  const std::uint64_t max_x = std::uint64_t{limits.maxComputeWorkGroupCount[0]} * limits.maxComputeWorkGroupSize[0];
+  const std::uint64_t max_y = std::uint64_t{limits.maxComputeWorkGroupCount[1]} * limits.maxComputeWorkGroupSize[1];
+  const std::uint64_t max_rays = ctx.ray_tracing_properties().maxRayDispatchInvocationCount;
+  const std::uint64_t rays = std::uint64_t{width} * height;
+  if (width == 0 || height == 0 || width > max_x || height > max_y || rays > max_rays) {
+    throw std::invalid_argument("trace: size " + std::to_string(width) + "x" + std::to_string(height) +
+                                " cannot be dispatched on " + ctx.name() + "; width must be 1.." +
+                                std::to_string(max_x) + ", height 1.." + std::to_string(max_y) +
+                                " and width*height at most " + std::to_string(max_rays));
+  }
+}
+
+/// Binds the pipeline, set 0 and the push constants, traces, and waits for the queue.
+inline void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
+                  const ShaderBindingTable& sbt, std::uint32_t width, std::uint32_t height,
+                  std::span<const std::byte> push_constants = {}) {
+  check_trace_size(ctx, width, height);
+  if (push_constants.size() != pipeline.push_constant_size()) {
+    throw std::invalid_argument("trace: " + std::to_string(push_constants.size()) +
+                                " bytes of push constants given but the pipeline declares " +
+                                std::to_string(pipeline.push_constant_size()));
+  }
+  ctx.submit([&](VkCommandBuffer cmd) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.get());
+    VkDescriptorSet raw = set.get();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout(), 0, 1, &raw, 0, nullptr);
+    if (!push_constants.empty()) {
+      vkCmdPushConstants(cmd, pipeline.layout(), all_ray_tracing_stages, 0,
+                         static_cast<std::uint32_t>(push_constants.size()), push_constants.data());
+    }
+    const auto& r = sbt.regions();
+    ctx.rt().cmd_trace_rays(cmd, &r[0], &r[1], &r[2], &r[3], width, height, 1);
+  });
+}
+
+}  // namespace proceduray::vk
