@@ -202,18 +202,18 @@ std::string glsl_hit_attribute(std::string_view name) {
   return "hitAttributeEXT " + std::string(type_ops<T>.glsl_name) + " " + std::string(name) + ";\n";
 }
 
-/// A buffer block with T's members and T's rule; `qualifiers` go first in layout(...).
-inline std::string glsl_block(const TypeOps& t, std::string_view qualifiers, std::string_view block_name,
-                              std::string_view instance_name) {
-  return "layout(" + std::string(qualifiers) + ", " + std::string(to_string(t.rule)) + ") buffer " +
+/// A buffer block with struct t's members under `rule`; `qualifiers` go first in layout(...).
+inline std::string glsl_block(const TypeOps& t, LayoutRule rule, std::string_view qualifiers,
+                              std::string_view block_name, std::string_view instance_name) {
+  return "layout(" + std::string(qualifiers) + ", " + std::string(to_string(rule)) + ") buffer " +
          std::string(block_name) + " {\n" + detail::member_lines(t) + "} " + std::string(instance_name) + ";\n";
 }
 
-/// The record data block of a RootArguments type: `layout(shaderRecordEXT, rule) buffer TRecord {...} name;`.
+/// The record data block of a RootArguments type: `layout(shaderRecordEXT, rule) buffer TShaderRecord {...} name;`.
 template <class Interface, class T>
 std::string glsl_shader_record(std::string_view name) {
   static_cast<void>(Interface::template root_arguments_index<T>());
-  return glsl_block(type_ops<T>, "shaderRecordEXT", std::string(type_ops<T>.glsl_name) + "Record", name);
+  return glsl_block(type_ops<T>, type_ops<T>.rule, "shaderRecordEXT", std::string(type_ops<T>.glsl_name) + "ShaderRecord", name);
 }
 
 /// `source` with `generated` inserted on the line after its `#version` line (at the start if it has none).
