@@ -122,8 +122,10 @@ inline glm::ivec2 project(const Camera& c, glm::vec3 p, std::uint32_t width, std
 /// The GPU objects of the scene, built once; render() traces it at any size.
 class HelloSphere {
  public:
-  explicit HelloSphere(const vk::Context& ctx)
+  /// `albedo[i]` is instance i's colour, written into its hit record.
+  explicit HelloSphere(const vk::Context& ctx, std::array<glm::vec4, 2> albedo = Layout::albedo)
       : m_ctx(&ctx),
+        m_hits{HitRecord{albedo[0]}, HitRecord{albedo[1]}},
         m_blas(build_unit_sphere_blas(ctx)),
         m_tlas(vk::build_tlas(ctx, instances())),
         m_set(ctx, {{0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}),
@@ -187,7 +189,7 @@ class HelloSphere {
 
   const vk::Context* m_ctx;
   MissRecord m_miss{Layout::background};
-  std::array<HitRecord, 2> m_hits{HitRecord{Layout::albedo[0]}, HitRecord{Layout::albedo[1]}};
+  std::array<HitRecord, 2> m_hits;
   vk::AccelerationStructure m_blas;
   vk::AccelerationStructure m_tlas;
   vk::DescriptorSet m_set;

@@ -1,0 +1,53 @@
+#include "test_context.hpp"
+
+#include <proceduray/vk/acceleration.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <limits>
+
+using namespace proceduray;
+
+TEST_CASE("build_blas builds an AABB structure with a device address") {
+  TestContext t;
+  const VkAabbPositionsKHR boxes[] = {{-1, -1, -1, 1, 1, 1}, {2, 2, 2, 3, 3, 3}};
+  const vk::AabbGeometry geometry{boxes};
+  const auto blas = vk::build_blas(t.ctx, {&geometry, 1});
+  CHECK(blas.get() != VK_NULL_HANDLE);
+  CHECK(blas.address() != 0);
+  CHECK(blas.size() > 0);
+}
+
+TEST_CASE("build_blas rejects inverted and non-finite boxes") {
+  TestContext t;
+  const VkAabbPositionsKHR inverted{1, 0, 0, -1, 1, 1};
+  const vk::AabbGeometry g1{{&inverted, 1}};
+  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&g1, 1}), doctest::Contains("box 0"), std::invalid_argument);
+  const VkAabbPositionsKHR nan{0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 1, 1};
+  const vk::AabbGeometry g2{{&nan, 1}};
+  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&g2, 1}), doctest::Contains("finite"), std::invalid_argument);
+  const vk::AabbGeometry empty{};
+  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&empty, 1}), doctest::Contains("no boxes"), std::invalid_argument);
+}
+
+TEST_CASE("build_tlas rejects a missing BLAS and singular or non-finite transforms") {
+  TestContext t;
+  const VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
+  const vk::AabbGeometry geometry{{&box, 1}};
+  const auto blas = vk::build_blas(t.ctx, {&geometry, 1});
+  vk::Instance none{};
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&none, 1}), doctest::Contains("has no BLAS"), std::invalid_argument);
+  vk::Instance flat{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1, 0, 1))};
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&flat, 1}), doctest::Contains("singular"), std::invalid_argument);
+  vk::Instance inf{.blas = &blas};
+  inf.transform[3][0] = std::numeric_limits<float>::infinity();
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&inf, 1}), doctest::Contains("not finite"), std::invalid_argument);
+  vk::Instance big{.blas = &blas, .sbt_offset = 1u << 24};
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&big, 1}), doctest::Contains("24 bits"), std::invalid_argument);
+}
+
+TEST_CASE("build_tlas accepts an empty instance list") {
+  TestContext t;
+  const auto tlas = vk::build_tlas(t.ctx, {});
+  CHECK(tlas.get() != VK_NULL_HANDLE);
+}
