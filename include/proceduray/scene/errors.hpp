@@ -92,13 +92,23 @@ std::vector<std::string> nearest_ids(std::string_view wanted, const Names& known
   return out;
 }
 
+/// `"name"` for messages (built with appends: g++ 12 warns falsely on '"' + std::string).
+inline std::string quote_id(std::string_view name) {
+  std::string out;
+  out.reserve(name.size() + 2);
+  out += '"';
+  out += name;
+  out += '"';
+  return out;
+}
+
 /// `"a", "b", "c"` for messages; `(none)` when empty.
 inline std::string quote_list(const std::vector<std::string>& names) {
   if (names.empty()) return "(none)";
   std::string out;
   for (const auto& name : names) {
     if (!out.empty()) out += ", ";
-    out += '"' + name + '"';
+    out += quote_id(name);
   }
   return out;
 }

@@ -52,7 +52,7 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
   const SbtLayout& layout = sbt.layout();
   const Scene& scene = sbt.scene();
   const PipelinePlan& plan = sbt.plan();
-  std::string out = "SBT: " + std::to_string(layout.size) + " bytes; handle " +
+  std::string out = std::string("SBT: ") + std::to_string(layout.size) + " bytes; handle " +
                     std::to_string(layout.properties.handle_size) + ", handle alignment " +
                     std::to_string(layout.properties.handle_alignment) + ", base alignment " +
                     std::to_string(layout.properties.base_alignment) + "; sbtRecordStride (ray types) " +
@@ -82,7 +82,7 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
            std::to_string(layout.data_offset(kind, i)), std::to_string(e ? e->data_size : 0)});
     }
     if (list.size() > max_records) {
-      records.push_back({to_string(kind), "...", "", "(" + std::to_string(list.size() - max_records) + " more)"});
+      records.push_back({to_string(kind), "...", "", std::string("(") + std::to_string(list.size() - max_records) + " more)"});
     }
   }
   out += detail::format_table(records) + '\n';
@@ -92,7 +92,7 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
     instances.push_back({std::to_string(i), scene.blases()[tlas[i].blas].name, std::to_string(tlas[i].instance),
                          std::to_string(tlas[i].sbt_offset)});
   }
-  if (tlas.size() > max_records) instances.push_back({"...", "(" + std::to_string(tlas.size() - max_records) + " more)"});
+  if (tlas.size() > max_records) instances.push_back({"...", std::string("(") + std::to_string(tlas.size() - max_records) + " more)"});
   out += detail::format_table(instances);
   return out;
 }

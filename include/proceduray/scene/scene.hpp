@@ -66,7 +66,7 @@ class Scene {
     std::uint32_t size = 0;
     if constexpr (!std::is_void_v<Attributes>) {
       if (desc.kind == HitGroupKind::triangles) {
-        throw HitGroupKindError("Scene::add_hit_group: triangle hit group \"" + id + "\" declares an attribute type (" +
+        throw HitGroupKindError(std::string("Scene::add_hit_group: triangle hit group \"") + id + "\" declares an attribute type (" +
                                 std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
                                 "barycentrics: call add_hit_group<void>");
       }

@@ -141,12 +141,12 @@ class ShaderBindingTable {
   void write(std::span<std::byte> buffer, std::span<const std::byte> group_handles) const {
     const std::uint32_t handle = m_layout.properties.handle_size;
     if (buffer.size() < m_layout.size) {
-      throw std::invalid_argument("ShaderBindingTable::write: buffer has " + std::to_string(buffer.size()) +
+      throw std::invalid_argument(std::string("ShaderBindingTable::write: buffer has ") + std::to_string(buffer.size()) +
                                   " bytes, the table needs " + std::to_string(m_layout.size) +
                                   "; allocate layout().size bytes");
     }
     if (group_handles.size() < std::uint64_t{handle} * m_plan.groups.size()) {
-      throw std::invalid_argument("ShaderBindingTable::write: " + std::to_string(group_handles.size()) +
+      throw std::invalid_argument(std::string("ShaderBindingTable::write: ") + std::to_string(group_handles.size()) +
                                   " bytes of group handles, need " + std::to_string(m_plan.groups.size()) +
                                   " groups x " + std::to_string(handle) + " bytes; fetch handles for every planned group");
     }

@@ -244,8 +244,8 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
   const std::uint32_t ray_count = s.rays().size();
   const std::span<const Blas> blases = s.blases();
   const std::uint32_t geometry_count = s.geometries().size();
-  auto ray_name = [&](std::uint32_t r) { return '"' + s.rays().name(r) + '"'; };
-  auto geometry_name = [&](std::uint32_t g) { return '"' + s.geometries().name(g) + '"'; };
+  auto ray_name = [&](std::uint32_t r) { return detail::quote_id(s.rays().name(r)); };
+  auto geometry_name = [&](std::uint32_t g) { return detail::quote_id(s.geometries().name(g)); };
 
   ShaderBindingTable out;
   out.m_scene = m_scene;
@@ -308,7 +308,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
     } else if (e.instance == all_instances) {
       std::uint32_t& slot = wide[std::size_t{e.geometry} * ray_count + e.ray];
       if (slot != no_index) {
-        throw duplicate(slot, i, "ray " + ray_name(e.ray) + " on all instances of geometry " + geometry_name(e.geometry));
+        throw duplicate(slot, i, std::string("ray ") + ray_name(e.ray) + " on all instances of geometry " + geometry_name(e.geometry));
       }
       slot = i;
     } else {
@@ -385,7 +385,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
         if (record.entry != no_index && !m_entries[record.entry].is_default &&
             m_entries[record.entry].instance != all_instances) {
           throw duplicate(record.entry, specific[k],
-                          "ray " + ray_name(e.ray) + " on instance " + std::to_string(i) + " of geometry " +
+                          std::string("ray ") + ray_name(e.ray) + " on instance " + std::to_string(i) + " of geometry " +
                               geometry_name(e.geometry));
         }
         record.entry = specific[k];
@@ -396,16 +396,16 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
   for (const SbtRecord& record : hit) {
     if (record.entry != no_index) continue;
     if (++missing_count <= 8) {
-      missing.push_back("(" + ray_name(record.ray) + ", " + geometry_name(record.geometry) + ", " +
+      missing.push_back(std::string("(") + ray_name(record.ray) + ", " + geometry_name(record.geometry) + ", " +
                         (record.instance == no_index ? std::string("instances without own entries")
-                                                     : "instance " + std::to_string(record.instance)) +
+                                                     : std::string("instance ") + std::to_string(record.instance)) +
                         ")");
     }
   }
   if (missing_count != 0) {
     std::string list;
     for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
-    if (missing_count > missing.size()) list += ", and " + std::to_string(missing_count - missing.size()) + " more";
+    if (missing_count > missing.size()) list += std::string(", and ") + std::to_string(missing_count - missing.size()) + " more";
     throw MissingEntryError(std::string(op) + ": " + std::to_string(missing_count) +
                             " hit records have no entry (ray, geometry, instance): " + list +
                             "; add them with ShaderTable::add_hit or declare ShaderTable::set_default_hit for the ray");

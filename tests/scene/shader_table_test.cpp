@@ -1,0 +1,451 @@
+#include "proceduray/scene/shader_table.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <random>
+#include <tuple>
+
+#include "scene_fixtures.hpp"
+
+using namespace proceduray;
+using namespace proceduray::test;
+
+namespace {
+
+// An entry whose arguments type differs from its local signature's does not compile.
+template <class Signature, class Args>
+concept CanAddHit = requires(ShaderTable t, RayId<> r, HitGroupId h, Signature s, Args a, GeometryId g) {
+  t.add_hit(r, h, s, a, g);
+};
+struct OtherArgs { std::uint32_t x; };
+static_assert(CanAddHit<LocalSignatureId<ProceduralRootArguments>, ProceduralRootArguments>);
+static_assert(!CanAddHit<LocalSignatureId<ProceduralRootArguments>, TriangleRootArguments>);
+static_assert(!CanAddHit<LocalSignatureId<OtherArgs>, std::uint32_t>);
+static_assert(!CanAddHit<LocalSignatureId<>, OtherArgs>);  // an untyped id cannot carry data
+
+template <class Signature, class Args>
+concept CanAddMiss = requires(ShaderTable t, RayId<> r, Signature s, Args a) { t.add_miss(r, s, a); };
+static_assert(CanAddMiss<LocalSignatureId<OtherArgs>, OtherArgs>);
+static_assert(!CanAddMiss<LocalSignatureId<OtherArgs>, TriangleRootArguments>);
+
+template <class T>
+bool bytes_equal(std::span<const std::byte> bytes, const T& value) {
+  return bytes.size() == sizeof(T) && std::memcmp(bytes.data(), &value, sizeof(T)) == 0;
+}
+
+/// Fake group handles: handle g is filled with byte g + 1.
+std::vector<std::byte> fake_handles(const ShaderBindingTable& sbt) {
+  const std::uint32_t h = sbt.layout().properties.handle_size;
+  std::vector<std::byte> out(sbt.plan().groups.size() * h);
+  for (std::size_t g = 0; g < sbt.plan().groups.size(); ++g) {
+    std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(g * h), h, std::byte(g + 1));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("shader_table report scene resolves every ray geometry and instance") {
+  for (const DeviceLimits& limits : all_limits()) {
+    ReportScene r;
+    build_report_scene(r);
+    ShaderTable t(r.scene);
+    add_report_entries(r, t);
+    const ShaderBindingTable sbt = t.build(limits);
+    CHECK(sbt.ray_count() == 2);
+    // Triangle plane: one shared block; each fractal instance has its own entries.
+    CHECK(sbt.records(SbtRegionKind::hit).size() == 2 + 2 * (2 + 3 + 1));
+    CHECK(sbt.instances().size() == 7);
+    CHECK(sbt.instance_sbt_offset(r.plane, 0) == 0);
+    CHECK(sbt.instance_sbt_offset(r.julia, 0) == 2);
+    CHECK(sbt.instance_sbt_offset(r.julia, 1) == 4);
+    CHECK(sbt.instance_sbt_offset(r.pacman, 2) == 10);
+    CHECK(sbt.instance_sbt_offset(r.mandelbulb, 0) == 12);
+    const auto entries = t.entries();
+    std::uint32_t instance_index = 0;
+    for (GeometryId g : {r.julia, r.pacman, r.mandelbulb}) {
+      const std::string name = r.scene.geometries().name(g.index());
+      for (std::uint32_t i = 0; i < r.scene.blas_of(g).instances.size(); ++i, ++instance_index) {
+        const HitResolution radiance = sbt.resolve(r.radiance, g, i);
+        const HitResolution shadow = sbt.resolve(r.shadow, g, i);
+        CHECK(r.scene.hit_groups().name(radiance.entry->hit_group) == name);
+        CHECK(r.scene.hit_groups().name(shadow.entry->hit_group) == name + "_Shadow");
+        CHECK(radiance.entry->instance == i);
+        ProceduralRootArguments args;
+        std::memcpy(&args, t.data().data() + radiance.entry->data_offset, sizeof args);
+        CHECK(args.instance_index == instance_index);
+        CHECK(radiance.record == sbt.instance_sbt_offset(g, i) + sbt.geometry_index(g) * 2 + 0);
+        CHECK(shadow.record == radiance.record + 1);
+        CHECK(&entries[sbt.records(SbtRegionKind::hit)[radiance.record].entry] == radiance.entry);
+      }
+    }
+    CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.plane, 0).entry->hit_group) == "Triangle_Shadow");
+  }
+}
+
+TEST_CASE("shader_table D3D12 sample 22-record hit table in any insertion order") {
+  std::mt19937 rng(22);
+  std::vector<std::uint32_t> order(22);
+  std::iota(order.begin(), order.end(), 0u);
+  for (int trial = 0; trial < 20; ++trial) {
+    D3D12Scene d;
+    build_d3d12_scene(d);
+    ShaderTable t(d.scene);
+    add_d3d12_entries(d, t, order);
+    const ShaderBindingTable sbt = t.build(trial % 2 ? h100_limits : lavapipe_limits);
+    const auto hit = sbt.records(SbtRegionKind::hit);
+    REQUIRE(hit.size() == 22);
+    CHECK(sbt.plan().groups.size() == 1 + 2 + 8);  // raygen, 2 miss, 8 hit groups
+    // The sample's table: [0] triangle, [1] triangle shadow, then (radiance, shadow) per AABB geometry.
+    CHECK(sbt.plan().groups[hit[0].group].name == "MyHitGroup_Triangle");
+    CHECK(sbt.plan().groups[hit[1].group].name == "MyHitGroup_Triangle_ShadowRay");
+    for (std::uint32_t a = 0; a < 10; ++a) {
+      CHECK(sbt.plan().groups[hit[2 + 2 * a].group].name == std::string(d3d12_group_of(a)));
+      CHECK(sbt.plan().groups[hit[3 + 2 * a].group].name == std::string(d3d12_group_of(a)) + "_ShadowRay");
+      CHECK(sbt.geometry_index(d.aabbs[a]) == a);
+    }
+    // InstanceContributionToHitGroupIndex: 0 for the plane BLAS, 2 for the AABB BLAS.
+    CHECK(sbt.instance_sbt_offset(d.plane, 0) == 0);
+    CHECK(sbt.instance_sbt_offset(d.aabbs[0], 0) == 2);
+    CHECK(sbt.instances().size() == 2);
+    // The sample's indexing example: a shadow ray hitting the 2nd AABB geometry -> record 5.
+    const HitResolution example = sbt.resolve(d.shadow, d.aabbs[1], 0);
+    CHECK(example.record == 1 + 2 * 1 + 2);
+    CHECK(example.record == 5);
+    // Every record holds the args of the slot it was bound for, whatever the insertion order.
+    for (std::uint32_t slot = 0; slot < 22; ++slot) {
+      const auto data = sbt.record_data(hit[slot]);
+      D3D12RootArguments args;
+      REQUIRE(data.size() == sizeof args);
+      std::memcpy(&args, data.data(), sizeof args);
+      CHECK(args.aabb.primitive_type == slot);
+    }
+    std::shuffle(order.begin(), order.end(), rng);
+  }
+}
+
+TEST_CASE("shader_table write puts handles and record data at their offsets") {
+  for (const DeviceLimits& limits : all_limits()) {
+    D3D12Scene d;
+    build_d3d12_scene(d);
+    ShaderTable t(d.scene);
+    std::vector<std::uint32_t> order(22);
+    std::iota(order.begin(), order.end(), 0u);
+    add_d3d12_entries(d, t, order);
+    const ShaderBindingTable sbt = t.build(limits);
+    const auto handles = fake_handles(sbt);
+    std::vector<std::byte> buffer(sbt.layout().size, std::byte{0xEE});
+    sbt.write(buffer, handles);
+    const std::uint32_t h = limits.sbt.handle_size;
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const auto kind = static_cast<SbtRegionKind>(k);
+      const auto records = sbt.records(kind);
+      for (std::uint32_t i = 0; i < records.size(); ++i) {
+        const std::uint64_t at = sbt.layout().record_offset(kind, i);
+        CHECK(buffer[at] == std::byte(records[i].group + 1));
+        CHECK(buffer[at + h - 1] == std::byte(records[i].group + 1));
+        const auto data = sbt.record_data(records[i]);
+        CHECK(std::equal(data.begin(), data.end(), buffer.begin() + static_cast<std::ptrdiff_t>(sbt.layout().data_offset(kind, i))));
+      }
+    }
+    std::vector<std::byte> small(sbt.layout().size - 1);
+    CHECK_THROWS_WITH_AS(sbt.write(small, handles), doctest::Contains("allocate layout().size"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(sbt.write(buffer, std::span(handles).first(h)), doctest::Contains("fetch handles"),
+                         std::invalid_argument);
+  }
+}
+
+namespace {
+
+struct Args4 { std::uint32_t tag; };
+struct Args16 { std::uint32_t tag; std::uint32_t pad[3]; };
+struct Args40 { std::uint32_t tag; float values[9]; };
+struct Payload { float value; };
+
+struct Key {
+  std::uint32_t ray, geometry, instance;
+  auto operator<=>(const Key&) const = default;
+};
+
+/// One random scene: random rays, geometries (some sharing BLASes), instances, bindings,
+/// data sizes and insertion order; returns the number of checked (ray, geometry, instance).
+std::uint64_t check_random_scene(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  auto pick = [&](std::uint32_t n) { return static_cast<std::uint32_t>(rng() % n); };
+  Scene s;
+  const std::uint32_t ray_count = 1 + pick(4);
+  std::vector<RayId<Payload>> rays;
+  for (std::uint32_t r = 0; r < ray_count; ++r) rays.push_back(s.add_ray<Payload>("ray" + std::to_string(r), {.miss = "miss" + std::to_string(pick(2))}));
+  std::array<std::vector<HitGroupId>, 2> groups;
+  for (std::uint32_t h = 0; h < 3; ++h) {
+    groups[0].push_back(s.add_hit_group("tri" + std::to_string(h), {.closest_hit = "chit" + std::to_string(h)}));
+    groups[1].push_back(s.add_hit_group<Args16>("proc" + std::to_string(h), {.kind = HitGroupKind::procedural,
+        .closest_hit = "chit" + std::to_string(h), .intersection = "isect" + std::to_string(h)}));
+  }
+  const auto sig4 = s.add_local_signature<Args4>("a4");
+  const auto sig16 = s.add_local_signature<Args16>("a16");
+  const auto sig40 = s.add_local_signature<Args40>("a40");
+  const std::uint32_t geometry_count = 1 + pick(6);
+  const std::array<GeometryKind, 2> shared_kind{GeometryKind(pick(2)), GeometryKind(pick(2))};
+  std::vector<GeometryId> geometries;
+  TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
+  for (std::uint32_t g = 0; g < geometry_count; ++g) {
+    const std::uint32_t blas = pick(3);  // 0: own, 1/2: shared "S1"/"S2"
+    const GeometryKind kind = blas == 0 ? GeometryKind(pick(2)) : shared_kind[blas - 1];
+    GeometryDesc d = kind == GeometryKind::triangles ? GeometryDesc::triangles(tri, {}) : GeometryDesc::procedural({Aabb{}}, {});
+    d.instances = translations(pick(5), float(g));
+    if (blas != 0) {
+      d.blas = "S" + std::to_string(blas);
+      const std::string& name = d.blas;
+      // Instances belong to the BLAS: the first member declares them, the others inherit.
+      for (const Blas& b : s.blases()) {
+        if (b.name == name) d.instances.clear();
+      }
+    }
+    geometries.push_back(s.add_geometry("geometry" + std::to_string(g), std::move(d)));
+  }
+
+  // Plan the bindings, then add them in a random order.
+  struct Planned { Key key; bool is_default; std::uint32_t group; std::uint32_t size_class; std::uint32_t tag; };
+  std::vector<Planned> plan;
+  std::uint32_t tag = 1;
+  std::array<std::vector<bool>, 2> has_default{std::vector<bool>(ray_count), std::vector<bool>(ray_count)};
+  for (std::uint32_t k = 0; k < 2; ++k) {
+    for (std::uint32_t r = 0; r < ray_count; ++r) {
+      if (pick(3) == 0) {
+        has_default[k][r] = true;
+        plan.push_back({{r, no_index, no_index}, true, groups[k][pick(3)].index(), pick(4), tag++});
+      }
+    }
+  }
+  for (GeometryId g : geometries) {
+    const auto kind = static_cast<std::uint32_t>(s.geometry(g).desc.kind);
+    const auto instances = static_cast<std::uint32_t>(s.blas_of(g).instances.size());
+    for (std::uint32_t r = 0; r < ray_count; ++r) {
+      const std::uint32_t mode = pick(4);
+      const bool wide = mode == 0 || mode == 1 || (mode == 3 && !has_default[kind][r]);
+      if (wide) plan.push_back({{r, g.index(), no_index}, false, groups[kind][pick(3)].index(), pick(4), tag++});
+      for (std::uint32_t i = 0; i < instances; ++i) {
+        if (mode == 2 || (mode == 1 && pick(2) == 0)) {
+          plan.push_back({{r, g.index(), i}, false, groups[kind][pick(3)].index(), pick(4), tag++});
+        }
+      }
+    }
+  }
+  std::shuffle(plan.begin(), plan.end(), rng);
+
+  ShaderTable t(s);
+  t.add_raygen("rgen");
+  if (pick(2)) t.add_miss(rays[0], sig4, Args4{0xABCDu});
+  std::map<Key, std::uint32_t> wide_tag, specific_tag;
+  std::array<std::vector<std::uint32_t>, 2> default_tag{std::vector<std::uint32_t>(ray_count, 0),
+                                                         std::vector<std::uint32_t>(ray_count, 0)};
+  std::map<std::uint32_t, std::uint32_t> entry_of_tag;
+  for (const Planned& p : plan) {
+    const HitGroupId group(p.group);
+    const RayId<Payload> ray = rays[p.key.ray];
+    const GeometryId geometry(p.key.geometry);
+    const std::uint32_t instance = p.key.instance == no_index ? ShaderTable::all_instances : p.key.instance;
+    EntryId id;
+    if (p.is_default) {
+      switch (p.size_class) {
+        case 0: id = t.set_default_hit(ray, group); break;
+        case 1: id = t.set_default_hit(ray, group, sig4, Args4{p.tag}); break;
+        case 2: id = t.set_default_hit(ray, group, sig16, Args16{p.tag, {}}); break;
+        default: id = t.set_default_hit(ray, group, sig40, Args40{p.tag, {}}); break;
+      }
+      default_tag[static_cast<std::uint32_t>(s.hit_group(group).desc.kind)][p.key.ray] = p.tag;
+    } else {
+      switch (p.size_class) {
+        case 0: id = t.add_hit(ray, group, geometry, instance); break;
+        case 1: id = t.add_hit(ray, group, sig4, Args4{p.tag}, geometry, instance); break;
+        case 2: id = t.add_hit(ray, group, sig16, Args16{p.tag, {}}, geometry, instance); break;
+        default: id = t.add_hit(ray, group, sig40, Args40{p.tag, {}}, geometry, instance); break;
+      }
+      (p.key.instance == no_index ? wide_tag : specific_tag)[p.key] = p.tag;
+    }
+    entry_of_tag[p.tag] = id.index();
+  }
+
+  const auto limits = all_limits()[seed % 5];
+  const ShaderBindingTable sbt = t.build(limits);
+  const auto hit = sbt.records(SbtRegionKind::hit);
+  std::vector<std::byte> buffer(sbt.layout().size);
+  sbt.write(buffer, fake_handles(sbt));
+  std::vector<bool> reached(hit.size(), false);
+  std::uint64_t checked = 0;
+  for (GeometryId g : geometries) {
+    const Blas& blas = s.blas_of(g);
+    const auto kind = static_cast<std::uint32_t>(blas.kind);
+    for (std::uint32_t i = 0; i < blas.instances.size(); ++i) {
+      for (std::uint32_t r = 0; r < ray_count; ++r) {
+        // The oracle: instance-specific, else geometry-wide, else the ray's default for the kind.
+        std::uint32_t expected_tag = 0;
+        if (auto it = specific_tag.find({r, g.index(), i}); it != specific_tag.end()) expected_tag = it->second;
+        else if (auto w = wide_tag.find({r, g.index(), no_index}); w != wide_tag.end()) expected_tag = w->second;
+        else expected_tag = default_tag[kind][r];
+        REQUIRE(expected_tag != 0);
+        const std::uint32_t expected_entry = entry_of_tag.at(expected_tag);
+        // The Vulkan rule, computed from what the TLAS instance and BLAS carry.
+        const TlasInstance& inst = sbt.instances()[sbt.tlas_index(g, i)];
+        CHECK(inst.blas == s.geometry(g).blas);
+        CHECK(inst.instance == i);
+        const std::uint32_t record = inst.sbt_offset + s.geometry(g).geometry_index * ray_count + r;
+        REQUIRE(record < hit.size());
+        CHECK(hit[record].entry == expected_entry);
+        const HitResolution res = sbt.resolve(rays[r], g, i);
+        CHECK(res.record == record);
+        CHECK(res.entry == &t.entries()[expected_entry]);
+        CHECK(sbt.plan().groups[hit[record].group].hit_group.index() == t.entries()[expected_entry].hit_group);
+        // The bytes the GPU reads at that record: the handle of the bound group, then its data.
+        const std::uint64_t at = sbt.layout().record_offset(SbtRegionKind::hit, record);
+        CHECK(buffer[at] == std::byte(hit[record].group + 1));
+        const auto data = t.data(EntryId(expected_entry));
+        if (!data.empty()) {
+          std::uint32_t written = 0;
+          std::memcpy(&written, buffer.data() + at + limits.sbt.handle_size, 4);
+          CHECK(written == expected_tag);
+        }
+        reached[record] = true;
+        ++checked;
+      }
+    }
+  }
+  // No record is unreachable: the table holds no more than the scene needs.
+  CHECK(std::count(reached.begin(), reached.end(), false) == 0);
+  check_layout_invariants(sbt.layout(), {{{1, sbt.plan().max_record_data_size[0]},
+                                          {ray_count, sbt.plan().max_record_data_size[1]},
+                                          {static_cast<std::uint32_t>(hit.size()), sbt.plan().max_record_data_size[2]},
+                                          {}}});
+  return checked;
+}
+
+}  // namespace
+
+TEST_CASE("shader_table 1000 random scenes resolve every ray geometry and instance to its entry") {
+  std::uint64_t checked = 0;
+  for (std::uint32_t seed = 0; seed < 1000; ++seed) {
+    INFO("seed " << seed);
+    checked += check_random_scene(seed);
+  }
+  CHECK(checked > 10000);
+}
+
+TEST_CASE("shader_table missing pairs are listed unless a default entry exists") {
+  ReportScene r;
+  build_report_scene(r);
+  ShaderTable t(r.scene);
+  t.add_raygen("Raygen");
+  const auto sig = r.scene.local_signature_id<TriangleRootArguments>("Triangle");
+  t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), sig, TriangleRootArguments{}, r.plane);
+  t.add_hit(r.radiance, r.scene.hit_group_id("Julia"), r.julia);
+  t.add_hit(r.shadow, r.scene.hit_group_id("Julia_Shadow"), r.julia, 1);
+  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("(\"Shadow\", \"GlobalGeometry\", instances without own entries)"),
+                       MissingEntryError);
+  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("(\"Shadow\", \"Julia\", instances without own entries)"),
+                       MissingEntryError);
+  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("(\"Radiance\", \"Pacman\""), MissingEntryError);
+  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("set_default_hit"), MissingEntryError);
+  t.set_default_hit(r.shadow, r.scene.hit_group_id("Triangle_Shadow"));
+  t.set_default_hit(r.shadow, r.scene.hit_group_id("Pacman_Shadow"));
+  t.set_default_hit(r.radiance, r.scene.hit_group_id("Pacman"));
+  const ShaderBindingTable sbt = t.build(lavapipe_limits);
+  CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.mandelbulb, 0).entry->hit_group) == "Pacman_Shadow");
+  CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.julia, 1).entry->hit_group) == "Julia_Shadow");
+  CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.julia, 0).entry->hit_group) == "Pacman_Shadow");
+  CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.plane, 0).entry->hit_group) == "Triangle_Shadow");
+  CHECK_THROWS_WITH_AS(t.set_default_hit(r.shadow, r.scene.hit_group_id("Julia_Shadow")),
+                       doctest::Contains("already has a default procedural hit group"), DuplicateIdError);
+}
+
+TEST_CASE("shader_table duplicate bindings name both entries") {
+  ReportScene r;
+  build_report_scene(r);
+  ShaderTable t(r.scene);
+  add_report_entries(r, t);
+  const auto sig = r.scene.local_signature_id<ProceduralRootArguments>("Procedural");
+  t.add_hit(r.radiance, r.scene.hit_group_id("Pacman"), sig, ProceduralRootArguments{}, r.pacman, 1);
+  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("both bind ray \"Radiance\" on instance 1 of geometry \"Pacman\""),
+                       DuplicateIdError);
+  ShaderTable u(r.scene);
+  add_report_entries(r, u);
+  u.add_hit(r.shadow, r.scene.hit_group_id("Triangle_Shadow"), r.plane);
+  CHECK_THROWS_WITH_AS(u.build(lavapipe_limits), doctest::Contains("on all instances of geometry \"GlobalGeometry\""),
+                       DuplicateIdError);
+  ShaderTable v(r.scene);
+  v.add_miss(r.radiance, sig, ProceduralRootArguments{});
+  CHECK_THROWS_WITH_AS(v.add_miss(r.radiance, sig, ProceduralRootArguments{}), doctest::Contains("already has a miss entry"),
+                       DuplicateIdError);
+}
+
+TEST_CASE("shader_table hit group kind must match the geometry") {
+  ReportScene r;
+  build_report_scene(r);
+  ShaderTable t(r.scene);
+  CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), r.pacman),
+                       doctest::Contains("procedural geometry \"Pacman\" bound to triangles hit group \"Triangle\", which has no intersection shader"),
+                       HitGroupKindError);
+  CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Pacman"), r.plane),
+                       doctest::Contains("bind a triangles hit group"), HitGroupKindError);
+  CHECK(t.entries().empty());
+}
+
+TEST_CASE("shader_table string ids are checked at run time") {
+  ReportScene r;
+  build_report_scene(r);
+  ShaderTable t(r.scene);
+  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", TriangleRootArguments{}, "Pacman"),
+                       doctest::Contains("local signature \"Procedural\" has record data type"), TypeMismatchError);
+  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacmam", "Procedural", ProceduralRootArguments{}, "Pacman"),
+                       doctest::Contains("unknown hit group id \"Pacmam\"; nearest known ids: \"Pacman\""), UnknownIdError);
+  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", ProceduralRootArguments{}, "Pacman", 3),
+                       doctest::Contains("instance 3 of geometry \"Pacman\" does not exist (it has 3 instances)"), SceneError);
+  CHECK_THROWS_AS(t.add_hit(r.radiance, HitGroupId(), r.pacman), UnknownIdError);
+}
+
+TEST_CASE("shader_table device limits: instances recursion attributes stride") {
+  ReportScene r;
+  build_report_scene(r);
+  ShaderTable t(r.scene);
+  add_report_entries(r, t);
+  DeviceLimits limits = lavapipe_limits;
+  limits.max_instance_count = 6;
+  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("the scene has 7 instances, the device allows 6"), DeviceLimitError);
+  limits = lavapipe_limits;
+  limits.max_ray_recursion_depth = 2;
+  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("max recursion depth 3 exceeds the device's maxRayRecursionDepth 2"),
+                       DeviceLimitError);
+  limits = lavapipe_limits;
+  limits.max_ray_hit_attribute_size = 8;
+  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("reports 16 bytes of hit attributes, the device allows 8"),
+                       DeviceLimitError);
+  limits = lavapipe_limits;
+  limits.sbt.max_stride = 64;  // 32 + 32 bytes of ProceduralRootArguments... exceeds
+  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("exceeds the device's maxShaderGroupStride 64"), std::length_error);
+  limits = lavapipe_limits;
+  limits.max_geometry_count = 0;
+  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("maxGeometryCount"), DeviceLimitError);
+  ShaderTable empty(r.scene);
+  CHECK_THROWS_WITH_AS(empty.build(lavapipe_limits), doctest::Contains("no raygen entry"), SceneError);
+  CHECK_THROWS_AS(t.set_max_recursion_depth(0), SceneError);
+}
+
+TEST_CASE("shader_table one block per BLAS and the instance limit") {
+  Scene s;
+  const auto ray = s.add_ray<Payload>("r", {.miss = "m"});
+  const auto group = s.add_hit_group("g", {.closest_hit = "c"});
+  TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
+  // Three one-instance BLASes: offsets 0, 1, 2; a device allowing 2 instances refuses the scene.
+  std::vector<GeometryId> geometries;
+  for (const char* name : {"g0", "g1", "g2"}) geometries.push_back(s.add_geometry(name, GeometryDesc::triangles(tri)));
+  ShaderTable t(s);
+  t.add_raygen("rgen");
+  for (GeometryId g : geometries) t.add_hit(ray, group, g);
+  CHECK(t.build(lavapipe_limits).instance_sbt_offset(s.geometry_id("g2"), 0) == 2);
+  DeviceLimits limits = lavapipe_limits;
+  limits.max_instance_count = 2;
+  CHECK_THROWS_AS(t.build(limits), DeviceLimitError);
+}
