@@ -1,0 +1,23 @@
+#include "proceduray/scene/global_signature.hpp"
+
+#include <doctest/doctest.h>
+
+using namespace proceduray;
+
+TEST_CASE("global_signature validate rejects duplicate bindings and odd push constants") {
+  GlobalSignatureDesc ok{.bindings = {{.kind = BindingKind::acceleration_structure, .binding = 0},
+                                      {.kind = BindingKind::storage_image, .binding = 1},
+                                      {.kind = BindingKind::uniform_buffer, .binding = 0, .set = 1}},
+                         .push_constant_size = 16};
+  CHECK_NOTHROW(validate(ok, "G", "op"));
+  GlobalSignatureDesc dup = ok;
+  dup.bindings.push_back({.kind = BindingKind::storage_buffer, .binding = 1});
+  CHECK_THROWS_WITH_AS(validate(dup, "G", "op"), doctest::Contains("op: global signature \"G\" declares set 0 binding 1 twice"),
+                       DuplicateIdError);
+  GlobalSignatureDesc odd = ok;
+  odd.push_constant_size = 6;
+  CHECK_THROWS_WITH_AS(validate(odd, "G", "op"), doctest::Contains("push_constant_size 6 is not a multiple of 4"), SceneError);
+  GlobalSignatureDesc zero{.bindings = {{.count = 0}}};
+  CHECK_THROWS_WITH_AS(validate(zero, "G", "op"), doctest::Contains("count 0"), SceneError);
+  CHECK(std::string(to_string(BindingKind::storage_image)) == "storage_image");
+}

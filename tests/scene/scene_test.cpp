@@ -1,0 +1,138 @@
+#include "proceduray/scene/scene.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace proceduray;
+
+namespace {
+struct Payload { float value; };
+struct OtherPayload { std::uint32_t hit; };
+struct Args { std::uint32_t index; };
+struct Attributes { float normal[3]; };
+TriangleMesh triangle() { return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}; }
+}  // namespace
+
+TEST_CASE("scene entities register by id and return typed ids") {
+  Scene s;
+  const RayId<Payload> radiance = s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  const RayId<OtherPayload> shadow = s.add_ray<OtherPayload>("Shadow", {.miss = "miss_shadow"});
+  const HitGroupId tri = s.add_hit_group("Triangle", {.closest_hit = "chit"});
+  const HitGroupId proc = s.add_hit_group<Attributes>("Proc", {.kind = HitGroupKind::procedural, .intersection = "isect"});
+  const GeometryId plane = s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
+  const GlobalSignatureId global = s.add_global_signature("Global", {.bindings = {{.kind = BindingKind::acceleration_structure}}});
+  const LocalSignatureId<Args> local = s.add_local_signature<Args>("Local");
+  CHECK(radiance.index() == 0);
+  CHECK(shadow.index() == 1);
+  CHECK(s.ray_id<Payload>("Radiance") == radiance);
+  CHECK(s.ray_id("Shadow") == RayId<>(shadow));
+  CHECK(s.hit_group_id("Proc") == proc);
+  CHECK(s.geometry_id("Plane") == plane);
+  CHECK(s.global_signature_id("Global") == global);
+  CHECK(s.local_signature_id<Args>("Local") == local);
+  CHECK(s.ray(radiance).payload_size == sizeof(Payload));
+  CHECK(s.ray("Shadow").desc.miss == "miss_shadow");
+  CHECK(s.hit_group(tri).attribute_size == triangle_attribute_size);
+  CHECK(s.hit_group(proc).attribute_size == sizeof(Attributes));
+  CHECK(s.local_signature(local).data_size == sizeof(Args));
+  CHECK(s.global_signature(global).desc.bindings.size() == 1);
+  CHECK(s.geometry(plane).desc.kind == GeometryKind::triangles);
+}
+
+TEST_CASE("scene find returns a pointer or nullptr") {
+  Scene s;
+  s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  s.add_hit_group("Triangle", {});
+  s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
+  s.add_local_signature<Args>("Local");
+  s.add_global_signature("Global", {});
+  REQUIRE(s.find_ray("Radiance") != nullptr);
+  CHECK(s.find_ray("Radiance")->desc.miss == "miss");
+  CHECK(s.find_ray("radiance") == nullptr);
+  CHECK(s.find_hit_group("Triangle") != nullptr);
+  CHECK(s.find_hit_group("Nope") == nullptr);
+  CHECK(s.find_geometry("Plane") != nullptr);
+  CHECK(s.find_geometry("plane") == nullptr);
+  CHECK(s.find_local_signature("Local") != nullptr);
+  CHECK(s.find_global_signature("Global") != nullptr);
+  CHECK(s.find_global_signature("Local") == nullptr);
+}
+
+TEST_CASE("scene duplicate ids throw naming the id") {
+  Scene s;
+  s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  CHECK_THROWS_WITH_AS(s.add_ray<Payload>("Radiance", {.miss = "other"}),
+                       doctest::Contains("Scene::add_ray: duplicate ray id \"Radiance\""), DuplicateIdError);
+  s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
+  CHECK_THROWS_WITH_AS(s.add_geometry("Plane", GeometryDesc::triangles(triangle())),
+                       doctest::Contains("duplicate geometry id \"Plane\""), DuplicateIdError);
+  CHECK(s.blases().size() == 1);  // the failed add left no BLAS behind
+  s.add_local_signature<Args>("Local");
+  CHECK_THROWS_AS(s.add_local_signature<Args>("Local"), DuplicateIdError);
+  s.add_hit_group("G", {});
+  CHECK_THROWS_WITH_AS(s.add_hit_group("G", {}), doctest::Contains("choose a unique id"), DuplicateIdError);
+}
+
+TEST_CASE("scene unknown ids name the nearest known ids") {
+  Scene s;
+  for (const char* name : {"Pacman", "Pacman_Shadow", "Mandelbulb", "Julia"}) {
+    s.add_hit_group<Attributes>(name, {.kind = HitGroupKind::procedural, .intersection = "isect"});
+  }
+  CHECK_THROWS_WITH_AS(s.hit_group_id("Pacmn"),
+                       doctest::Contains("Scene::hit_group_id: unknown hit group id \"Pacmn\"; nearest known ids: \"Pacman\", \"Julia\""),
+                       UnknownIdError);
+  CHECK_THROWS_WITH_AS(s.hit_group("Mandelbrot"), doctest::Contains("nearest known ids: \"Mandelbulb\""), UnknownIdError);
+  CHECK_THROWS_WITH_AS(s.ray_id("Radiance"), doctest::Contains("unknown ray id \"Radiance\"; nearest known ids: (none)"),
+                       UnknownIdError);
+  CHECK_THROWS_WITH_AS(s.geometry(GeometryId(7)), doctest::Contains("geometry #7 is not registered"), UnknownIdError);
+  CHECK_THROWS_WITH_AS(s.geometry(GeometryId()), doctest::Contains("(invalid id)"), UnknownIdError);
+}
+
+TEST_CASE("scene typed lookups check the registered type") {
+  Scene s;
+  s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  s.add_local_signature<Args>("Local");
+  CHECK_NOTHROW(s.ray_id<Payload>("Radiance"));
+  CHECK_THROWS_WITH_AS(s.ray_id<OtherPayload>("Radiance"), doctest::Contains("ray \"Radiance\" has payload type"),
+                       TypeMismatchError);
+  CHECK_THROWS_WITH_AS(s.local_signature_id<Payload>("Local"), doctest::Contains("ask for the type it was registered with"),
+                       TypeMismatchError);
+}
+
+TEST_CASE("scene hit group kinds are checked when registered") {
+  Scene s;
+  CHECK_THROWS_WITH_AS(s.add_hit_group("Tri", {.closest_hit = "c", .intersection = "isect"}),
+                       doctest::Contains("triangle hit group \"Tri\" has intersection shader \"isect\""), HitGroupKindError);
+  CHECK_THROWS_WITH_AS(s.add_hit_group("Proc", {.kind = HitGroupKind::procedural, .closest_hit = "c"}),
+                       doctest::Contains("procedural hit group \"Proc\" has no intersection shader"), HitGroupKindError);
+  CHECK_THROWS_WITH_AS(s.add_hit_group<Attributes>("Tri2", {.closest_hit = "c"}),
+                       doctest::Contains("triangles report the built-in barycentrics"), HitGroupKindError);
+  CHECK(s.hit_groups().size() == 0);
+}
+
+TEST_CASE("scene geometries sharing a BLAS get consecutive geometry indices") {
+  Scene s;
+  GeometryDesc a = GeometryDesc::procedural({Aabb{}}, {identity_transform(), identity_transform()});
+  a.blas = "Shared";
+  GeometryDesc b = GeometryDesc::procedural({Aabb{}}, {});
+  b.blas = "Shared";
+  const GeometryId own = s.add_geometry("Own", GeometryDesc::procedural({Aabb{}}));
+  const GeometryId ga = s.add_geometry("A", a);
+  const GeometryId gb = s.add_geometry("B", b);
+  CHECK(s.blases().size() == 2);
+  CHECK(s.geometry(own).geometry_index == 0);
+  CHECK(s.geometry(ga).geometry_index == 0);
+  CHECK(s.geometry(gb).geometry_index == 1);
+  CHECK(s.geometry(ga).blas == s.geometry(gb).blas);
+  CHECK(s.blas_of(gb).instances.size() == 2);
+  CHECK(s.blas_of(own).name == "Own");
+  CHECK(s.instance_count() == 3);
+  GeometryDesc tri = GeometryDesc::triangles(triangle(), {});
+  tri.blas = "Shared";
+  CHECK_THROWS_WITH_AS(s.add_geometry("T", tri), doctest::Contains("a BLAS holds one kind"), InvalidGeometryError);
+  GeometryDesc other = GeometryDesc::procedural({Aabb{}}, {identity_transform()});
+  other.blas = "Shared";
+  CHECK_THROWS_WITH_AS(s.add_geometry("C", other), doctest::Contains("instances belong to the BLAS"), InvalidGeometryError);
+}
