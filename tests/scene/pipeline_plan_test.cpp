@@ -1,0 +1,100 @@
+#include "proceduray/scene/pipeline_plan.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "scene_fixtures.hpp"
+
+using namespace proceduray;
+using namespace proceduray::test;
+
+TEST_CASE("pipeline_plan report scene holds exactly the used stages and groups") {
+  ReportScene r;
+  build_report_scene(r);
+  // A hit group no entry references is not in the plan.
+  r.scene.add_hit_group<FractalAttributes>("Unused", {.kind = HitGroupKind::procedural, .closest_hit = "ClosestHit_Unused",
+                                                      .intersection = "Intersection_Unused"});
+  ShaderTable t(r.scene);
+  add_report_entries(r, t);
+  const ShaderBindingTable sbt = t.build(lavapipe_limits);
+  const PipelinePlan& plan = sbt.plan();
+  // 1 raygen + 2 miss + 8 hit groups.
+  REQUIRE(plan.groups.size() == 11);
+  CHECK(plan.groups[0].name == "Raygen");
+  CHECK(plan.groups[0].type == GroupType::general);
+  CHECK(plan.stages[plan.groups[0].general].stage == ShaderStage::raygen);
+  CHECK(plan.groups[1].name == "Miss");
+  CHECK(plan.groups[2].name == "Miss_Shadow");
+  CHECK(plan.groups[3].name == "Triangle");
+  CHECK(plan.groups[3].type == GroupType::triangles_hit);
+  CHECK(plan.groups[3].intersection == unused_shader);
+  CHECK(plan.groups[4].name == "Triangle_Shadow");
+  CHECK(plan.groups[4].closest_hit == unused_shader);
+  CHECK(std::none_of(plan.groups.begin(), plan.groups.end(), [](const PlannedGroup& g) { return g.name == "Unused"; }));
+  CHECK(std::none_of(plan.stages.begin(), plan.stages.end(), [](const PlannedStage& s) { return s.shader == "ClosestHit_Unused"; }));
+  // Stages appear once: 1 raygen, 2 miss, 4 closest-hit, 3 intersection shared by radiance and shadow groups.
+  CHECK(plan.stages.size() == 1 + 2 + 4 + 3);
+  const auto pacman = std::find_if(plan.groups.begin(), plan.groups.end(), [](const PlannedGroup& g) { return g.name == "Pacman"; });
+  const auto pacman_shadow = std::find_if(plan.groups.begin(), plan.groups.end(), [](const PlannedGroup& g) { return g.name == "Pacman_Shadow"; });
+  REQUIRE(pacman != plan.groups.end());
+  REQUIRE(pacman_shadow != plan.groups.end());
+  CHECK(pacman->type == GroupType::procedural_hit);
+  CHECK(pacman->intersection == pacman_shadow->intersection);
+  CHECK(plan.stages[pacman->intersection].shader == "Intersection_Pacman");
+  CHECK(plan.stages[pacman->intersection].stage == ShaderStage::intersection);
+  CHECK(pacman->hit_group == r.scene.hit_group_id("Pacman"));
+  // Sizes are the scene's own maxima.
+  CHECK(plan.max_recursion_depth == 3);
+  CHECK(plan.max_payload_size == sizeof(RayPayload));
+  CHECK(plan.max_attribute_size == sizeof(FractalAttributes));
+  CHECK(plan.max_record_data_size[0] == 0);
+  CHECK(plan.max_record_data_size[1] == 0);
+  CHECK(plan.max_record_data_size[2] == sizeof(ProceduralRootArguments));
+  CHECK(sbt.layout().region(SbtRegionKind::hit).stride == detail::align_up(32 + sizeof(ProceduralRootArguments), 16));
+  CHECK(plan.global_signature == r.scene.global_signature_id("Global"));
+  CHECK(plan.local_signatures.size() == 2);
+}
+
+TEST_CASE("pipeline_plan triangles only scene reports the built-in attribute size") {
+  Scene s;
+  const auto ray = s.add_ray<ShadowPayload>("r", {.miss = "m"});
+  const auto group = s.add_hit_group("g", {.closest_hit = "c", .any_hit = "a"});
+  s.add_hit_group<FractalAttributes>("p", {.kind = HitGroupKind::procedural, .intersection = "i"});
+  const auto plane = s.add_geometry("plane", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}));
+  ShaderTable t(s);
+  t.add_raygen("rgen");
+  t.add_raygen("rgen");  // the same shader twice: two records, one group
+  t.add_hit(ray, group, plane);
+  const ShaderBindingTable sbt = t.build(h100_limits);
+  const PipelinePlan& plan = sbt.plan();
+  CHECK(plan.max_attribute_size == triangle_attribute_size);
+  CHECK(plan.max_payload_size == sizeof(ShadowPayload));
+  CHECK(plan.groups.size() == 3);
+  CHECK(plan.stages.size() == 4);  // rgen, m, c, a
+  CHECK(sbt.records(SbtRegionKind::raygen).size() == 2);
+  CHECK(sbt.records(SbtRegionKind::raygen)[0].group == sbt.records(SbtRegionKind::raygen)[1].group);
+  CHECK(plan.max_recursion_depth == 1);
+  CHECK_FALSE(plan.global_signature.valid());
+  CHECK(plan.local_signatures.empty());
+}
+
+TEST_CASE("pipeline_plan ray without miss shader gets a null miss record") {
+  Scene s;
+  const auto ray = s.add_ray<ShadowPayload>("r", {});
+  const auto group = s.add_hit_group("g", {.closest_hit = "c"});
+  const auto plane = s.add_geometry("plane", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}));
+  ShaderTable t(s);
+  t.add_raygen("rgen");
+  t.add_hit(ray, group, plane);
+  const ShaderBindingTable sbt = t.build(lavapipe_limits);
+  REQUIRE(sbt.records(SbtRegionKind::miss).size() == 1);
+  CHECK(sbt.records(SbtRegionKind::miss)[0].group == no_index);
+  CHECK(sbt.plan().groups.size() == 2);
+  std::vector<std::byte> handles(2 * 32, std::byte{7});
+  std::vector<std::byte> buffer(sbt.layout().size, std::byte{0xEE});
+  sbt.write(buffer, handles);
+  const auto miss = sbt.layout().record_offset(SbtRegionKind::miss, 0);
+  CHECK(std::all_of(buffer.begin() + static_cast<std::ptrdiff_t>(miss), buffer.begin() + static_cast<std::ptrdiff_t>(miss + 32),
+                    [](std::byte b) { return b == std::byte{0}; }));
+}
