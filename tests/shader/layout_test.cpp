@@ -129,9 +129,10 @@ void prove(LayoutRule rule) {
     CHECK(predicted[name].stride == leaf.stride);
   }
   CHECK(glsl.leaves.size() == predicted.size());
-  // glslang reports the block's size without trailing padding; the rule's size rounds it up.
-  CHECK(proceduray::round_up(glsl.block_size, proceduray::extent_of(t, rule).align) ==
-        proceduray::extent_of(t, rule).size);
+  // glslang reports the block's size without trailing padding; std430/std140 round it up, scalar does not.
+  const proceduray::Extent extent = proceduray::extent_of(t, rule);
+  CHECK((rule == LayoutRule::scalar ? glsl.block_size : proceduray::round_up(glsl.block_size, extent.align)) ==
+        extent.size);
   if (proceduray::matches_host(t, rule)) {
     for (const auto& [name, leaf] : glsl.leaves) {
       INFO("member ", name);
@@ -156,6 +157,16 @@ TEST_CASE("scalar rule aligns to components") {
   static_assert(proceduray::field_offset(type_ops<ScalarMix>, 7, r) == 80);
   CHECK(proceduray::extent_of(type_ops<double>, r).align == 8);
   CHECK(proceduray::array_stride(type_ops<glm::vec3[4]>, r) == 12);
+}
+
+TEST_CASE("scalar rule leaves struct and array tails unpadded") {
+  constexpr auto r = LayoutRule::scalar;
+  // TailPadded without its pad would end at 12: the next member would sit there, not at 16.
+  static_assert(proceduray::field_offset(type_ops<TailPadded>, 2, r) == 12);
+  CHECK(proceduray::extent_of(type_ops<TailPadded>, r).size == 16);
+  CHECK(proceduray::extent_of(type_ops<TailPadded>, r).align == 8);
+  CHECK(proceduray::extent_of(type_ops<TailHolder>, r).size == 40);
+  CHECK(proceduray::extent_of(type_ops<TailHolder>, LayoutRule::std430).size == 40);
 }
 
 TEST_CASE("std430 rule aligns vec3 to 16 and keeps scalar array strides") {
@@ -197,7 +208,7 @@ TEST_CASE("layout_mismatch names the struct member and rule") {
 }
 
 TEST_CASE("glslang offsets equal the computed and C++ offsets for scalar test types") {
-  prove_all<Sphere, Basis, ScalarMix>();
+  prove_all<Sphere, Basis, ScalarMix, TailPadded, TailHolder>();
 }
 
 TEST_CASE("glslang offsets equal the computed and C++ offsets for std430 test types") {

@@ -39,6 +39,21 @@ struct ScalarMix {
 };
 PROCEDURAY_STRUCT(ScalarMix, scalar, d, v, f, u, iv, spheres, nested, grid);
 
+// Scalar packs the next member into a struct's tail: the explicit pad keeps C++ and GLSL equal.
+struct TailPadded {
+  double d;
+  float f;
+  float pad;
+};
+PROCEDURAY_STRUCT(TailPadded, scalar, d, f, pad);
+
+struct TailHolder {
+  TailPadded tails[2];
+  float after;
+  float pad;
+};
+PROCEDURAY_STRUCT(TailHolder, scalar, tails, after, pad);
+
 struct Light {
   glm::vec4 position;
   glm::vec3 color;

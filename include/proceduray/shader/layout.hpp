@@ -10,8 +10,10 @@
 //
 // Rules (Vulkan spec, "Offset and Stride Assignment"): scalar aligns everything to its component;
 // std430 aligns vec2 to 2 and vec3/vec4 to 4 components, arrays and matrices to their element;
-// std140 also rounds array, matrix-column and struct alignment up to 16. Struct sizes round up to
-// the struct's alignment; a member's offset is the previous end rounded up to its alignment.
+// std140 also rounds array, matrix-column and struct alignment up to 16. A member's offset is the
+// previous end rounded up to its alignment. std430/std140 round struct sizes up to the struct's
+// alignment; scalar does not (glslang packs the next member into a struct's or an array's tail),
+// so under scalar a struct whose C++ sizeof has tail padding needs explicit padding members.
 #pragma once
 
 #include <proceduray/shader/glsl_type.hpp>
@@ -81,7 +83,11 @@ constexpr Extent extent_of(const TypeOps& t, LayoutRule rule) {
     }
     case TypeKind::array: {
       const Extent e = extent_of(*t.element, rule);
-      return {is140 ? round_up(e.align, 16) : e.align, array_stride(t, rule) * t.count};
+      const std::size_t stride = array_stride(t, rule);
+      // scalar (as glslang lays it out): the last element is not padded to the stride.
+      const std::size_t size = rule == LayoutRule::scalar && t.count > 0 ? stride * (t.count - 1) + e.size
+                                                                          : stride * t.count;
+      return {is140 ? round_up(e.align, 16) : e.align, size};
     }
     case TypeKind::structure: {
       std::size_t align = 1, end = 0;
@@ -91,7 +97,7 @@ constexpr Extent extent_of(const TypeOps& t, LayoutRule rule) {
         end = round_up(end, e.align) + e.size;
       }
       if (is140) align = round_up(align, 16);
-      return {align, round_up(end, align)};
+      return {align, rule == LayoutRule::scalar ? end : round_up(end, align)};
     }
     case TypeKind::unsupported:
     case TypeKind::unregistered_struct: break;
