@@ -92,6 +92,11 @@ TEST_CASE("hit attributes and shader records are declared from their types") {
       "layout(shaderRecordEXT, std430) buffer Material430ShaderRecord {\n    mat4 transform;\n"));
 }
 
+TEST_CASE("push constants are declared from their type and rule") {
+  CHECK(proceduray::glsl_push_constant<Inner140>("inner") ==
+        "layout(push_constant, std140) uniform Inner140PushConstants {\n    vec4 a;\n} inner;\n");
+}
+
 TEST_CASE("glsl_type_name names references after their target") {
   CHECK(proceduray::glsl_type_name(type_ops<proceduray::DeviceAddress<Sphere>>) == "SphereRef");
   CHECK(proceduray::glsl_type_name(type_ops<proceduray::DeviceAddress<glm::vec3>>) == "Vec3Ref");

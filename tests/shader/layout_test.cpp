@@ -91,8 +91,20 @@ Reflected reflect(const std::string& source, EShLanguage stage, const std::strin
                                                static_cast<std::size_t>(v.arrayStride)};
     }
   }
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {  // push-constant and uniform blocks
+    const glslang::TObjectReflection& v = program.getUniform(i);
+    if (v.name.rfind(block + ".", 0) == 0) {
+      r.leaves[v.name.substr(block.size())] = {static_cast<std::size_t>(v.offset),
+                                               static_cast<std::size_t>(v.arrayStride)};
+    }
+  }
   for (int i = 0; i < program.getNumBufferBlocks(); ++i) {
     if (program.getBufferBlock(i).name == block) r.block_size = static_cast<std::size_t>(program.getBufferBlock(i).size);
+  }
+  for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
+    if (program.getUniformBlock(i).name == block) {
+      r.block_size = static_cast<std::size_t>(program.getUniformBlock(i).size);
+    }
   }
   return r;
 }
@@ -248,4 +260,23 @@ TEST_CASE("the shaderRecordEXT block of a closest-hit shader has the C++ offsets
     CHECK(host[name].offset == leaf.offset);
   }
   CHECK(glsl.block_size == sizeof(SphereRecord));
+}
+
+TEST_CASE("a push-constant block has the C++ offsets") {
+  static const Glslang process;
+  const proceduray::TypeOps* roots[] = {&type_ops<Camera140>};
+  const std::string source = "#version 460\n" + proceduray::glsl_declarations(roots, false) +
+                             proceduray::glsl_push_constant<Camera140>("camera") +
+                             "layout(local_size_x = 1) in;\nvoid main() { float f = camera.fov; }\n";
+  const Reflected glsl = reflect(source, EShLangCompute, "Camera140PushConstants");
+  REQUIRE_MESSAGE(glsl.log.empty(), glsl.log);
+  Leaves host;
+  flatten(type_ops<Camera140>, LayoutRule::std140, true, "", 0, host);
+  REQUIRE(glsl.leaves.size() == host.size());
+  for (const auto& [name, leaf] : glsl.leaves) {
+    INFO("member ", name);
+    REQUIRE(host.count(name) == 1);
+    CHECK(host[name].offset == leaf.offset);
+  }
+  CHECK(glsl.block_size == sizeof(Camera140));
 }

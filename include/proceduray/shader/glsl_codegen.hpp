@@ -7,6 +7,7 @@
 //   glsl += proceduray::glsl_ray_payload_in<Interface, RadiancePayload>("payload");
 //   glsl += proceduray::glsl_hit_attribute<Interface, SphereHit>("hit");      // hitAttributeEXT SphereHit hit;
 //   glsl += proceduray::glsl_shader_record<Interface, SphereRecord>("record"); // layout(shaderRecordEXT, scalar) buffer ...
+//   glsl += proceduray::glsl_push_constant<Camera>("camera");  // layout(push_constant, std430) uniform ...
 //   std::string source = proceduray::insert_after_version(user_shader_text, glsl);
 //
 // A buffer reference for DeviceAddress<T> is named after T: SphereRef for a struct Sphere,
@@ -214,6 +215,14 @@ template <class Interface, class T>
 std::string glsl_shader_record(std::string_view name) {
   static_cast<void>(Interface::template root_arguments_index<T>());
   return glsl_block(type_ops<T>, type_ops<T>.rule, "shaderRecordEXT", std::string(type_ops<T>.glsl_name) + "ShaderRecord", name);
+}
+
+/// A push-constant block with T's members and T's rule: `layout(push_constant, rule) uniform TPushConstants {...} name;`.
+template <RegisteredStruct T>
+std::string glsl_push_constant(std::string_view name) {
+  const TypeOps& t = type_ops<T>;
+  return "layout(push_constant, " + std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) +
+         "PushConstants {\n" + detail::member_lines(t) + "} " + std::string(name) + ";\n";
 }
 
 /// `source` with `generated` inserted on the line after its `#version` line (at the start if it has none).
