@@ -14,6 +14,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <string>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -24,46 +26,73 @@ namespace hello_sphere {
 namespace pr = proceduray;
 namespace vk = proceduray::vk;
 
-/// Pinhole camera as the raygen shader reads it (push constants).
+// The data that crosses to the shaders, declared once here; the GLSL side is generated.
+/// Pinhole camera, pushed as push constants.
 struct Camera {
   glm::vec4 eye;
   glm::vec4 forward;  ///< unit view direction
   glm::vec4 right;    ///< scaled by tan(fov/2) * aspect
   glm::vec4 up;       ///< scaled by tan(fov/2)
 };
-
+PROCEDURAY_STRUCT(Camera, std430, eye, forward, right, up);
+/// The radiance ray's payload.
+struct Colour {
+  glm::vec3 rgb;
+};
+PROCEDURAY_STRUCT(Colour, scalar, rgb);
+/// What the intersection shader hands the closest-hit shader.
+struct SphereHit {
+  glm::vec3 object_normal;
+};
+PROCEDURAY_STRUCT(SphereHit, scalar, object_normal);
+/// Hit record data: the instance's colour.
 struct HitRecord {
   glm::vec4 albedo;
 };
+PROCEDURAY_STRUCT(HitRecord, scalar, albedo);
+/// Miss record data: the background colour.
 struct MissRecord {
   glm::vec4 background;
 };
+PROCEDURAY_STRUCT(MissRecord, scalar, background);
+
+using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Camera>,
+                                      pr::RootArguments<HitRecord, MissRecord>, pr::Attributes<SphereHit>>;
+
+/// Generated declarations each stage compiles with (see glsl_codegen.hpp).
+inline std::string raygen_declarations() {
+  return pr::glsl_declarations<Interface>() + pr::glsl_push_constant<Camera>("camera") +
+         pr::glsl_ray_payload<Interface, Colour>("payload");
+}
+inline std::string miss_declarations() {
+  return pr::glsl_declarations<Interface>() + pr::glsl_shader_record<Interface, MissRecord>("record") +
+         pr::glsl_ray_payload_in<Interface, Colour>("payload");
+}
+inline std::string intersection_declarations() {
+  return pr::glsl_declarations<Interface>() + pr::glsl_hit_attribute<Interface, SphereHit>("hit");
+}
+inline std::string closest_hit_declarations() {
+  return pr::glsl_declarations<Interface>() + pr::glsl_shader_record<Interface, HitRecord>("record") +
+         pr::glsl_hit_attribute<Interface, SphereHit>("hit") + pr::glsl_ray_payload_in<Interface, Colour>("payload");
+}
 
 inline const char* const raygen_glsl = R"(#version 460
-#extension GL_EXT_ray_tracing : require
 layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;
 layout(set = 0, binding = 1, rgba8) uniform writeonly image2D image;
-layout(push_constant) uniform Camera { vec4 eye; vec4 forward; vec4 right; vec4 up; } camera;
-layout(location = 0) rayPayloadEXT vec3 colour;
 void main() {
   vec2 uv = (vec2(gl_LaunchIDEXT.xy) + 0.5) / vec2(gl_LaunchSizeEXT.xy) * 2.0 - 1.0;
   vec3 direction = normalize(camera.forward.xyz + uv.x * camera.right.xyz - uv.y * camera.up.xyz);
   traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, 0, camera.eye.xyz, 0.0, direction, 1e30, 0);
-  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(colour, 1.0));
+  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(payload.rgb, 1.0));
 }
 )";
 
 inline const char* const miss_glsl = R"(#version 460
-#extension GL_EXT_ray_tracing : require
-layout(shaderRecordEXT, std430) buffer MissRecord { vec4 background; };
-layout(location = 0) rayPayloadInEXT vec3 colour;
-void main() { colour = background.rgb; }
+void main() { payload.rgb = record.background.rgb; }
 )";
 
 inline const char* const intersection_glsl = R"(#version 460
-#extension GL_EXT_ray_tracing : require
 #include "primitives/sphere.glsl"
-hitAttributeEXT vec3 object_normal;
 void main() {
   vec3 o = gl_ObjectRayOriginEXT;
   vec3 d = gl_ObjectRayDirectionEXT;
@@ -71,21 +100,17 @@ void main() {
   if (!ray_sphere(o, d, vec3(0.0), 1.0, t0, t1)) return;
   float t = t0 >= gl_RayTminEXT ? t0 : t1;
   if (t < gl_RayTminEXT || t > gl_RayTmaxEXT) return;
-  object_normal = o + t * d;
+  hit.object_normal = o + t * d;
   reportIntersectionEXT(t, 0u);
 }
 )";
 
 inline const char* const closest_hit_glsl = R"(#version 460
-#extension GL_EXT_ray_tracing : require
-layout(shaderRecordEXT, std430) buffer HitRecord { vec4 albedo; };
-hitAttributeEXT vec3 object_normal;
-layout(location = 0) rayPayloadInEXT vec3 colour;
 void main() {
   // Normals take the inverse transpose of the object-to-world transform.
-  vec3 n = normalize(transpose(mat3(gl_WorldToObjectEXT)) * object_normal);
+  vec3 n = normalize(transpose(mat3(gl_WorldToObjectEXT)) * hit.object_normal);
   vec3 light = normalize(vec3(0.4, 0.8, 0.6));
-  colour = albedo.rgb * (0.3 + 0.7 * max(dot(n, light), 0.0));
+  payload.rgb = record.albedo.rgb * (0.3 + 0.7 * max(dot(n, light), 0.0));
 }
 )";
 
@@ -163,13 +188,16 @@ class HelloSphere {
   }
   static vk::PipelineDesc pipeline_desc(const vk::DescriptorSet& set) {
     vk::PipelineDesc desc;
-    auto stage = [&](vk::ShaderStage s, const char* name, const char* code) {
-      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = name, .code = code}));
+    auto stage = [&](vk::ShaderStage s, const char* name, const char* code, std::string declarations) {
+      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = name, .code = code,
+                                                  .preamble = std::move(declarations)}));
     };
-    const auto rgen = stage(vk::ShaderStage::raygen, "hello_sphere.rgen", raygen_glsl);
-    const auto miss = stage(vk::ShaderStage::miss, "hello_sphere.rmiss", miss_glsl);
-    const auto chit = stage(vk::ShaderStage::closest_hit, "hello_sphere.rchit", closest_hit_glsl);
-    const auto isec = stage(vk::ShaderStage::intersection, "hello_sphere.rint", intersection_glsl);
+    const auto rgen = stage(vk::ShaderStage::raygen, "hello_sphere.rgen", raygen_glsl, raygen_declarations());
+    const auto miss = stage(vk::ShaderStage::miss, "hello_sphere.rmiss", miss_glsl, miss_declarations());
+    const auto chit = stage(vk::ShaderStage::closest_hit, "hello_sphere.rchit", closest_hit_glsl,
+                            closest_hit_declarations());
+    const auto isec = stage(vk::ShaderStage::intersection, "hello_sphere.rint", intersection_glsl,
+                            intersection_declarations());
     desc.groups = {vk::ShaderGroup::general_shader(rgen), vk::ShaderGroup::general_shader(miss),
                    vk::ShaderGroup::procedural(chit, isec)};
     desc.set_layouts = {set.layout()};
@@ -178,13 +206,13 @@ class HelloSphere {
   }
   static pr::SbtLayout sbt_layout(const vk::Context& ctx) {
     return pr::layout_sbt(ctx.sbt_properties(),
-                          {{{1, 0}, {1, sizeof(MissRecord)}, {2, sizeof(HitRecord)}, {}}});
+                          {{{1, 0}, {1, sizeof(MissRecord)}, {2, Interface::max_root_arguments_size}, {}}});
   }
   std::vector<vk::SbtRecord> records() const {
     return {{pr::SbtRegionKind::raygen, 0, 0},
-            {pr::SbtRegionKind::miss, 0, 1, vk::bytes_of(m_miss)},
-            {pr::SbtRegionKind::hit, 0, 2, vk::bytes_of(m_hits[0])},
-            {pr::SbtRegionKind::hit, 1, 2, vk::bytes_of(m_hits[1])}};
+            {pr::SbtRegionKind::miss, 0, 1, Interface::record_data(m_miss)},
+            {pr::SbtRegionKind::hit, 0, 2, Interface::record_data(m_hits[0])},
+            {pr::SbtRegionKind::hit, 1, 2, Interface::record_data(m_hits[1])}};
   }
 
   const vk::Context* m_ctx;

@@ -11,6 +11,7 @@
 
 #include <proceduray/image/png.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/shader/shader.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/buffer.hpp>
 #include <proceduray/vk/context.hpp>
