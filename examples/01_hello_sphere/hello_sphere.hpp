@@ -169,7 +169,7 @@ class HelloSphere {
     return image.read();
   }
 
-  const vk::ShaderBindingTable& sbt() const noexcept { return m_sbt; }
+  const vk::SbtBuffer& sbt() const noexcept { return m_sbt; }
 
  private:
   static vk::AccelerationStructure build_unit_sphere_blas(const vk::Context& ctx) {
@@ -208,7 +208,7 @@ class HelloSphere {
     return pr::layout_sbt(ctx.sbt_properties(),
                           {{{1, 0}, {1, sizeof(MissRecord)}, {2, Interface::max_root_arguments_size}, {}}});
   }
-  std::vector<vk::SbtRecord> records() const {
+  std::vector<vk::RecordWrite> records() const {
     return {{pr::SbtRegionKind::raygen, 0, 0},
             {pr::SbtRegionKind::miss, 0, 1, Interface::record_data(m_miss)},
             {pr::SbtRegionKind::hit, 0, 2, Interface::record_data(m_hits[0])},
@@ -222,7 +222,7 @@ class HelloSphere {
   vk::AccelerationStructure m_tlas;
   vk::DescriptorSet m_set;
   vk::Pipeline m_pipeline;
-  vk::ShaderBindingTable m_sbt;
+  vk::SbtBuffer m_sbt;
 };
 
 }  // namespace hello_sphere

@@ -19,7 +19,7 @@
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/handle.hpp>
 #include <proceduray/vk/pipeline.hpp>
-#include <proceduray/vk/shader_binding_table.hpp>
+#include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/structs.hpp>

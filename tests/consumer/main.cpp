@@ -55,10 +55,10 @@ int main(int argc, char** argv) {
 
     const float colour[4] = {0.0f, 1.0f, 0.0f, 1.0f};
     const auto layout = proceduray::layout_sbt(ctx.sbt_properties(), {{{1, 0}, {1, 0}, {1, sizeof colour}, {}}});
-    const vk::SbtRecord records[] = {{proceduray::SbtRegionKind::raygen, 0, 0},
+    const vk::RecordWrite records[] = {{proceduray::SbtRegionKind::raygen, 0, 0},
                                      {proceduray::SbtRegionKind::miss, 0, 1},
                                      {proceduray::SbtRegionKind::hit, 0, 2, vk::bytes_of(colour)}};
-    const vk::ShaderBindingTable sbt(ctx, pipeline, layout, records);
+    const vk::SbtBuffer sbt(ctx, pipeline, layout, records);
     vk::trace(ctx, pipeline, set, sbt, 64, 64);
     const auto rgba = image.read();
     proceduray::write_png(argv[1], 64, 64, rgba);

@@ -15,16 +15,9 @@
 #include <vector>
 
 #include "proceduray/scene/ids.hpp"
+#include "proceduray/scene/shader_stage.hpp"
 
 namespace proceduray {
-
-/// A shader stage of the ray-tracing pipeline.
-enum class ShaderStage : std::uint32_t { raygen, miss, closest_hit, any_hit, intersection };
-
-inline const char* to_string(ShaderStage stage) {
-  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection"};
-  return names[static_cast<std::uint32_t>(stage)];
-}
 
 /// Marks an unused stage slot of a group (VK_SHADER_UNUSED_KHR).
 inline constexpr std::uint32_t unused_shader = 0xFFFF'FFFFu;

@@ -10,6 +10,8 @@
 // A failed compile throws ShaderCompileError with glslang's log, the shader's name and line.
 #pragma once
 
+#include <proceduray/scene/shader_stage.hpp>
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
@@ -27,13 +29,7 @@
 
 namespace proceduray::vk {
 
-/// Ray-tracing shader stages.
-enum class ShaderStage { raygen, miss, closest_hit, any_hit, intersection, callable };
-
-inline const char* to_string(ShaderStage s) {
-  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable"};
-  return names[static_cast<int>(s)];
-}
+using proceduray::ShaderStage;
 
 /// One shader to compile: its stage, a name for messages (a file name), and its GLSL text.
 struct ShaderSource {

@@ -5,7 +5,7 @@
 // The size is checked against the device's dispatch limits before anything is recorded.
 #pragma once
 
-#include <proceduray/vk/shader_binding_table.hpp>
+#include <proceduray/vk/sbt_buffer.hpp>
 
 namespace proceduray::vk {
 
@@ -26,7 +26,7 @@ inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint3
 
 /// Binds the pipeline, set 0 and the push constants, traces, and waits for the queue.
 inline void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
-                  const ShaderBindingTable& sbt, std::uint32_t width, std::uint32_t height,
+                  const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
                   std::span<const std::byte> push_constants = {}) {
   check_trace_size(ctx, width, height);
   if (push_constants.size() != pipeline.push_constant_size()) {

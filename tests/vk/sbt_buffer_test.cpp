@@ -1,6 +1,6 @@
 #include "test_context.hpp"
 
-#include <proceduray/vk/shader_binding_table.hpp>
+#include <proceduray/vk/sbt_buffer.hpp>
 
 #include <cstring>
 
@@ -40,10 +40,10 @@ TEST_CASE("shader binding table writes handles and data where the layout says") 
   const auto pipeline = small_pipeline(t.ctx);
   const auto layout = layout_sbt(t.ctx.sbt_properties(), {{{1, 0}, {2, 0}, {3, 16}, {}}});
   const glm::vec4 colours[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
-  std::vector<vk::SbtRecord> records{{SbtRegionKind::raygen, 0, 0}, {SbtRegionKind::miss, 0, 1},
+  std::vector<vk::RecordWrite> records{{SbtRegionKind::raygen, 0, 0}, {SbtRegionKind::miss, 0, 1},
                                      {SbtRegionKind::miss, 1, 1}};
   for (std::uint32_t i = 0; i < 3; ++i) records.push_back({SbtRegionKind::hit, i, 2, vk::bytes_of(colours[i])});
-  const vk::ShaderBindingTable sbt(t.ctx, pipeline, layout, records);
+  const vk::SbtBuffer sbt(t.ctx, pipeline, layout, records);
 
   const auto bytes = sbt.bytes();
   for (const auto& r : records) {
@@ -68,22 +68,22 @@ TEST_CASE("shader binding table rejects oversized data and missing or repeated r
   const auto layout = layout_sbt(props, {{{1, 0}, {1, 0}, {1, 0}, {}}});
   // Room for data is whatever alignment left after the handle; ask for more than the stride holds.
   std::vector<std::byte> big(layout.region(SbtRegionKind::hit).stride, std::byte{1});
-  const vk::SbtRecord base[] = {{SbtRegionKind::raygen, 0, 0}, {SbtRegionKind::miss, 0, 1}};
-  std::vector<vk::SbtRecord> records(std::begin(base), std::end(base));
+  const vk::RecordWrite base[] = {{SbtRegionKind::raygen, 0, 0}, {SbtRegionKind::miss, 0, 1}};
+  std::vector<vk::RecordWrite> records(std::begin(base), std::end(base));
   records.push_back({SbtRegionKind::hit, 0, 2, big});
-  CHECK_THROWS_WITH_AS(vk::ShaderBindingTable(t.ctx, pipeline, layout, records),
+  CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records),
                        doctest::Contains("hit record 0 has"), std::length_error);
 
   records.back() = {SbtRegionKind::hit, 0, 2};
   records.push_back({SbtRegionKind::hit, 0, 2});
-  CHECK_THROWS_WITH_AS(vk::ShaderBindingTable(t.ctx, pipeline, layout, records), doctest::Contains("given twice"),
+  CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records), doctest::Contains("given twice"),
                        std::invalid_argument);
   records.pop_back();
   records.pop_back();
-  CHECK_THROWS_WITH_AS(vk::ShaderBindingTable(t.ctx, pipeline, layout, records),
+  CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records),
                        doctest::Contains("hit record 0 was laid out but never given"), std::invalid_argument);
   records.push_back({SbtRegionKind::hit, 0, 7});
-  CHECK_THROWS_WITH_AS(vk::ShaderBindingTable(t.ctx, pipeline, layout, records), doctest::Contains("group 7"),
+  CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records), doctest::Contains("group 7"),
                        std::out_of_range);
 }
 

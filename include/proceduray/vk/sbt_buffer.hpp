@@ -1,12 +1,12 @@
 // The SBT buffer: group handles and record data written where layout_sbt says.
 //
 //   auto layout = layout_sbt(ctx.sbt_properties(), {{{1, 0}, {1, 0}, {2, sizeof(Colour)}, {}}});
-//   std::vector<proceduray::vk::SbtRecord> records{
+//   std::vector<proceduray::vk::RecordWrite> records{
 //       {SbtRegionKind::raygen, 0, /*group*/ 0},
 //       {SbtRegionKind::miss, 0, 1},
 //       {SbtRegionKind::hit, 0, 2, proceduray::vk::bytes_of(red)},
 //       {SbtRegionKind::hit, 1, 2, proceduray::vk::bytes_of(blue)}};
-//   proceduray::vk::ShaderBindingTable sbt(ctx, pipeline, layout, records);
+//   proceduray::vk::SbtBuffer sbt(ctx, pipeline, layout, records);
 //   sbt.regions();   // the four VkStridedDeviceAddressRegionKHR for vkCmdTraceRaysKHR
 #pragma once
 
@@ -28,7 +28,7 @@ std::span<const std::byte> bytes_of(const T& value) {
 }
 
 /// One record to write: which region and slot, which pipeline group's handle, and its data.
-struct SbtRecord {
+struct RecordWrite {
   SbtRegionKind region = SbtRegionKind::hit;
   std::uint32_t index = 0;  ///< slot within the region
   std::uint32_t group = 0;  ///< pipeline group whose handle heads the record
@@ -36,10 +36,10 @@ struct SbtRecord {
 };
 
 /// A host-visible buffer holding the SBT, its start aligned to shaderGroupBaseAlignment.
-class ShaderBindingTable {
+class SbtBuffer {
  public:
-  ShaderBindingTable(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
-                     std::span<const SbtRecord> records);
+  SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
+                     std::span<const RecordWrite> records);
 
   /// Raygen, miss, hit and callable regions with device addresses, in vkCmdTraceRaysKHR's order.
   const std::array<VkStridedDeviceAddressRegionKHR, 4>& regions() const noexcept { return m_regions; }
@@ -56,8 +56,8 @@ class ShaderBindingTable {
   std::array<VkStridedDeviceAddressRegionKHR, 4> m_regions{};
 };
 
-inline ShaderBindingTable::ShaderBindingTable(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
-                                              std::span<const SbtRecord> records)
+inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
+                                              std::span<const RecordWrite> records)
     : m_layout(layout),
       m_buffer(ctx, layout.size + layout.properties.base_alignment,
                VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
@@ -67,18 +67,18 @@ inline ShaderBindingTable::ShaderBindingTable(const Context& ctx, const Pipeline
   std::array<std::vector<bool>, 4> written;
   for (std::uint32_t k = 0; k < 4; ++k) written[k].assign(layout.regions[k].count, false);
 
-  for (const SbtRecord& r : records) {
+  for (const RecordWrite& r : records) {
     const auto k = static_cast<std::uint32_t>(r.region);
     const std::uint64_t at = layout.record_offset(r.region, r.index);  // throws past the region
     const std::uint64_t room = layout.regions[k].stride - layout.properties.handle_size;
     if (r.data.size() > room) {
-      throw std::length_error("ShaderBindingTable: " + std::string(to_string(r.region)) + " record " +
+      throw std::length_error("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
                               std::to_string(r.index) + " has " + std::to_string(r.data.size()) +
                               " bytes of data but the layout left room for " + std::to_string(room) +
                               "; lay the table out with the region's largest record data");
     }
     if (written[k][r.index]) {
-      throw std::invalid_argument("ShaderBindingTable: " + std::string(to_string(r.region)) + " record " +
+      throw std::invalid_argument("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
                                   std::to_string(r.index) + " is given twice");
     }
     written[k][r.index] = true;
@@ -89,7 +89,7 @@ inline ShaderBindingTable::ShaderBindingTable(const Context& ctx, const Pipeline
   for (std::uint32_t k = 0; k < 4; ++k) {
     for (std::uint32_t i = 0; i < layout.regions[k].count; ++i) {
       if (!written[k][i]) {
-        throw std::invalid_argument("ShaderBindingTable: " + std::string(to_string(static_cast<SbtRegionKind>(k))) +
+        throw std::invalid_argument("SbtBuffer: " + std::string(to_string(static_cast<SbtRegionKind>(k))) +
                                     " record " + std::to_string(i) +
                                     " was laid out but never given; a trace reaching it would run no shader");
       }

@@ -1,0 +1,19 @@
+// The ray-tracing shader stages, shared by the scene layer (pipeline plans) and the backend.
+//
+//   proceduray::ShaderStage s = proceduray::ShaderStage::intersection;
+//   proceduray::to_string(s);   // "intersection"
+#pragma once
+
+#include <cstdint>
+
+namespace proceduray {
+
+/// A shader stage of the ray-tracing pipeline.
+enum class ShaderStage : std::uint32_t { raygen, miss, closest_hit, any_hit, intersection, callable };
+
+inline const char* to_string(ShaderStage stage) {
+  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable"};
+  return names[static_cast<std::uint32_t>(stage)];
+}
+
+}  // namespace proceduray
