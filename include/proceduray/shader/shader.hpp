@@ -10,6 +10,7 @@
 // Never includes Vulkan: everything here is pure C++ and glm.
 #pragma once
 
+#include <proceduray/shader/camera.hpp>
 #include <proceduray/shader/categories.hpp>
 #include <proceduray/shader/device_address.hpp>
 #include <proceduray/shader/field_list.hpp>
