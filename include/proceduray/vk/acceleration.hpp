@@ -7,7 +7,13 @@
 //       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {+1.5f, 0, 0}), .sbt_offset = 1}};
 //   auto tlas = proceduray::vk::build_tlas(ctx, instances);
 //
+//   const glm::vec3 quad[] = {...};  const std::uint32_t tris[] = {0, 1, 2, 0, 2, 3};
+//   auto plane = proceduray::vk::build_blas(ctx, {{.vertices = quad, .indices = tris}});   // triangles
+//   proceduray::vk::Tlas tlas(ctx, instances, {.allow_update = true});
+//   instances[0].transform = moved;  tlas.update(ctx, instances);                          // refit
+//
 // build_* record the build, submit it and wait: the result is ready to trace when they return.
+// Static BLASes are compacted by default (BuildOptions::compact): the copy is what stays.
 #pragma once
 
 #include <proceduray/vk/buffer.hpp>
@@ -45,6 +51,20 @@ struct AabbGeometry {
   bool opaque = true;                         ///< true: any-hit shaders are skipped
 };
 
+/// One geometry of a triangle BLAS: positions and a triangle list.
+struct TriangleGeometry {
+  std::span<const glm::vec3> vertices;     ///< positions, finite
+  std::span<const std::uint32_t> indices;  ///< three per triangle, each < vertices.size()
+  bool opaque = true;                      ///< true: any-hit shaders are skipped
+};
+
+/// How a structure is built.
+struct BuildOptions {
+  bool compact = true;        ///< compact after building (BLAS only; ignored with allow_update); default on
+  bool allow_update = false;  ///< keep it refittable with update(); default off
+  bool fast_trace = true;     ///< prefer trace speed over build speed; default on
+};
+
 /// One instance of a BLAS in the TLAS.
 struct Instance {
   const AccelerationStructure* blas = nullptr;  ///< required
@@ -74,7 +94,56 @@ inline AccelerationStructure::AccelerationStructure(const Context& ctx, VkAccele
 
 namespace detail {
 
-/// Sizes the structure, creates it and a scratch buffer, builds it and waits.
+inline VkBuildAccelerationStructureFlagsKHR build_flags(const BuildOptions& options, bool may_compact) {
+  VkBuildAccelerationStructureFlagsKHR flags = options.fast_trace ? VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR
+                                                                  : VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_BUILD_BIT_KHR;
+  if (options.allow_update) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
+  else if (options.compact && may_compact) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR;
+  return flags;
+}
+
+/// A scratch buffer whose device address honours minAccelerationStructureScratchOffsetAlignment (128 on the H100).
+struct Scratch {
+  Buffer buffer;
+  VkDeviceAddress address = 0;
+  Scratch() = default;
+  Scratch(const Context& ctx, VkDeviceSize size) {
+    const VkDeviceSize align = ctx.scratch_alignment();
+    buffer = Buffer(ctx, size + align, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                    Buffer::device_local);
+    address = (buffer.address() + align - 1) / align * align;
+  }
+};
+
+/// Copies `source` into a structure of its compacted size and returns the copy.
+inline AccelerationStructure compact(const Context& ctx, const AccelerationStructure& source,
+                                     VkAccelerationStructureTypeKHR type) {
+  auto query_info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+  query_info.queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR;
+  query_info.queryCount = 1;
+  VkQueryPool raw_pool = VK_NULL_HANDLE;
+  check(vkCreateQueryPool(ctx.device(), &query_info, nullptr, &raw_pool), "vkCreateQueryPool");
+  auto pool = own(ctx.device(), raw_pool, vkDestroyQueryPool);
+  VkAccelerationStructureKHR handle = source.get();
+  ctx.submit([&](VkCommandBuffer cmd) {
+    vkCmdResetQueryPool(cmd, raw_pool, 0, 1);
+    ctx.rt().cmd_write_acceleration_structures_properties(
+        cmd, 1, &handle, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, raw_pool, 0);
+  });
+  VkDeviceSize compacted = 0;
+  check(vkGetQueryPoolResults(ctx.device(), raw_pool, 0, 1, sizeof compacted, &compacted, sizeof compacted,
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults", "compacted acceleration structure size");
+  AccelerationStructure result(ctx, type, compacted);
+  auto copy = make<VkCopyAccelerationStructureInfoKHR>(VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR);
+  copy.src = source.get();
+  copy.dst = result.get();
+  copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
+  ctx.submit([&](VkCommandBuffer cmd) { ctx.rt().cmd_copy_acceleration_structure(cmd, &copy); });
+  return result;
+}
+
+/// Sizes the structure, creates it and a scratch buffer, builds it and waits; compacts when the flags allow.
 inline AccelerationStructure build_acceleration_structure(const Context& ctx, VkAccelerationStructureTypeKHR type,
                                                           std::span<const VkAccelerationStructureGeometryKHR> geometries,
                                                           std::span<const std::uint32_t> primitive_counts,
@@ -89,16 +158,14 @@ inline AccelerationStructure build_acceleration_structure(const Context& ctx, Vk
   ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &build,
                                                   primitive_counts.data(), &sizes);
   AccelerationStructure result(ctx, type, sizes.accelerationStructureSize);
-  // Scratch addresses must be multiples of minAccelerationStructureScratchOffsetAlignment (128 on the H100).
-  const VkDeviceSize align = ctx.scratch_alignment();
-  Buffer scratch(ctx, sizes.buildScratchSize + align,
-                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, Buffer::device_local);
+  Scratch scratch(ctx, sizes.buildScratchSize);
   build.dstAccelerationStructure = result.get();
-  build.scratchData.deviceAddress = (scratch.address() + align - 1) / align * align;
+  build.scratchData.deviceAddress = scratch.address;
   std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(primitive_counts.size());
   for (std::size_t i = 0; i < ranges.size(); ++i) ranges[i].primitiveCount = primitive_counts[i];
   const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = ranges.data();
   ctx.submit([&](VkCommandBuffer cmd) { ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr); });
+  if ((flags & VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR) != 0) return compact(ctx, result, type);
   return result;
 }
 
@@ -108,8 +175,7 @@ inline bool finite(float v) { return std::isfinite(v); }
 
 /// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i).
 inline AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
-                                        VkBuildAccelerationStructureFlagsKHR flags =
-                                            VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR) {
+                                        const BuildOptions& options = {}) {
   if (geometries.empty()) {
     throw std::invalid_argument("build_blas: no geometries given; pass at least one AabbGeometry");
   }
@@ -153,14 +219,72 @@ inline AccelerationStructure build_blas(const Context& ctx, std::span<const Aabb
     offset += g.boxes.size_bytes();
   }
   return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, described, counts,
-                                              flags);
+                                              detail::build_flags(options, true));
 }
 
-/// Builds a TLAS over `instances` (an empty list gives a TLAS that every ray misses).
-inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Instance> instances,
-                                        VkBuildAccelerationStructureFlagsKHR flags =
-                                            VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR) {
-  std::vector<VkAccelerationStructureInstanceKHR> packed(instances.size());
+/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i).
+inline AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                        const BuildOptions& options = {}) {
+  if (geometries.empty()) {
+    throw std::invalid_argument("build_blas: no geometries given; pass at least one TriangleGeometry");
+  }
+  std::size_t vertex_count = 0, index_count = 0;
+  for (std::size_t g = 0; g < geometries.size(); ++g) {
+    const TriangleGeometry& t = geometries[g];
+    const std::string which = "build_blas: triangle geometry " + std::to_string(g);
+    if (t.indices.empty() || t.indices.size() % 3 != 0) {
+      throw std::invalid_argument(which + " has " + std::to_string(t.indices.size()) +
+                                  " indices; a triangle list needs a non-zero multiple of 3");
+    }
+    for (std::uint32_t i : t.indices) {
+      if (i >= t.vertices.size()) {
+        throw std::invalid_argument(which + " indexes vertex " + std::to_string(i) + " but has " +
+                                    std::to_string(t.vertices.size()) + " vertices");
+      }
+    }
+    for (const glm::vec3& v : t.vertices) {
+      if (!detail::finite(v.x) || !detail::finite(v.y) || !detail::finite(v.z)) {
+        throw std::invalid_argument(which + " has a non-finite vertex; give finite positions");
+      }
+    }
+    vertex_count += t.vertices.size();
+    index_count += t.indices.size();
+  }
+  constexpr VkBufferUsageFlags input = VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                                       VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+  Buffer vertices(ctx, vertex_count * sizeof(glm::vec3), input);
+  Buffer indices(ctx, index_count * sizeof(std::uint32_t), input);
+  std::vector<VkAccelerationStructureGeometryKHR> described;
+  std::vector<std::uint32_t> counts;
+  VkDeviceSize vertex_offset = 0, index_offset = 0;
+  for (const TriangleGeometry& t : geometries) {
+    vertices.write(t.vertices, vertex_offset);
+    indices.write(t.indices, index_offset);
+    auto geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+    geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+    geometry.flags = t.opaque ? VK_GEOMETRY_OPAQUE_BIT_KHR : 0;
+    auto& tri = geometry.geometry.triangles;
+    tri = make<VkAccelerationStructureGeometryTrianglesDataKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR);
+    tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+    tri.vertexData.deviceAddress = vertices.address() + vertex_offset;
+    tri.vertexStride = sizeof(glm::vec3);
+    tri.maxVertex = static_cast<std::uint32_t>(t.vertices.size() - 1);
+    tri.indexType = VK_INDEX_TYPE_UINT32;
+    tri.indexData.deviceAddress = indices.address() + index_offset;
+    described.push_back(geometry);
+    counts.push_back(static_cast<std::uint32_t>(t.indices.size() / 3));
+    vertex_offset += t.vertices.size_bytes();
+    index_offset += t.indices.size_bytes();
+  }
+  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, described, counts,
+                                              detail::build_flags(options, true));
+}
+
+namespace detail {
+
+/// Packs instances into Vulkan's layout; throws for bad input, naming the instance.
+inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed) {
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance& in = instances[i];
     const std::string which = "build_tlas: instance " + std::to_string(i);
@@ -172,14 +296,15 @@ inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Inst
                                   std::to_string(in.sbt_offset) + " does not fit in 24 bits");
     }
     const glm::mat4& m = in.transform;
-    bool finite = true;
+    bool is_finite = true;
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) finite = finite && detail::finite(m[c][r]);
-    if (!finite || std::abs(glm::determinant(glm::mat3(m))) < 1e-30f) {
-      throw std::invalid_argument(which + " transform is " + (finite ? "singular" : "not finite") +
+      for (int r = 0; r < 4; ++r) is_finite = is_finite && finite(m[c][r]);
+    if (!is_finite || std::abs(glm::determinant(glm::mat3(m))) < 1e-30f) {
+      throw std::invalid_argument(which + " transform is " + (is_finite ? "singular" : "not finite") +
                                   "; give every instance an invertible, finite object-to-world matrix");
     }
     VkAccelerationStructureInstanceKHR& out = packed[i];
+    out = {};
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) out.transform.matrix[r][c] = m[c][r];  // glm is column-major, Vulkan row-major 3x4
     out.instanceCustomIndex = in.custom_index;
@@ -188,6 +313,104 @@ inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Inst
     out.flags = in.flags;
     out.accelerationStructureReference = in.blas->address();
   }
+}
+
+}  // namespace detail
+
+/// A top-level structure with its instance buffer; refittable when built with allow_update.
+class Tlas {
+ public:
+  Tlas() = default;
+  /// Builds over `instances` (an empty list gives a TLAS that every ray misses) and waits.
+  Tlas(const Context& ctx, std::span<const Instance> instances, const BuildOptions& options = {})
+      : m_count(static_cast<std::uint32_t>(instances.size())), m_flags(detail::build_flags(options, false)),
+        m_instances(ctx, std::max<VkDeviceSize>(1, instances.size()) * sizeof(VkAccelerationStructureInstanceKHR),
+                    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                        VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
+    write(instances);
+    auto build = info(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
+    auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
+    ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                                                    &build.first, &m_count, &sizes);
+    m_structure = AccelerationStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, sizes.accelerationStructureSize);
+    // Kept for refits: an update needs scratch of updateScratchSize, a build of buildScratchSize.
+    m_scratch = detail::Scratch(ctx, std::max(sizes.buildScratchSize, sizes.updateScratchSize));
+    ctx.submit([&](VkCommandBuffer cmd) { record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR); });
+  }
+
+  const AccelerationStructure& structure() const noexcept { return m_structure; }
+  VkAccelerationStructureKHR get() const noexcept { return m_structure.get(); }
+  std::uint32_t instance_count() const noexcept { return m_count; }
+  bool updatable() const noexcept { return (m_flags & VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR) != 0; }
+
+  /// Refits for new transforms (same instances, same BLASes): records into `cmd` with a barrier for tracing.
+  void record_update(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
+    if (!updatable()) {
+      throw std::logic_error("Tlas::update: this TLAS was built without BuildOptions::allow_update; build it with "
+                             "allow_update = true to move instances");
+    }
+    if (instances.size() != m_count) {
+      throw std::invalid_argument("Tlas::update: " + std::to_string(instances.size()) + " instances given, the TLAS has " +
+                                  std::to_string(m_count) + "; an update may move instances, not add or remove them "
+                                  "(build a new Tlas for that)");
+    }
+    write(instances);
+    record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
+  }
+  /// Refits and waits.
+  void update(const Context& ctx, std::span<const Instance> instances) {
+    ctx.submit([&](VkCommandBuffer cmd) { record_update(ctx, cmd, instances); });
+  }
+
+ private:
+  std::pair<VkAccelerationStructureBuildGeometryInfoKHR, VkAccelerationStructureGeometryKHR*> info(
+      VkBuildAccelerationStructureModeKHR mode) {
+    m_geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+    m_geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    m_geometry.geometry.instances = make<VkAccelerationStructureGeometryInstancesDataKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
+    m_geometry.geometry.instances.data.deviceAddress = m_instances.address();
+    auto build = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+    build.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+    build.flags = m_flags;
+    build.mode = mode;
+    build.geometryCount = 1;
+    build.pGeometries = &m_geometry;
+    return {build, &m_geometry};
+  }
+  void write(std::span<const Instance> instances) {
+    auto* packed = static_cast<VkAccelerationStructureInstanceKHR*>(m_instances.data());
+    detail::pack_instances(instances, {packed, instances.size()});
+  }
+  void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
+    auto build = info(mode).first;
+    build.srcAccelerationStructure = mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? m_structure.get()
+                                                                                            : VK_NULL_HANDLE;
+    build.dstAccelerationStructure = m_structure.get();
+    build.scratchData.deviceAddress = m_scratch.address;
+    VkAccelerationStructureBuildRangeInfoKHR range{m_count, 0, 0, 0};
+    const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = &range;
+    ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
+    // The build writes the structure; traces that follow read it.
+    auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+    barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                         VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  }
+
+  std::uint32_t m_count = 0;
+  VkBuildAccelerationStructureFlagsKHR m_flags = 0;
+  Buffer m_instances;
+  AccelerationStructure m_structure;
+  detail::Scratch m_scratch;
+  VkAccelerationStructureGeometryKHR m_geometry{};
+};
+
+/// Builds a TLAS over `instances` and waits (see Tlas for refittable ones).
+inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Instance> instances) {
+  std::vector<VkAccelerationStructureInstanceKHR> packed(instances.size());
+  detail::pack_instances(instances, packed);
   Buffer buffer(ctx, std::max<VkDeviceSize>(1, packed.size()) * sizeof(VkAccelerationStructureInstanceKHR),
                 VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                     VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT);
@@ -199,7 +422,7 @@ inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Inst
   geometry.geometry.instances.data.deviceAddress = buffer.address();
   const std::uint32_t count = static_cast<std::uint32_t>(packed.size());
   return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, {&geometry, 1},
-                                              {&count, 1}, flags);
+                                              {&count, 1}, VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR);
 }
 
 }  // namespace proceduray::vk

@@ -13,6 +13,7 @@
 // A Context is neither copied nor moved: every object made from it keeps a pointer to it.
 #pragma once
 
+#include <proceduray/scene/device_limits.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/handle.hpp>
@@ -58,6 +59,10 @@ struct DeviceFunctions {
   PFN_vkCreateRayTracingPipelinesKHR create_ray_tracing_pipelines = nullptr;
   PFN_vkGetRayTracingShaderGroupHandlesKHR get_ray_tracing_shader_group_handles = nullptr;
   PFN_vkCmdTraceRaysKHR cmd_trace_rays = nullptr;
+  PFN_vkCmdWriteAccelerationStructuresPropertiesKHR cmd_write_acceleration_structures_properties = nullptr;
+  PFN_vkCmdCopyAccelerationStructureKHR cmd_copy_acceleration_structure = nullptr;
+  PFN_vkGetRayTracingShaderGroupStackSizeKHR get_ray_tracing_shader_group_stack_size = nullptr;
+  PFN_vkCmdSetRayTracingPipelineStackSizeKHR cmd_set_ray_tracing_pipeline_stack_size = nullptr;
 };
 
 /// Thrown when no device can ray trace: says what each device lacks and how to get one that can.
@@ -90,6 +95,15 @@ class Context {
     return {m_rt_properties.shaderGroupHandleSize, m_rt_properties.shaderGroupHandleAlignment,
             m_rt_properties.shaderGroupBaseAlignment, m_rt_properties.maxShaderGroupStride};
   }
+  /// The limits the scene layer checks a built shader table against.
+  DeviceLimits limits() const noexcept {
+    return {sbt_properties(), m_rt_properties.maxRayRecursionDepth, m_rt_properties.maxRayHitAttributeSize,
+            m_max_geometry_count, m_max_instance_count};
+  }
+  /// Nanoseconds per timestamp tick; 0 when the queue cannot write timestamps.
+  double timestamp_period_ns() const noexcept { return m_timestamp_period; }
+  std::uint32_t queue_family() const noexcept { return m_queue_family; }
+  VkCommandPool command_pool() const noexcept { return m_pool; }
   /// minAccelerationStructureScratchOffsetAlignment.
   std::uint32_t scratch_alignment() const noexcept { return m_scratch_alignment; }
   /// Index of a memory type with all `flags` among `type_bits`; throws when there is none.
@@ -132,6 +146,9 @@ class Context {
   VkCommandPool m_pool = VK_NULL_HANDLE;
   std::uint32_t m_queue_family = 0;
   std::uint32_t m_scratch_alignment = 1;
+  std::uint64_t m_max_geometry_count = 0;
+  std::uint64_t m_max_instance_count = 0;
+  double m_timestamp_period = 0.0;
   std::string m_name;
   VkPhysicalDeviceProperties m_properties{};
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR m_rt_properties{};
@@ -342,6 +359,8 @@ inline void Context::pick_device(DevicePreference preference) {
   vkGetPhysicalDeviceProperties2(m_physical, &props2);
   m_rt_properties.pNext = nullptr;
   m_scratch_alignment = std::max(1u, as.minAccelerationStructureScratchOffsetAlignment);
+  m_max_geometry_count = as.maxGeometryCount;
+  m_max_instance_count = as.maxInstanceCount;
   vkGetPhysicalDeviceMemoryProperties(m_physical, &m_memory);
 }
 
@@ -357,6 +376,7 @@ inline void Context::create_device() {
     throw NoRayTracingDevice("Context: device " + m_name + " has no compute queue to trace rays on");
   }
   m_queue_family = static_cast<std::uint32_t>(family - families.begin());
+  m_timestamp_period = family->timestampValidBits > 0 ? m_properties.limits.timestampPeriod : 0.0;
 
   // Optional features the shader layer can use when present (64-bit integers for device addresses).
   VkPhysicalDeviceFeatures supported{};
@@ -403,6 +423,10 @@ inline void Context::create_device() {
   load(m_rt.create_ray_tracing_pipelines, "vkCreateRayTracingPipelinesKHR");
   load(m_rt.get_ray_tracing_shader_group_handles, "vkGetRayTracingShaderGroupHandlesKHR");
   load(m_rt.cmd_trace_rays, "vkCmdTraceRaysKHR");
+  load(m_rt.cmd_write_acceleration_structures_properties, "vkCmdWriteAccelerationStructuresPropertiesKHR");
+  load(m_rt.cmd_copy_acceleration_structure, "vkCmdCopyAccelerationStructureKHR");
+  load(m_rt.get_ray_tracing_shader_group_stack_size, "vkGetRayTracingShaderGroupStackSizeKHR");
+  load(m_rt.cmd_set_ray_tracing_pipeline_stack_size, "vkCmdSetRayTracingPipelineStackSizeKHR");
 }
 
 inline std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {

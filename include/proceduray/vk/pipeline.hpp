@@ -16,6 +16,7 @@
 #include <proceduray/vk/descriptors.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <span>
 #include <vector>
@@ -52,6 +53,7 @@ struct PipelineDesc {
   std::vector<VkDescriptorSetLayout> set_layouts;
   std::uint32_t push_constant_size = 0;  ///< bytes of push constants, visible to every stage; default none
   std::uint32_t max_recursion_depth = 1;  ///< deepest traceRayEXT nesting; 1 = raygen traces only
+  VkPipelineCache cache = VK_NULL_HANDLE;  ///< e.g. PipelineCache::get(); default none
 
   /// Adds a shader and returns its index for ShaderGroup.
   std::uint32_t add_shader(ShaderStage stage, std::vector<std::uint32_t> spirv) {
@@ -83,6 +85,9 @@ class Pipeline {
   VkPipelineLayout layout() const noexcept { return m_layout.get(); }
   std::uint32_t group_count() const noexcept { return m_group_count; }
   std::uint32_t push_constant_size() const noexcept { return m_push_constant_size; }
+  /// Stack bytes the pipeline needs at its recursion depth, from the groups' own stack sizes;
+  /// trace() sets it (vkCmdSetRayTracingPipelineStackSizeKHR) instead of the driver's worst case.
+  std::uint32_t stack_size() const noexcept { return m_stack_size; }
   /// The opaque handle of group `group` (shaderGroupHandleSize bytes) to copy into an SBT record.
   std::span<const std::byte> group_handle(std::uint32_t group) const;
 
@@ -92,6 +97,7 @@ class Pipeline {
   std::uint32_t m_group_count = 0;
   std::uint32_t m_handle_size = 0;
   std::uint32_t m_push_constant_size = 0;
+  std::uint32_t m_stack_size = 0;
   std::vector<std::byte> m_handles;
 };
 
@@ -168,10 +174,41 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
   info.pGroups = groups.data();
   info.maxPipelineRayRecursionDepth = desc.max_recursion_depth;
   info.layout = layout;
+  const VkDynamicState dynamic = VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR;
+  auto dynamic_info = make<VkPipelineDynamicStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+  dynamic_info.dynamicStateCount = 1;
+  dynamic_info.pDynamicStates = &dynamic;
+  info.pDynamicState = &dynamic_info;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  check(ctx.rt().create_ray_tracing_pipelines(ctx.device(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+  check(ctx.rt().create_ray_tracing_pipelines(ctx.device(), VK_NULL_HANDLE, desc.cache, 1, &info, nullptr, &pipeline),
         "vkCreateRayTracingPipelinesKHR");
   m_pipeline = own(ctx.device(), pipeline, vkDestroyPipeline);
+
+  // The spec's default stack size formula, from the sizes the driver reports per group and stage.
+  VkDeviceSize raygen = 0, miss = 0, closest = 0, intersect_any = 0, callable = 0;
+  auto size = [&](std::uint32_t g, VkShaderGroupShaderKHR which) {
+    return ctx.rt().get_ray_tracing_shader_group_stack_size(ctx.device(), pipeline, g, which);
+  };
+  for (std::uint32_t g = 0; g < m_group_count; ++g) {
+    const ShaderGroup& group = desc.groups[g];
+    if (group.type == VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR) {
+      const VkDeviceSize s = size(g, VK_SHADER_GROUP_SHADER_GENERAL_KHR);
+      switch (desc.shaders[group.general].stage) {
+        case ShaderStage::raygen: raygen = std::max(raygen, s); break;
+        case ShaderStage::miss: miss = std::max(miss, s); break;
+        default: callable = std::max(callable, s); break;
+      }
+      continue;
+    }
+    if (group.closest_hit != VK_SHADER_UNUSED_KHR) closest = std::max(closest, size(g, VK_SHADER_GROUP_SHADER_CLOSEST_HIT_KHR));
+    VkDeviceSize ia = 0;
+    if (group.intersection != VK_SHADER_UNUSED_KHR) ia += size(g, VK_SHADER_GROUP_SHADER_INTERSECTION_KHR);
+    if (group.any_hit != VK_SHADER_UNUSED_KHR) ia += size(g, VK_SHADER_GROUP_SHADER_ANY_HIT_KHR);
+    intersect_any = std::max(intersect_any, ia);
+  }
+  const VkDeviceSize depth = desc.max_recursion_depth;
+  m_stack_size = static_cast<std::uint32_t>(raygen + std::min<VkDeviceSize>(1, depth) * std::max({closest, miss, intersect_any}) +
+                                            (depth > 1 ? depth - 1 : 0) * std::max(closest, miss) + 2 * callable);
 
   m_handles.resize(std::size_t{m_group_count} * m_handle_size);
   if (m_group_count > 0) {

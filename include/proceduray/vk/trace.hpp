@@ -42,6 +42,7 @@ inline void trace(const Context& ctx, const Pipeline& pipeline, const Descriptor
       vkCmdPushConstants(cmd, pipeline.layout(), all_ray_tracing_stages, 0,
                          static_cast<std::uint32_t>(push_constants.size()), push_constants.data());
     }
+    ctx.rt().cmd_set_ray_tracing_pipeline_stack_size(cmd, pipeline.stack_size());
     const auto& r = sbt.regions();
     ctx.rt().cmd_trace_rays(cmd, &r[0], &r[1], &r[2], &r[3], width, height, 1);
   });

@@ -1,0 +1,136 @@
+// A VkPipelineCache kept on disk, so a second run skips shader compilation.
+//
+//   proceduray::vk::PipelineCache cache(ctx, "proceduray.cache");   // loads it if valid
+//   ... create pipelines with cache.get() ...
+//   cache.save();                                                    // writes it back
+//
+// The file is this library's own: a magic, the data size and an FNV-1a checksum, then the
+// driver's cache data. A file that is corrupt, truncated, written by another device or
+// driver, or not a cache at all is ignored with a warning (warning(), and stderr) and
+// replaced on save(): never handed to the driver, so it can never crash it.
+#pragma once
+
+#include <proceduray/vk/context.hpp>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// A pipeline cache loaded from and saved to one file.
+class PipelineCache {
+ public:
+  /// Opens the cache at `path` (empty: memory only). An unusable file is ignored with a warning.
+  PipelineCache(const Context& ctx, std::filesystem::path path = {});
+
+  VkPipelineCache get() const noexcept { return m_cache.get(); }
+  /// True when valid data was read from the file.
+  bool loaded() const noexcept { return m_loaded; }
+  /// Why the file was ignored; empty when it was loaded or absent.
+  const std::string& warning() const noexcept { return m_warning; }
+  /// Writes the cache to its file (no-op without a path); throws std::runtime_error when it cannot.
+  void save() const;
+
+  /// What this library writes before the driver's data.
+  static constexpr std::array<char, 8> magic{'P', 'R', 'Y', 'C', 'A', 'C', 'H', '1'};
+
+  /// FNV-1a over the bytes: cheap, and enough to catch truncation and corruption.
+  static std::uint64_t checksum(const std::uint8_t* data, std::size_t size) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ data[i]) * 1099511628211ull;
+    return h;
+  }
+
+ private:
+  std::vector<std::uint8_t> read_valid(std::string& why) const;
+
+  const Context* m_ctx;
+  std::filesystem::path m_path;
+  DeviceHandle<VkPipelineCache> m_cache;
+  bool m_loaded = false;
+  std::string m_warning;
+};
+
+inline PipelineCache::PipelineCache(const Context& ctx, std::filesystem::path path)
+    : m_ctx(&ctx), m_path(std::move(path)) {
+  std::vector<std::uint8_t> data;
+  if (!m_path.empty() && std::filesystem::exists(m_path)) {
+    data = read_valid(m_warning);
+    if (!m_warning.empty()) {
+      std::fprintf(stderr, "proceduray: warning: pipeline cache '%s' ignored (%s); it will be rebuilt\n",
+                   m_path.string().c_str(), m_warning.c_str());
+    }
+  }
+  auto info = make<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
+  info.initialDataSize = data.size();
+  info.pInitialData = data.empty() ? nullptr : data.data();
+  VkPipelineCache cache = VK_NULL_HANDLE;
+  check(vkCreatePipelineCache(ctx.device(), &info, nullptr, &cache), "vkCreatePipelineCache");
+  m_cache = own(ctx.device(), cache, vkDestroyPipelineCache);
+  m_loaded = !data.empty();
+}
+
+inline std::vector<std::uint8_t> PipelineCache::read_valid(std::string& why) const {
+  std::ifstream in(m_path, std::ios::binary);
+  const std::vector<std::uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  constexpr std::size_t head = magic.size() + 16;
+  if (file.size() < head || std::memcmp(file.data(), magic.data(), magic.size()) != 0) {
+    why = "not a proceduray pipeline cache";
+    return {};
+  }
+  std::uint64_t size = 0, sum = 0;
+  std::memcpy(&size, file.data() + magic.size(), 8);
+  std::memcpy(&sum, file.data() + magic.size() + 8, 8);
+  if (size != file.size() - head || checksum(file.data() + head, size) != sum) {
+    why = "truncated or corrupt: its checksum does not match";
+    return {};
+  }
+  std::vector<std::uint8_t> data(file.begin() + head, file.end());
+  // The driver's own header (VkPipelineCacheHeaderVersionOne) must name this device.
+  const VkPhysicalDeviceProperties& p = m_ctx->properties();
+  std::uint32_t header[4] = {};
+  if (data.size() < 32) {
+    why = "its driver data is too short";
+    return {};
+  }
+  std::memcpy(header, data.data(), sizeof header);
+  if (header[1] != VK_PIPELINE_CACHE_HEADER_VERSION_ONE || header[2] != p.vendorID || header[3] != p.deviceID ||
+      std::memcmp(data.data() + 16, p.pipelineCacheUUID, VK_UUID_SIZE) != 0) {
+    why = "written by another device or driver than " + m_ctx->name();
+    return {};
+  }
+  return data;
+}
+
+inline void PipelineCache::save() const {
+  if (m_path.empty()) return;
+  std::size_t size = 0;
+  check(vkGetPipelineCacheData(m_ctx->device(), m_cache.get(), &size, nullptr), "vkGetPipelineCacheData");
+  std::vector<std::uint8_t> data(size);
+  check(vkGetPipelineCacheData(m_ctx->device(), m_cache.get(), &size, data.data()), "vkGetPipelineCacheData");
+  data.resize(size);
+  const std::uint64_t size64 = size, sum = checksum(data.data(), data.size());
+  // Write beside it and rename: a run killed mid-write leaves the old file, not half a new one.
+  const std::filesystem::path tmp = m_path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out.write(magic.data(), magic.size());
+    out.write(reinterpret_cast<const char*>(&size64), 8);
+    out.write(reinterpret_cast<const char*>(&sum), 8);
+    out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
+    if (!out) {
+      throw std::runtime_error("PipelineCache::save: cannot write '" + tmp.string() +
+                               "'; choose a cache path in a writable folder");
+    }
+  }
+  std::filesystem::rename(tmp, m_path);
+}
+
+}  // namespace proceduray::vk
