@@ -16,6 +16,7 @@
 #include "proceduray/scene/sbt_layout.hpp"
 #include "proceduray/scene/scene.hpp"
 #include "proceduray/scene/shader_table.hpp"
+#include "proceduray/shader/field_list.hpp"
 
 namespace proceduray::test {
 
@@ -94,6 +95,12 @@ struct FractalAttributes { glm::vec3 normal; float distance; };
 struct MaterialCb { glm::vec4 albedo; float reflectance; float diffuse; float specular; float power; };
 struct TriangleRootArguments { MaterialCb material; };
 struct ProceduralRootArguments { MaterialCb material; std::uint32_t instance_index; std::uint32_t primitive_type; };
+PROCEDURAY_STRUCT(RayPayload, scalar, color, depth);
+PROCEDURAY_STRUCT(ShadowPayload, scalar, hit);
+PROCEDURAY_STRUCT(FractalAttributes, scalar, normal, distance);
+PROCEDURAY_STRUCT(MaterialCb, scalar, albedo, reflectance, diffuse, specular, power);
+PROCEDURAY_STRUCT(TriangleRootArguments, scalar, material);
+PROCEDURAY_STRUCT(ProceduralRootArguments, scalar, material, instance_index, primitive_type);
 
 struct ReportScene {
   Scene scene;
@@ -164,6 +171,10 @@ struct PrimitiveConstantBuffer { glm::vec4 albedo; float reflectance; float diff
 struct PrimitiveInstanceConstantBuffer { std::uint32_t instance_index; std::uint32_t primitive_type; };
 struct D3D12RootArguments { PrimitiveConstantBuffer material; PrimitiveInstanceConstantBuffer aabb; };
 struct D3D12Attributes { glm::vec3 normal; };
+PROCEDURAY_STRUCT(PrimitiveConstantBuffer, scalar, albedo, reflectance, diffuse, specular, power, step_scale, pad);
+PROCEDURAY_STRUCT(PrimitiveInstanceConstantBuffer, scalar, instance_index, primitive_type);
+PROCEDURAY_STRUCT(D3D12RootArguments, scalar, material, aabb);
+PROCEDURAY_STRUCT(D3D12Attributes, scalar, normal);
 
 inline const std::array<const char*, 10> d3d12_aabb_geometries{
     "AnalyticAABB", "AnalyticSpheres", "Metaballs", "MiniSpheres", "IntersectedRoundCube",

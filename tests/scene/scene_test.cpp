@@ -2,40 +2,46 @@
 
 #include <doctest/doctest.h>
 
+#include "proceduray/shader/field_list.hpp"
+
 #include <cmath>
 #include <limits>
 
 using namespace proceduray;
 
 namespace {
-struct Payload { float value; };
+struct TestPayload { float value; };
 struct OtherPayload { std::uint32_t hit; };
 struct Args { std::uint32_t index; };
-struct Attributes { float normal[3]; };
+struct TestAttributes { float normal[3]; };
+PROCEDURAY_STRUCT(TestPayload, scalar, value);
+PROCEDURAY_STRUCT(OtherPayload, scalar, hit);
+PROCEDURAY_STRUCT(Args, scalar, index);
+PROCEDURAY_STRUCT(TestAttributes, scalar, normal);
 TriangleMesh triangle() { return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}; }
 }  // namespace
 
 TEST_CASE("scene entities register by id and return typed ids") {
   Scene s;
-  const RayId<Payload> radiance = s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  const RayId<TestPayload> radiance = s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   const RayId<OtherPayload> shadow = s.add_ray<OtherPayload>("Shadow", {.miss = "miss_shadow"});
   const HitGroupId tri = s.add_hit_group("Triangle", {.closest_hit = "chit"});
-  const HitGroupId proc = s.add_hit_group<Attributes>("Proc", {.kind = HitGroupKind::procedural, .intersection = "isect"});
+  const HitGroupId proc = s.add_hit_group<TestAttributes>("Proc", {.kind = HitGroupKind::procedural, .intersection = "isect"});
   const GeometryId plane = s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
   const GlobalSignatureId global = s.add_global_signature("Global", {.bindings = {{.kind = BindingKind::acceleration_structure}}});
   const LocalSignatureId<Args> local = s.add_local_signature<Args>("Local");
   CHECK(radiance.index() == 0);
   CHECK(shadow.index() == 1);
-  CHECK(s.ray_id<Payload>("Radiance") == radiance);
+  CHECK(s.ray_id<TestPayload>("Radiance") == radiance);
   CHECK(s.ray_id("Shadow") == RayId<>(shadow));
   CHECK(s.hit_group_id("Proc") == proc);
   CHECK(s.geometry_id("Plane") == plane);
   CHECK(s.global_signature_id("Global") == global);
   CHECK(s.local_signature_id<Args>("Local") == local);
-  CHECK(s.ray(radiance).payload_size == sizeof(Payload));
+  CHECK(s.ray(radiance).payload_size == sizeof(TestPayload));
   CHECK(s.ray("Shadow").desc.miss == "miss_shadow");
   CHECK(s.hit_group(tri).attribute_size == triangle_attribute_size);
-  CHECK(s.hit_group(proc).attribute_size == sizeof(Attributes));
+  CHECK(s.hit_group(proc).attribute_size == sizeof(TestAttributes));
   CHECK(s.local_signature(local).data_size == sizeof(Args));
   CHECK(s.global_signature(global).desc.bindings.size() == 1);
   CHECK(s.geometry(plane).desc.kind == GeometryKind::triangles);
@@ -43,7 +49,7 @@ TEST_CASE("scene entities register by id and return typed ids") {
 
 TEST_CASE("scene find returns a pointer or nullptr") {
   Scene s;
-  s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   s.add_hit_group("Triangle", {});
   s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
   s.add_local_signature<Args>("Local");
@@ -62,8 +68,8 @@ TEST_CASE("scene find returns a pointer or nullptr") {
 
 TEST_CASE("scene duplicate ids throw naming the id") {
   Scene s;
-  s.add_ray<Payload>("Radiance", {.miss = "miss"});
-  CHECK_THROWS_WITH_AS(s.add_ray<Payload>("Radiance", {.miss = "other"}),
+  s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
+  CHECK_THROWS_WITH_AS(s.add_ray<TestPayload>("Radiance", {.miss = "other"}),
                        doctest::Contains("Scene::add_ray: duplicate ray id \"Radiance\""), DuplicateIdError);
   s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
   CHECK_THROWS_WITH_AS(s.add_geometry("Plane", GeometryDesc::triangles(triangle())),
@@ -78,7 +84,7 @@ TEST_CASE("scene duplicate ids throw naming the id") {
 TEST_CASE("scene unknown ids name the nearest known ids") {
   Scene s;
   for (const char* name : {"Pacman", "Pacman_Shadow", "Mandelbulb", "Julia"}) {
-    s.add_hit_group<Attributes>(name, {.kind = HitGroupKind::procedural, .intersection = "isect"});
+    s.add_hit_group<TestAttributes>(name, {.kind = HitGroupKind::procedural, .intersection = "isect"});
   }
   CHECK_THROWS_WITH_AS(s.hit_group_id("Pacmn"),
                        doctest::Contains("Scene::hit_group_id: unknown hit group id \"Pacmn\"; nearest known ids: \"Pacman\", \"Julia\""),
@@ -92,12 +98,12 @@ TEST_CASE("scene unknown ids name the nearest known ids") {
 
 TEST_CASE("scene typed lookups check the registered type") {
   Scene s;
-  s.add_ray<Payload>("Radiance", {.miss = "miss"});
+  s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   s.add_local_signature<Args>("Local");
-  CHECK_NOTHROW(s.ray_id<Payload>("Radiance"));
+  CHECK_NOTHROW(s.ray_id<TestPayload>("Radiance"));
   CHECK_THROWS_WITH_AS(s.ray_id<OtherPayload>("Radiance"), doctest::Contains("ray \"Radiance\" has payload type"),
                        TypeMismatchError);
-  CHECK_THROWS_WITH_AS(s.local_signature_id<Payload>("Local"), doctest::Contains("ask for the type it was registered with"),
+  CHECK_THROWS_WITH_AS(s.local_signature_id<TestPayload>("Local"), doctest::Contains("ask for the type it was registered with"),
                        TypeMismatchError);
 }
 
@@ -107,7 +113,7 @@ TEST_CASE("scene hit group kinds are checked when registered") {
                        doctest::Contains("triangle hit group \"Tri\" has intersection shader \"isect\""), HitGroupKindError);
   CHECK_THROWS_WITH_AS(s.add_hit_group("Proc", {.kind = HitGroupKind::procedural, .closest_hit = "c"}),
                        doctest::Contains("procedural hit group \"Proc\" has no intersection shader"), HitGroupKindError);
-  CHECK_THROWS_WITH_AS(s.add_hit_group<Attributes>("Tri2", {.closest_hit = "c"}),
+  CHECK_THROWS_WITH_AS(s.add_hit_group<TestAttributes>("Tri2", {.closest_hit = "c"}),
                        doctest::Contains("triangles report the built-in barycentrics"), HitGroupKindError);
   CHECK(s.hit_groups().size() == 0);
 }

@@ -21,6 +21,7 @@ concept CanAddHit = requires(ShaderTable t, RayId<> r, HitGroupId h, Signature s
   t.add_hit(r, h, s, a, g);
 };
 struct OtherArgs { std::uint32_t x; };
+PROCEDURAY_STRUCT(OtherArgs, scalar, x);
 static_assert(CanAddHit<LocalSignatureId<ProceduralRootArguments>, ProceduralRootArguments>);
 static_assert(!CanAddHit<LocalSignatureId<ProceduralRootArguments>, TriangleRootArguments>);
 static_assert(!CanAddHit<LocalSignatureId<OtherArgs>, std::uint32_t>);
@@ -163,7 +164,11 @@ namespace {
 struct Args4 { std::uint32_t tag; };
 struct Args16 { std::uint32_t tag; std::uint32_t pad[3]; };
 struct Args40 { std::uint32_t tag; float values[9]; };
-struct Payload { float value; };
+struct TestPayload { float value; };
+PROCEDURAY_STRUCT(Args4, scalar, tag);
+PROCEDURAY_STRUCT(Args16, scalar, tag, pad);
+PROCEDURAY_STRUCT(Args40, scalar, tag, values);
+PROCEDURAY_STRUCT(TestPayload, scalar, value);
 
 struct Key {
   std::uint32_t ray, geometry, instance;
@@ -177,8 +182,8 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   auto pick = [&](std::uint32_t n) { return static_cast<std::uint32_t>(rng() % n); };
   Scene s;
   const std::uint32_t ray_count = 1 + pick(4);
-  std::vector<RayId<Payload>> rays;
-  for (std::uint32_t r = 0; r < ray_count; ++r) rays.push_back(s.add_ray<Payload>("ray" + std::to_string(r), {.miss = "miss" + std::to_string(pick(2))}));
+  std::vector<RayId<TestPayload>> rays;
+  for (std::uint32_t r = 0; r < ray_count; ++r) rays.push_back(s.add_ray<TestPayload>("ray" + std::to_string(r), {.miss = "miss" + std::to_string(pick(2))}));
   std::array<std::vector<HitGroupId>, 2> groups;
   for (std::uint32_t h = 0; h < 3; ++h) {
     groups[0].push_back(s.add_hit_group("tri" + std::to_string(h), {.closest_hit = "chit" + std::to_string(h)}));
@@ -246,7 +251,7 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   std::map<std::uint32_t, std::uint32_t> entry_of_tag;
   for (const Planned& p : plan) {
     const HitGroupId group(p.group);
-    const RayId<Payload> ray = rays[p.key.ray];
+    const RayId<TestPayload> ray = rays[p.key.ray];
     const GeometryId geometry(p.key.geometry);
     const std::uint32_t instance = p.key.instance == no_index ? ShaderTable::all_instances : p.key.instance;
     EntryId id;
@@ -435,7 +440,7 @@ TEST_CASE("shader_table device limits: instances recursion attributes stride") {
 
 TEST_CASE("shader_table one block per BLAS and the instance limit") {
   Scene s;
-  const auto ray = s.add_ray<Payload>("r", {.miss = "m"});
+  const auto ray = s.add_ray<TestPayload>("r", {.miss = "m"});
   const auto group = s.add_hit_group("g", {.closest_hit = "c"});
   TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
   // Three one-instance BLASes: offsets 0, 1, 2; a device allowing 2 instances refuses the scene.

@@ -15,11 +15,15 @@
 #include <vector>
 
 #include "proceduray/scene/shader_table.hpp"
+#include "proceduray/shader/field_list.hpp"
 
 namespace {
 struct Payload { float color[4]; };
 struct Attributes { float normal[3]; };
 struct InstanceArgs { std::uint32_t instance; std::uint32_t material; float scale; float pad; };
+PROCEDURAY_STRUCT(Payload, scalar, color);
+PROCEDURAY_STRUCT(Attributes, scalar, normal);
+PROCEDURAY_STRUCT(InstanceArgs, scalar, instance, material, scale, pad);
 
 /// VmHWM (peak resident set) in KiB, from /proc; 0 where unavailable.
 long peak_kib() {

@@ -45,6 +45,10 @@
 
 namespace proceduray {
 
+/// An entry's arguments (Given) have exactly its local signature's record data type (Args).
+template <class Given, class Args>
+concept ArgumentsMatchSignature = std::same_as<Given, Args>;
+
 /// Shader-table entries of one scene; build() lays them out as a ShaderBindingTable.
 class ShaderTable {
  public:
@@ -58,14 +62,14 @@ class ShaderTable {
   EntryId add_raygen(std::string shader) { return add_raygen_impl(std::move(shader), no_index, nullptr, 0); }
   /// Adds a raygen record for `shader` carrying `data` (type fixed by the local signature).
   template <RecordData Args, class Given>
-    requires std::same_as<Args, Given>
+    requires ArgumentsMatchSignature<Given, Args>
   EntryId add_raygen(std::string shader, LocalSignatureId<Args> signature, const Given& data) {
     return add_raygen_impl(std::move(shader), signature.index(), &data, sizeof(Args));
   }
 
   /// Gives the miss record of `ray` record data; rays without it get a record with none.
   template <class Payload, RecordData Args, class Given>
-    requires std::same_as<Args, Given>
+    requires ArgumentsMatchSignature<Given, Args>
   EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Args> signature, const Given& data) {
     return add_miss_impl(ray.index(), signature.index(), &data, sizeof(Args));
   }
@@ -78,7 +82,7 @@ class ShaderTable {
   }
   /// Binds <ray, hit group, local signature, arguments> to a geometry, or one instance of it.
   template <class Payload, RecordData Args, class Given>
-    requires std::same_as<Args, Given>
+    requires ArgumentsMatchSignature<Given, Args>
   EntryId add_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args,
                   GeometryId geometry, std::uint32_t instance = all_instances) {
     return add_hit_impl("ShaderTable::add_hit", ray.index(), group.index(), signature.index(), &args, sizeof(Args),
@@ -101,7 +105,7 @@ class ShaderTable {
   }
   /// The same, with record data.
   template <class Payload, RecordData Args, class Given>
-    requires std::same_as<Args, Given>
+    requires ArgumentsMatchSignature<Given, Args>
   EntryId set_default_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args) {
     return add_hit_impl("ShaderTable::set_default_hit", ray.index(), group.index(), signature.index(), &args,
                         sizeof(Args), no_index, all_instances, true);

@@ -113,13 +113,15 @@ constexpr bool size_ok(const TypeOps& s) {
 /// Registers struct Type for GLSL with layout rule Rule (scalar, std430, std140) and its members in order.
 #define PROCEDURAY_STRUCT(Type, Rule, ...)                                                                      \
   struct ProcedurayFields_##Type;                                                                              \
-  ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>);                              \
+  inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>);                       \
   struct ProcedurayFields_##Type {                                                                             \
     static constexpr ::std::string_view glsl_name = #Type;                                                     \
     static constexpr ::proceduray::LayoutRule rule = ::proceduray::LayoutRule::Rule;                           \
     static constexpr ::proceduray::Field fields[] = {                                                          \
         PROCEDURAY_DETAIL_FOR_EACH(PROCEDURAY_DETAIL_FIELD, Type, Rule, __VA_ARGS__)};                         \
   };                                                                                                           \
+  /* defined, so a registration inside an unnamed namespace is no unused-function warning */                   \
+  inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>) { return {}; }         \
   static_assert(::proceduray::detail::PlainStruct<Type>,                                                       \
                 #Type ": a GPU-visible struct must be standard-layout and trivially copyable");                \
   static_assert(!::proceduray::is_glsl_reserved(#Type),                                                        \

@@ -53,7 +53,12 @@ inline std::string reference_name(const TypeOps& pointee) {
 inline const TypeOps& strip_arrays(const TypeOps& t) { return t.kind == TypeKind::array ? strip_arrays(*t.element) : t; }
 
 inline std::string array_suffix(const TypeOps& t) {
-  return t.kind == TypeKind::array ? "[" + std::to_string(t.count) + "]" + array_suffix(*t.element) : "";
+  if (t.kind != TypeKind::array) return {};
+  std::string out(1, '[');  // appended piecewise: "[" + std::string trips g++ 12's -Wrestrict at -O3
+  out += std::to_string(t.count);
+  out += ']';
+  out += array_suffix(*t.element);
+  return out;
 }
 
 inline bool uses_int64(const TypeOps& t) {
