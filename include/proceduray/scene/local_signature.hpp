@@ -2,6 +2,7 @@
 // (DXR's local root signature + root arguments type).
 //
 //   struct ProceduralArgs { glm::vec4 albedo; std::uint32_t instance; };
+//   PROCEDURAY_STRUCT(ProceduralArgs, scalar, albedo, instance);   // record data is a registered struct
 //   proceduray::LocalSignatureId<ProceduralArgs> sig =
 //       scene.add_local_signature<ProceduralArgs>("Procedural");
 //   table.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Args must match

@@ -1,7 +1,7 @@
 // The scene registry: rays, hit groups, geometry, global and local signatures, each
 // registered by string id and returned as a strong typed id.
 //
-//   proceduray::Scene scene;
+//   proceduray::Scene scene;   // payload, attribute and record types: registered with PROCEDURAY_STRUCT
 //   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
 //   auto shadow   = scene.add_ray<ShadowPayload>("Shadow", {.miss = "shadow.rmiss"});
 //   auto pacman   = scene.add_hit_group<Attributes>("Pacman", {.kind = proceduray::HitGroupKind::procedural,
@@ -60,8 +60,11 @@ class Scene {
   /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
   /// or the built-in barycentrics for triangles). Throws HitGroupKindError, DuplicateIdError.
   template <class Attributes = void>
-    requires(std::is_void_v<Attributes> || AttributeData<Attributes>)
   HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
+    static_assert(std::is_void_v<Attributes> || AttributeData<Attributes>,
+                  "Scene::add_hit_group: the attribute type (Attributes in the instantiation above) must be registered with "
+                  "PROCEDURAY_STRUCT and at most 32 bytes (maxRayHitAttributeSize that Vulkan guarantees); "
+                  "register it, or shrink it and pass the rest through the payload");
     validate(desc, id, "Scene::add_hit_group");
     std::uint32_t size = 0;
     if constexpr (!std::is_void_v<Attributes>) {
