@@ -10,17 +10,21 @@
 #ifndef PROCEDURAY_PRIMITIVES_SPHERE_GLSL
 #define PROCEDURAY_PRIMITIVES_SPHERE_GLSL
 
-bool ray_sphere(vec3 origin, vec3 direction, vec3 centre, float radius, out float t_near, out float t_far) {
+#include "../common/compat.glsl"
+
+PROCEDURAY_INLINE bool ray_sphere(vec3 origin, vec3 direction, vec3 centre, float radius, PROCEDURAY_OUT(float) t_near,
+                                  PROCEDURAY_OUT(float) t_far) {
   vec3 f = origin - centre;
   float a = dot(direction, direction);
   float b = dot(f, direction);
+  t_near = 0.0f;
+  t_far = 0.0f;
+  if (!(a > 0.0f)) return false;  // zero direction: no line, and b / a would be NaN
   vec3 closest = f - (b / a) * direction;  // from the centre to the line's closest point
   float disc = a * (radius * radius - dot(closest, closest));
-  t_near = 0.0;
-  t_far = 0.0;
-  if (disc < 0.0) return false;
-  float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
-  if (q == 0.0) return true;  // tangent ray through the origin's foot: both roots are 0
+  if (disc < 0.0f) return false;
+  float q = -(b + (b >= 0.0f ? 1.0f : -1.0f) * sqrt(disc));
+  if (q == 0.0f) return true;  // tangent ray through the origin's foot: both roots are 0
   float c = dot(f, f) - radius * radius;
   float ta = c / q;
   float tb = q / a;

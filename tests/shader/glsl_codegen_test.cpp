@@ -97,6 +97,13 @@ TEST_CASE("push constants are declared from their type and rule") {
         "layout(push_constant, std140) uniform Inner140PushConstants {\n    vec4 a;\n} inner;\n");
 }
 
+TEST_CASE("uniform blocks are declared from their type rule set and binding") {
+  CHECK(proceduray::glsl_uniform<Inner140>(0, 3, "inner") ==
+        "layout(set = 0, binding = 3, std140) uniform Inner140Uniform {\n    vec4 a;\n} inner;\n");
+  CHECK(proceduray::glsl_uniform<Sphere>(1, 2, "sphere") ==
+        "layout(set = 1, binding = 2, scalar) uniform SphereUniform {\n    vec3 center;\n    float radius;\n} sphere;\n");
+}
+
 TEST_CASE("glsl_type_name names references after their target") {
   CHECK(proceduray::glsl_type_name(type_ops<proceduray::DeviceAddress<Sphere>>) == "SphereRef");
   CHECK(proceduray::glsl_type_name(type_ops<proceduray::DeviceAddress<glm::vec3>>) == "Vec3Ref");

@@ -8,6 +8,7 @@
 //   glsl += proceduray::glsl_hit_attribute<Interface, SphereHit>("hit");      // hitAttributeEXT SphereHit hit;
 //   glsl += proceduray::glsl_shader_record<Interface, SphereRecord>("record"); // layout(shaderRecordEXT, scalar) buffer ...
 //   glsl += proceduray::glsl_push_constant<Camera>("camera");  // layout(push_constant, std430) uniform ...
+//   glsl += proceduray::glsl_uniform<SceneConstants>(0, 2, "constants");  // layout(set = 0, binding = 2, scalar) uniform ...
 //   std::string source = proceduray::insert_after_version(user_shader_text, glsl);
 //
 // A buffer reference for DeviceAddress<T> is named after T: SphereRef for a struct Sphere,
@@ -228,6 +229,16 @@ std::string glsl_push_constant(std::string_view name) {
   const TypeOps& t = type_ops<T>;
   return "layout(push_constant, " + std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) +
          "PushConstants {\n" + detail::member_lines(t) + "} " + std::string(name) + ";\n";
+}
+
+/// A uniform block with T's members and T's rule: `layout(set = S, binding = B, rule) uniform TUniform {...} name;`
+/// (scalar needs the scalarBlockLayout feature, core in Vulkan 1.2).
+template <RegisteredStruct T>
+std::string glsl_uniform(std::uint32_t set, std::uint32_t binding, std::string_view name) {
+  const TypeOps& t = type_ops<T>;
+  return "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(binding) + ", " +
+         std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) + "Uniform {\n" +
+         detail::member_lines(t) + "} " + std::string(name) + ";\n";
 }
 
 /// `source` with `generated` inserted on the line after its `#version` line (at the start if it has none).

@@ -1,0 +1,47 @@
+// What the paper scene's marched intersection shaders share: clip to the own AABB, sphere
+// trace with the knobs from `constants`, report t within [gl_RayTminEXT, gl_RayTmaxEXT].
+//
+//   float march_distance(vec3 p) { ... }          // object space
+//   vec3 march_normal(vec3 p, float h) { ... }    // unit, outward
+//   #include "march.glsl"
+//   void main() { march_and_report(mandelbulb_aabb_min, mandelbulb_aabb_max); }
+//
+// Marching runs in object space along the unit direction u = d / |d|, so distances are
+// object-space lengths s = t |d|. The absolute threshold constants.epsilon is in world units
+// and is divided by the instance's scale (world length per object length); the footprint
+// term footprint_scale * pixel_angle * t is an angle times a distance and needs no scaling.
+// The footprint uses this ray's own t (an intersection shader cannot read the payload), so
+// for reflection rays it is finer than the pixel's true cone: more accurate, never coarser.
+#ifndef PAPER_MARCH_GLSL
+#define PAPER_MARCH_GLSL
+
+#include "common/ray.glsl"
+#include "marching/sphere_trace.glsl"
+
+vec3 march_normal(vec3 p, float h);
+
+void march_and_report(vec3 box_min, vec3 box_max) {
+  vec3 o = gl_ObjectRayOriginEXT;
+  vec3 d = gl_ObjectRayDirectionEXT;
+  float t0 = gl_RayTminEXT;
+  float t1 = gl_RayTmaxEXT;
+  // Drivers may report AABB hits outside the box (it may be enlarged): clip to our own.
+  if (!ray_clip_aabb(o, d, box_min, box_max, t0, t1)) return;
+  float len = length(d);
+  if (!(len > 0.0)) return;
+  vec3 u = d / len;
+  float world_per_object = max(length(gl_WorldRayDirectionEXT) / len, 1.0e-20);
+  MarchSettings m = MarchSettings(constants.max_steps, constants.epsilon / world_per_object,
+                                  constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale,
+                                  constants.over_relaxation);
+  float s;
+  uint steps;
+  if (!sphere_trace(o, u, t0 * len, t1 * len, m, s, steps)) return;
+  float t = s / len;
+  if (!t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
+  hit.normal = march_normal(o + s * u, max(march_epsilon(m, s), 1.0e-5));
+  hit.steps = float(steps);
+  reportIntersectionEXT(t, 0u);
+}
+
+#endif

@@ -1,0 +1,17 @@
+#version 460
+// Every procedural object: the object-space normal from the intersection shader, the
+// material from this hit record, Phong + Schlick-Fresnel, shadow and reflection rays.
+#include "surface.glsl"
+
+void main() {
+  vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
+  // Normals take the inverse transpose of the object-to-world transform.
+  vec3 n = safe_normalize(transpose(mat3(gl_WorldToObjectEXT)) * hit.normal, -gl_WorldRayDirectionEXT);
+  // Marched surfaces are found within this threshold (as the intersection shader set it):
+  // secondary rays start twice as far out so they do not find the same surface at once.
+  float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);
+  vec3 colour = shade_surface(p, n, record.albedo, hit.steps > 0.0 ? 2.0 * threshold : constants.epsilon);
+  payload.colour = colour;
+  payload.object_id = record.object_id;
+  payload.steps = hit.steps;
+}

@@ -1,0 +1,57 @@
+// Lighting shared by plane.rchit and shade.rchit: Phong plus Schlick-Fresnel reflection, a
+// shadow ray towards the point light, and the recursive reflection ray.
+//
+//   payload.colour = shade_surface(p, n, albedo, offset);
+//
+// Needs the generated `constants`, `record` (MaterialRecord), `payload` (incoming radiance)
+// and `shadow` (outgoing shadow payload). The reflection is traced with the incoming payload
+// itself (Vulkan allows a rayPayloadInEXT as traceRayEXT's payload; glslang rejects a second
+// payload at location 0), saving and restoring it around the call.
+#ifndef PAPER_SURFACE_GLSL
+#define PAPER_SURFACE_GLSL
+
+#include "paper.glsl"
+#include "common/ray.glsl"
+#include "shading/phong.glsl"
+
+/// 1 when nothing lies between origin and origin + dist * dir, else 0.
+float light_visibility(vec3 origin, vec3 dir, float dist) {
+  shadow.occluded = 1u;  // stays 1 unless the shadow miss shader runs
+  traceRayEXT(tlas, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT,
+              0xFF, shadow_ray, ray_count, shadow_ray, origin, 0.0, dir, dist, 1);
+  return shadow.occluded != 0u ? 0.0 : 1.0;
+}
+
+/// The colour a radiance ray from origin along dir brings back, one level deeper.
+vec3 reflected_colour(vec3 origin, vec3 dir) {
+  RadiancePayload saved = payload;
+  payload.colour = vec3(0.0);
+  payload.depth = saved.depth + 1u;
+  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, radiance_ray, ray_count, radiance_ray, origin, 0.0, dir, ray_far, 0);
+  vec3 colour = payload.colour;
+  payload = saved;
+  return colour;
+}
+
+/// Colour at world point p with world normal n (either side); secondary rays start `offset`
+/// off the surface (the hit threshold for marched surfaces; 0 for exact ones) plus a few ulps.
+vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float offset) {
+  vec3 v = -safe_normalize(gl_WorldRayDirectionEXT, n);
+  if (dot(n, v) < 0.0) n = -n;  // the side the ray came from
+  vec3 to_light = constants.light_position - p;
+  float dist = length(to_light);
+  vec3 l = safe_normalize(to_light, n);
+  vec3 origin = offset_ray_origin(p + offset * n, n);
+  float visible = 1.0;
+  if ((constants.flags & flag_shadows) != 0u) visible = dot(n, l) > 0.0 ? light_visibility(origin, l, dist) : 0.0;
+  vec3 colour = constants.ambient * albedo +
+                visible * phong(albedo, n, l, v, constants.light_colour, record.diffuse, record.specular, record.shininess);
+  uint depth_max = min(constants.max_depth, max_depth_limit);
+  if ((constants.flags & flag_reflections) != 0u && record.reflectance > 0.0 && payload.depth + 1u < depth_max) {
+    float f = schlick_fresnel(record.reflectance, dot(n, v));
+    colour = mix(colour, reflected_colour(origin, reflect(-v, n)), f);
+  }
+  return colour;
+}
+
+#endif

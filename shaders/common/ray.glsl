@@ -1,0 +1,72 @@
+// Ray utilities every intersection and hit shader needs: clipping a ray to a box without
+// IEEE infinities, the t range test, NaN-free normalisation, and secondary-ray origins.
+//
+//   float t0 = gl_RayTminEXT, t1 = gl_RayTmaxEXT;
+//   if (!ray_clip_aabb(o, d, box_min, box_max, t0, t1)) return;   // [t0, t1] now inside the box
+//   if (t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) reportIntersectionEXT(t, 0u);
+//   vec3 n = safe_normalize(v, vec3(0.0f, 1.0f, 0.0f));
+//   vec3 origin = offset_ray_origin(hit_point, geometric_normal);   // GLSL only
+//
+// Why no infinities: the usual slab test divides by direction components and relies on
+// 1/0 = inf. Vulkan does not promise IEEE infinities (without SignedZeroInfNanPreserve a
+// driver may flush them, and 0 * inf is NaN anyway), so a direction component below
+// `ray_parallel_epsilon` in magnitude is treated as parallel: the ray is inside that slab
+// for every t, or for none. Every quotient formed is then finite for boxes within 1e6.
+#ifndef PROCEDURAY_COMMON_RAY_GLSL
+#define PROCEDURAY_COMMON_RAY_GLSL
+
+#include "compat.glsl"
+
+/// Direction components at or below this magnitude count as parallel to the slab.
+const float ray_parallel_epsilon = 1.0e-20f;
+
+/// One slab of the clip: narrows [t_near, t_far] to the t where o + t d lies in [lo, hi].
+PROCEDURAY_INLINE bool ray_clip_slab(float o, float d, float lo, float hi, PROCEDURAY_INOUT(float) t_near,
+                                     PROCEDURAY_INOUT(float) t_far) {
+  if (abs(d) <= ray_parallel_epsilon) return o >= lo && o <= hi;  // parallel: all t or none
+  float inv = 1.0f / d;
+  float ta = (lo - o) * inv;
+  float tb = (hi - o) * inv;
+  t_near = max(t_near, min(ta, tb));
+  t_far = min(t_far, max(ta, tb));
+  return t_near <= t_far;
+}
+
+/// Clips [t_near, t_far] to the box; false when nothing is left. An origin on a face counts as inside.
+PROCEDURAY_INLINE bool ray_clip_aabb(vec3 o, vec3 d, vec3 box_min, vec3 box_max, PROCEDURAY_INOUT(float) t_near,
+                                     PROCEDURAY_INOUT(float) t_far) {
+  return ray_clip_slab(o.x, d.x, box_min.x, box_max.x, t_near, t_far) &&
+         ray_clip_slab(o.y, d.y, box_min.y, box_max.y, t_near, t_far) &&
+         ray_clip_slab(o.z, d.z, box_min.z, box_max.z, t_near, t_far);
+}
+
+/// Whether t is a hit the ray accepts (the D3D12 sample's IsInRange): t_min <= t <= t_max.
+PROCEDURAY_INLINE bool t_in_range(float t, float t_min, float t_max) { return t >= t_min && t <= t_max; }
+
+/// v / |v|, or `fallback` when |v| is too small to divide by (normalize(0) is NaN).
+PROCEDURAY_INLINE vec3 safe_normalize(vec3 v, vec3 fallback) {
+  float len2 = dot(v, v);
+  return len2 > 1.0e-30f ? v * inversesqrt(len2) : fallback;
+}
+
+#ifndef __cplusplus
+/// Moves a hit point off its surface along the geometric normal `n` (pointing to the side the
+/// new ray leaves on), so a shadow or reflection ray does not hit the surface it starts on.
+/// The offset is a fixed number of float ulps of each coordinate, so it works at any distance
+/// from the origin; near the origin, where ulps are tiny, a small absolute offset is used
+/// instead (the method of Waechter and Binder, Ray Tracing Gems ch. 6).
+vec3 offset_ray_origin(vec3 p, vec3 n) {
+  const float near_origin = 1.0f / 32.0f;
+  const float float_scale = 1.0f / 65536.0f;
+  const float int_scale = 256.0f;
+  ivec3 of_i = ivec3(int_scale * n);
+  vec3 p_i = vec3(intBitsToFloat(floatBitsToInt(p.x) + (p.x < 0.0f ? -of_i.x : of_i.x)),
+                  intBitsToFloat(floatBitsToInt(p.y) + (p.y < 0.0f ? -of_i.y : of_i.y)),
+                  intBitsToFloat(floatBitsToInt(p.z) + (p.z < 0.0f ? -of_i.z : of_i.z)));
+  return vec3(abs(p.x) < near_origin ? p.x + float_scale * n.x : p_i.x,
+              abs(p.y) < near_origin ? p.y + float_scale * n.y : p_i.y,
+              abs(p.z) < near_origin ? p.z + float_scale * n.z : p_i.z);
+}
+#endif
+
+#endif

@@ -1,0 +1,107 @@
+// Tests for examples/02_paper_scene: every shader compiles with glslang against its generated
+// declarations, and the shader-side types have the sizes the pipeline and the SBT rely on.
+#include "02_paper_scene/paper_types.hpp"
+
+#include <proceduray/vk/shader_compiler.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace vk = proceduray::vk;
+
+namespace {
+
+std::filesystem::path paper_shader_dir() {
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "examples" / "02_paper_scene" /
+         "shaders";
+}
+
+vk::ShaderStage stage_of(const std::filesystem::path& file) {
+  const std::string ext = file.extension().string();
+  if (ext == ".rgen") return vk::ShaderStage::raygen;
+  if (ext == ".rmiss") return vk::ShaderStage::miss;
+  if (ext == ".rchit") return vk::ShaderStage::closest_hit;
+  return vk::ShaderStage::intersection;
+}
+
+std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
+  const std::filesystem::path path = paper_shader_dir() / file;
+  return vk::compile_glsl({.stage = stage_of(path), .name = path.string(), .code = vk::read_text_file(path),
+                           .preamble = paper::declarations_for(file)});
+}
+
+}  // namespace
+
+TEST_CASE("every paper scene shader compiles with its generated declarations") {
+  for (std::string_view file : paper::shader_files) {
+    CAPTURE(file);
+    std::vector<std::uint32_t> spirv;
+    CHECK_NOTHROW(spirv = compile_paper_shader(file));
+    REQUIRE(spirv.size() > 5);
+    CHECK(spirv[0] == 0x07230203u);  // SPIR-V magic
+  }
+}
+
+TEST_CASE("paper shader files are all listed") {
+  std::size_t on_disk = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(paper_shader_dir())) {
+    if (entry.path().extension() != ".glsl") ++on_disk;
+  }
+  CHECK(on_disk == paper::shader_files.size());
+}
+
+TEST_CASE("declarations_for accepts paths and rejects unknown shaders") {
+  CHECK(paper::declarations_for("some/dir/julia.rint") == paper::intersection_declarations());
+  CHECK(paper::declarations_for("shade.rchit") == paper::shade_hit_declarations());
+  CHECK_THROWS_AS(paper::declarations_for("sphere.rint"), std::invalid_argument);
+}
+
+TEST_CASE("paper types fit the pipeline limits") {
+  static_assert(paper::Interface::max_attribute_size <= proceduray::max_hit_attribute_size);
+  CHECK(paper::Interface::max_attribute_size == 16);
+  CHECK(paper::Interface::max_payload_size == sizeof(paper::RadiancePayload));
+  CHECK(sizeof(paper::RadiancePayload) == 24);
+  CHECK(sizeof(paper::ShadowPayload) == 4);
+  CHECK(paper::Interface::max_root_arguments_size == 48);
+  CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 12 + 4 * 8);
+  CHECK(paper::Interface::payload_location<paper::RadiancePayload>() == paper::radiance_ray);
+  CHECK(paper::Interface::payload_location<paper::ShadowPayload>() == paper::shadow_ray);
+  CHECK(paper::max_recursion_depth == paper::max_depth_limit + 1);
+}
+
+TEST_CASE("generated declarations carry the uniform block and no hand copies") {
+  const std::string decl = paper::shade_hit_declarations();
+  CHECK(decl.find("layout(set = 0, binding = 2, scalar) uniform SceneConstantsUniform {") != std::string::npos);
+  CHECK(decl.find("layout(shaderRecordEXT, scalar) buffer MaterialRecordShaderRecord {") != std::string::npos);
+  CHECK(decl.find("hitAttributeEXT ProceduralHit hit;") != std::string::npos);
+  CHECK(decl.find("layout(location = 0) rayPayloadInEXT RadiancePayload payload;") != std::string::npos);
+  CHECK(decl.find("layout(location = 1) rayPayloadEXT ShadowPayload shadow;") != std::string::npos);
+  CHECK(decl.find("const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);") != std::string::npos);
+  // The shaders declare no struct of their own: every struct comes from the C++ types.
+  for (const auto& entry : std::filesystem::directory_iterator(paper_shader_dir())) {
+    CAPTURE(entry.path().string());
+    CHECK(vk::read_text_file(entry.path()).find("struct ") == std::string::npos);
+  }
+}
+
+TEST_CASE("default constants frame the scene with the default knobs") {
+  const paper::SceneConstants c = paper::default_constants(1024, 768, 0.0f);
+  CHECK(c.max_depth == 3);
+  CHECK(c.max_depth <= paper::max_depth_limit);
+  CHECK(c.flags == (paper::flag_shadows | paper::flag_reflections));
+  CHECK(c.camera.pixel_angle > 0.0f);
+  const glm::vec3 centres[] = {paper::pacman_placements[0].translation, paper::pacman_placements[1].translation,
+                               paper::julia_placement.translation, paper::mandelbulb_placement.translation};
+  for (const glm::vec3& centre : centres) {
+    const glm::ivec2 px = proceduray::project(c.camera, centre, 1024, 768);
+    CAPTURE(px.x);
+    CAPTURE(px.y);
+    CHECK(px.x > 0);
+    CHECK(px.x < 1024);
+    CHECK(px.y > 0);
+    CHECK(px.y < 768);
+  }
+}
