@@ -11,6 +11,8 @@
 
 #include <proceduray/image/png.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/scene/shader_table.hpp>
+#include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/shader.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/buffer.hpp>
@@ -19,6 +21,8 @@
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/handle.hpp>
 #include <proceduray/vk/pipeline.hpp>
+#include <proceduray/vk/pipeline_cache.hpp>
+#include <proceduray/vk/renderer.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
 #include <proceduray/vk/storage_image.hpp>

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/scene/shader_binding_table.hpp>
 #include <proceduray/vk/pipeline.hpp>
 
 #include <array>
@@ -39,7 +40,9 @@ struct RecordWrite {
 class SbtBuffer {
  public:
   SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
-                     std::span<const RecordWrite> records);
+            std::span<const RecordWrite> records);
+  /// The table a scene built: its records and data, with `pipeline`'s handles in plan().groups order.
+  SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::ShaderBindingTable& table);
 
   /// Raygen, miss, hit and callable regions with device addresses, in vkCmdTraceRaysKHR's order.
   const std::array<VkStridedDeviceAddressRegionKHR, 4>& regions() const noexcept { return m_regions; }
@@ -50,20 +53,56 @@ class SbtBuffer {
   }
 
  private:
+  void place(const Context& ctx);
+
   SbtLayout m_layout;
   Buffer m_buffer;
   VkDeviceSize m_start = 0;  // bytes skipped so the table starts base-aligned
   std::array<VkStridedDeviceAddressRegionKHR, 4> m_regions{};
 };
 
-inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
-                                              std::span<const RecordWrite> records)
-    : m_layout(layout),
-      m_buffer(ctx, layout.size + layout.properties.base_alignment,
-               VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
-  const VkDeviceSize align = layout.properties.base_alignment;
+inline void SbtBuffer::place(const Context& ctx) {
+  if (m_layout.properties.handle_size != ctx.sbt_properties().handle_size ||
+      m_layout.properties.base_alignment != ctx.sbt_properties().base_alignment) {
+    throw std::invalid_argument("SbtBuffer: the table was laid out for handle size " +
+                                std::to_string(m_layout.properties.handle_size) + " and base alignment " +
+                                std::to_string(m_layout.properties.base_alignment) + " but " + ctx.name() + " has " +
+                                std::to_string(ctx.sbt_properties().handle_size) + " and " +
+                                std::to_string(ctx.sbt_properties().base_alignment) +
+                                "; lay it out with ctx.sbt_properties() (or build it with ctx.limits())");
+  }
+  m_buffer = Buffer(ctx, m_layout.size + m_layout.properties.base_alignment,
+                    VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT);
+  const VkDeviceSize align = m_layout.properties.base_alignment;
   const VkDeviceAddress base = (m_buffer.address() + align - 1) / align * align;
   m_start = base - m_buffer.address();
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const SbtRegion& region = m_layout.regions[k];
+    m_regions[k] = region.count > 0 ? VkStridedDeviceAddressRegionKHR{base + region.offset, region.stride, region.size}
+                                    : VkStridedDeviceAddressRegionKHR{};
+  }
+}
+
+inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::ShaderBindingTable& table)
+    : m_layout(table.layout()) {
+  place(ctx);
+  if (pipeline.group_count() != table.plan().groups.size()) {
+    throw std::invalid_argument("SbtBuffer: the pipeline has " + std::to_string(pipeline.group_count()) +
+                                " groups but the table's plan has " + std::to_string(table.plan().groups.size()) +
+                                "; make the pipeline from the same plan");
+  }
+  std::vector<std::byte> handles;
+  for (std::uint32_t g = 0; g < pipeline.group_count(); ++g) {
+    const auto h = pipeline.group_handle(g);
+    handles.insert(handles.end(), h.begin(), h.end());
+  }
+  table.write({static_cast<std::byte*>(m_buffer.data()) + m_start, m_layout.size}, handles);
+}
+
+inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
+                            std::span<const RecordWrite> records)
+    : m_layout(layout) {
+  place(ctx);
   std::array<std::vector<bool>, 4> written;
   for (std::uint32_t k = 0; k < 4; ++k) written[k].assign(layout.regions[k].count, false);
 
@@ -94,8 +133,6 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
                                     " was laid out but never given; a trace reaching it would run no shader");
       }
     }
-    const SbtRegion& region = layout.regions[k];
-    if (region.count > 0) m_regions[k] = {base + region.offset, region.stride, region.size};
   }
 }
 

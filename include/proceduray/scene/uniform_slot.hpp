@@ -1,0 +1,28 @@
+// A typed uniform binding: declared once, used both in the global signature and for writes.
+//
+//   struct SceneConstants { ... };  PROCEDURAY_STRUCT(SceneConstants, scalar, ...);
+//   constexpr proceduray::UniformSlot<SceneConstants> constants{.binding = 2};
+//   scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0},
+//                                                     {BindingKind::storage_image, 1}, constants}});
+//   renderer.set(constants, value);   // value must be a SceneConstants: anything else does not compile
+#pragma once
+
+#include <proceduray/scene/global_signature.hpp>
+#include <proceduray/shader/glsl_type.hpp>
+
+#include <cstdint>
+
+namespace proceduray {
+
+/// A uniform buffer binding whose contents are one T, a struct registered with the shader layer.
+template <RegisteredStruct T>
+struct UniformSlot {
+  using type = T;
+  std::uint32_t binding = 0;  ///< layout(binding = N)
+  std::uint32_t set = 0;      ///< layout(set = N); default 0
+
+  /// The binding as the global signature declares it.
+  constexpr operator Binding() const { return {BindingKind::uniform_buffer, binding, set, 1}; }
+};
+
+}  // namespace proceduray

@@ -1,0 +1,114 @@
+// A small scene for renderer tests: a triangle floor and two procedural balls (one BLAS,
+// two instances, a colour each from its own hit record), under a sky from a uniform.
+//
+//   RendererScene s;                                   // scene + entries + built table
+//   proceduray::vk::Renderer r(ctx, s.table(ctx), s.options());
+//   r.set(renderer_scene::constants_slot, renderer_scene::constants(w, h, sky));
+#pragma once
+
+#include "test_paths.hpp"
+
+#include <proceduray/proceduray.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <memory>
+#include <optional>
+
+namespace renderer_scene {
+
+namespace pr = proceduray;
+
+struct Constants {
+  pr::Camera camera;
+  glm::vec4 sky;
+};
+PROCEDURAY_STRUCT(Constants, scalar, camera, sky);
+struct Colour {
+  glm::vec3 rgb;
+};
+PROCEDURAY_STRUCT(Colour, scalar, rgb);
+struct BallHit {
+  glm::vec3 normal;
+};
+PROCEDURAY_STRUCT(BallHit, scalar, normal);
+struct Paint {
+  glm::vec4 rgb;
+};
+PROCEDURAY_STRUCT(Paint, scalar, rgb);
+
+using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Constants>, pr::RootArguments<Paint>,
+                                      pr::Attributes<BallHit>>;
+constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2};
+
+inline const glm::vec3 ball_centres[2] = {{-1.2f, 0.0f, 0.0f}, {1.2f, 0.0f, 0.0f}};
+inline const glm::vec4 ball_colours[2] = {{1, 0, 0, 1}, {0, 0, 1, 1}};
+inline const glm::vec4 floor_colour{0.5f, 0.5f, 0.5f, 1.0f};
+
+inline Constants constants(std::uint32_t width, std::uint32_t height, glm::vec4 sky = {0.2f, 0.4f, 0.8f, 1.0f}) {
+  return {pr::look_at({0.0f, 1.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, 45.0f, width, height), sky};
+}
+
+/// Generated GLSL for each of the scene's shaders, by file name.
+inline std::string declarations(pr::ShaderStage stage, const std::string& name) {
+  std::string out = pr::glsl_declarations<Interface>() + pr::glsl_uniform<Constants>(0, 2, "constants");
+  if (stage == pr::ShaderStage::raygen) return out + pr::glsl_ray_payload<Interface, Colour>("payload");
+  if (stage == pr::ShaderStage::intersection) return out + pr::glsl_hit_attribute<Interface, BallHit>("hit");
+  out += pr::glsl_ray_payload_in<Interface, Colour>("payload");
+  if (name == "ball.rchit") out += pr::glsl_hit_attribute<Interface, BallHit>("hit");
+  if (stage == pr::ShaderStage::closest_hit) out += pr::glsl_shader_record<Interface, Paint>("record");
+  return out;
+}
+
+/// The scene and its shader table, built for a context's limits.
+class RendererScene {
+ public:
+  RendererScene() {
+    m_scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
+    m_scene.add_hit_group<BallHit>("ball", {.kind = pr::HitGroupKind::procedural, .closest_hit = "ball.rchit",
+                                            .intersection = "ball.rint"});
+    m_scene.add_hit_group("floor", {.kind = pr::HitGroupKind::triangles, .closest_hit = "floor.rchit"});
+    pr::TriangleMesh quad{{{-6, -1, -6}, {6, -1, -6}, {6, -1, 6}, {-6, -1, 6}}, {0, 2, 1, 0, 3, 2}};
+    m_floor = m_scene.add_geometry("floor", pr::GeometryDesc::triangles(quad));
+    std::vector<pr::InstanceTransform> balls;
+    for (const glm::vec3& c : ball_centres) balls.push_back(pr::instance_transform(glm::translate(glm::mat4(1), c)));
+    m_ball = m_scene.add_geometry("ball", pr::GeometryDesc::procedural({pr::Aabb{}}, balls));
+    m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0},
+                                                         {pr::BindingKind::storage_image, 1}, constants_slot}});
+    m_paint = m_scene.add_local_signature<Paint>("paint");
+  }
+
+  const pr::Scene& scene() const { return m_scene; }
+  pr::GeometryId ball() const { return m_ball; }
+
+  /// Entries and the built table; `with_ball_entries = false` leaves the balls unbound.
+  const pr::ShaderBindingTable& table(const pr::vk::Context& ctx, bool with_ball_entries = true) {
+    m_entries = std::make_unique<pr::ShaderTable>(m_scene);
+    m_entries->add_raygen("scene.rgen");
+    m_entries->set_global_signature(m_scene.global_signature_id("global"));
+    const auto primary = m_scene.ray_id<Colour>("primary");
+    m_entries->add_hit(primary, m_scene.hit_group_id("floor"), m_paint, Paint{floor_colour}, m_floor);
+    if (with_ball_entries) {
+      for (std::uint32_t i = 0; i < 2; ++i) {
+        m_entries->add_hit(primary, m_scene.hit_group_id("ball"), m_paint, Paint{ball_colours[i]}, m_ball, i);
+      }
+    }
+    m_table.emplace(m_entries->build(ctx.limits()));
+    return *m_table;
+  }
+
+  static pr::vk::RendererOptions options(std::filesystem::path cache = {}) {
+    return {.shader_dirs = {test_source_dir() / "vk" / "shaders"}, .declarations = declarations,
+            .pipeline_cache = std::move(cache)};
+  }
+
+ private:
+  pr::Scene m_scene;
+  pr::GeometryId m_floor;
+  pr::GeometryId m_ball;
+  pr::LocalSignatureId<Paint> m_paint;
+  std::unique_ptr<pr::ShaderTable> m_entries;
+  std::optional<pr::ShaderBindingTable> m_table;
+};
+
+}  // namespace renderer_scene

@@ -1,0 +1,161 @@
+// vk/renderer.hpp: a scene table made into device objects and traced, checked by pixels.
+#include "renderer_scene.hpp"
+#include "test_context.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+using namespace proceduray;
+using renderer_scene::RendererScene;
+
+namespace {
+
+constexpr std::uint32_t width = 96;
+constexpr std::uint32_t height = 64;
+
+glm::ivec4 pixel(const vk::Frame& f, glm::ivec2 p) {
+  REQUIRE(p.x >= 0);
+  REQUIRE(p.y >= 0);
+  REQUIRE(p.x < static_cast<int>(f.width));
+  REQUIRE(p.y < static_cast<int>(f.height));
+  const std::size_t i = (std::size_t(p.y) * f.width + std::size_t(p.x)) * 4;
+  return {f.rgba[i], f.rgba[i + 1], f.rgba[i + 2], f.rgba[i + 3]};
+}
+
+glm::ivec4 bytes(glm::vec4 c) { return glm::ivec4(glm::round(c * 255.0f)); }
+
+bool near(glm::ivec4 a, glm::ivec4 b) { return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::ivec4(1))); }
+
+glm::ivec2 where(glm::vec3 p) { return project(renderer_scene::constants(width, height).camera, p, width, height); }
+
+}  // namespace
+
+TEST_CASE("renderer traces a scene table: per-instance records, triangles and procedural") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  const vk::Frame f = renderer.render(width, height);
+  REQUIRE(f.rgba.size() == std::size_t{width} * height * 4);
+  CHECK(near(pixel(f, where(renderer_scene::ball_centres[0])), bytes(renderer_scene::ball_colours[0])));
+  CHECK(near(pixel(f, where(renderer_scene::ball_centres[1])), bytes(renderer_scene::ball_colours[1])));
+  CHECK(near(pixel(f, where({0.0f, -1.0f, 2.5f})), bytes(renderer_scene::floor_colour)));
+  CHECK(near(pixel(f, {0, 0}), bytes(renderer_scene::constants(width, height).sky)));
+  CHECK(f.trace_ms > 0.0);
+  CHECK(f.host_ms >= 0.0);
+  CHECK_FALSE(f.tlas_refit);
+  CHECK(renderer.pipeline().stack_size() > 0);
+  CHECK(renderer.timings().acceleration_ms > 0.0);
+}
+
+TEST_CASE("renderer uniform changes reach the next trace without rebuilding") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  const vk::Frame before = renderer.render(width, height);
+  const glm::vec4 dusk{0.9f, 0.5f, 0.1f, 1.0f};
+  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height, dusk));
+  const vk::Frame after = renderer.render(width, height);
+  CHECK(near(pixel(after, {0, 0}), bytes(dusk)));
+  CHECK(pixel(before, where(renderer_scene::ball_centres[0])) == pixel(after, where(renderer_scene::ball_centres[0])));
+}
+
+TEST_CASE("renderer set_transform refits the TLAS and the image follows") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  const VkDeviceSize blas_before = renderer.blas_bytes();
+  const glm::vec3 moved{0.0f, 1.2f, -1.0f};
+  renderer.set_transform(s.ball(), 1, glm::translate(glm::mat4(1.0f), moved));
+  const vk::Frame f = renderer.render(width, height);
+  CHECK(f.tlas_refit);
+  CHECK(near(pixel(f, where(moved)), bytes(renderer_scene::ball_colours[1])));
+  CHECK_FALSE(near(pixel(f, where(renderer_scene::ball_centres[1])), bytes(renderer_scene::ball_colours[1])));
+  CHECK(renderer.blas_bytes() == blas_before);
+  CHECK_FALSE(renderer.render(width, height).tlas_refit);  // nothing moved since
+  CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 2, glm::mat4(1.0f)), doctest::Contains("no instance 2"),
+                       SceneError);
+  CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 0, glm::mat4(0.0f)), doctest::Contains("singular"),
+                       std::invalid_argument);
+}
+
+TEST_CASE("renderer renders are byte identical") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  CHECK(renderer.render(width, height).rgba == renderer.render(width, height).rgba);
+}
+
+TEST_CASE("renderer refuses to trace before its uniforms have values") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  CHECK_THROWS_WITH_AS(renderer.render(width, height), doctest::Contains("set 0 binding 2 was never given a value"),
+                       std::logic_error);
+  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  CHECK_THROWS_WITH_AS(renderer.render(0, height), doctest::Contains("size 0x64"), std::invalid_argument);
+}
+
+TEST_CASE("renderer names a missing shader and the folders it searched") {
+  TestContext t;
+  RendererScene s;
+  auto options = RendererScene::options();
+  options.shader_dirs = {test_output_dir("no_shaders_here")};
+  CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, s.table(t.ctx), options), doctest::Contains("shader 'scene.rgen'"),
+                       std::runtime_error);
+}
+
+TEST_CASE("renderer pipeline cache is reused and a corrupt one is rebuilt") {
+  TestContext t;
+  RendererScene s;
+  const auto path = test_output_dir("renderer_cache") / "pipeline.cache";
+  std::filesystem::remove(path);
+  {
+    vk::Renderer cold(t.ctx, s.table(t.ctx), RendererScene::options(path));
+    CHECK_FALSE(cold.timings().pipeline_cached);
+  }
+  REQUIRE(std::filesystem::exists(path));
+  {
+    vk::Renderer warm(t.ctx, s.table(t.ctx), RendererScene::options(path));
+    CHECK(warm.timings().pipeline_cached);
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::string valid((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  constexpr std::size_t head = vk::PipelineCache::magic.size() + 16;
+  REQUIRE(valid.size() >= head + 32);  // lavapipe keeps only the header for ray-tracing pipelines
+  std::string flipped = valid;
+  flipped[head + 20] = static_cast<char>(flipped[head + 20] ^ 0x5A);
+  // Another device's cache: a well-formed file whose driver header names another vendor.
+  std::string foreign = valid;
+  foreign[head + 8] = static_cast<char>(foreign[head + 8] ^ 0x01);
+  const std::uint64_t sum = vk::PipelineCache::checksum(reinterpret_cast<const std::uint8_t*>(foreign.data()) + head,
+                                                        foreign.size() - head);
+  std::memcpy(foreign.data() + vk::PipelineCache::magic.size() + 8, &sum, 8);
+  const std::pair<std::string, const char*> bad[] = {{"garbage", "not a proceduray pipeline cache"},
+                                                     {valid.substr(0, valid.size() - 4), "checksum"},
+                                                     {flipped, "checksum"},
+                                                     {foreign, "another device or driver"}};
+  for (const auto& [junk, why] : bad) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << junk;
+    vk::PipelineCache cache(t.ctx, path);
+    CHECK_FALSE(cache.loaded());
+    CHECK(cache.warning().find(why) != std::string::npos);
+    vk::Renderer rebuilt(t.ctx, s.table(t.ctx), RendererScene::options(path));
+    CHECK_FALSE(rebuilt.timings().pipeline_cached);
+    rebuilt.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+    CHECK(near(pixel(rebuilt.render(width, height), where(renderer_scene::ball_centres[0])),
+               bytes(renderer_scene::ball_colours[0])));
+    CHECK(vk::PipelineCache(t.ctx, path).loaded());  // saved again, valid
+  }
+}
+
+TEST_CASE("renderer with unbound geometry fails at build naming the missing pairs") {
+  TestContext t;
+  RendererScene s;
+  CHECK_THROWS_WITH_AS(s.table(t.ctx, false), doctest::Contains("ball"), SceneError);
+}
