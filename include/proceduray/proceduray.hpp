@@ -11,6 +11,7 @@
 
 #include <proceduray/image/png.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/scene/sbt_printer.hpp>
 #include <proceduray/scene/shader_table.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/shader.hpp>
