@@ -123,16 +123,17 @@ inline glm::mat4 placement_matrix(Placement p) {
   return glm::scale(glm::translate(glm::mat4(1.0f), p.translation), glm::vec3(p.scale));
 }
 
-/// Local AABBs: Pac-man is the unit sphere; the Julia set (c near (-0.2, 0.6, 0.2, 0.2)) and
-/// the Mandelbulb fit in theirs with a margin (checked in tests/shaders).
+/// Local AABBs: Pac-man is the unit sphere; the Julia set (c near (-0.2, 0.6, 0.2, 0.2), within
+/// about 1.2 of the origin, lowest y about -1.02) and the Mandelbulb (within about 1.07) fit in
+/// theirs with a margin (checked in tests/shaders). Placements put each object's lowest point on y = 0.
 inline constexpr pr::Aabb pacman_aabb{glm::vec3(-1.0f), glm::vec3(1.0f)};
 inline constexpr pr::Aabb julia_aabb{glm::vec3(-1.5f), glm::vec3(1.5f)};
 inline constexpr pr::Aabb mandelbulb_aabb{glm::vec3(-1.25f), glm::vec3(1.25f)};
 /// Side by side on the plane, left to right: Pac-man 0, Julia, Mandelbulb, Pac-man 1.
 inline constexpr std::array<Placement, 2> pacman_placements{Placement{{-3.75f, 0.9f, 0.0f}, 0.9f},
                                                             Placement{{3.75f, 0.9f, 0.0f}, 0.9f}};
-inline constexpr Placement julia_placement{{-1.25f, 0.85f, 0.0f}, 0.75f};
-inline constexpr Placement mandelbulb_placement{{1.25f, 0.95f, 0.0f}, 0.9f};
+inline constexpr Placement julia_placement{{-1.25f, 0.87f, 0.0f}, 0.85f};
+inline constexpr Placement mandelbulb_placement{{1.25f, 1.02f, 0.0f}, 0.95f};
 /// The ground: y = 0, x and z from plane_min to plane_max (world space).
 inline constexpr glm::vec2 plane_min{-12.0f, -10.0f}, plane_max{12.0f, 10.0f};
 
