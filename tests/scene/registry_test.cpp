@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <string>
+
 using namespace proceduray;
 
 TEST_CASE("registry keeps registration order and finds by id") {
@@ -34,4 +36,24 @@ TEST_CASE("registry errors name operation id and fix") {
   CHECK_THROWS_WITH_AS(r.at(3u, "Owner::get"), doctest::Contains("thing #3 is not registered (3 thing entities)"),
                        UnknownIdError);
   CHECK(r.size() == 3);
+}
+
+TEST_CASE("registry finds every id after its index grows") {
+  Registry<int> r("thing");
+  for (int i = 0; i < 5000; ++i) CHECK(r.add("op", "id" + std::to_string(i), i) == static_cast<std::uint32_t>(i));
+  CHECK(r.size() == 5000);
+  int found = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const int* value = r.find("id" + std::to_string(i));
+    if (value && *value == i) ++found;
+  }
+  CHECK(found == 5000);
+  CHECK(r.find("id5000") == nullptr);
+  CHECK(r.find("") == nullptr);
+  CHECK_THROWS_WITH_AS(r.add("op", "id4321", 0), doctest::Contains("(already thing #4321)"), DuplicateIdError);
+  Registry<int> reserved("thing");
+  reserved.reserve(100);
+  CHECK(reserved.find("x") == nullptr);
+  reserved.add("op", "x", 7);
+  CHECK(*reserved.find("x") == 7);
 }

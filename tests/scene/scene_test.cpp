@@ -142,3 +142,29 @@ TEST_CASE("scene geometries sharing a BLAS get consecutive geometry indices") {
   other.blas = "Shared";
   CHECK_THROWS_WITH_AS(s.add_geometry("C", other), doctest::Contains("instances belong to the BLAS"), InvalidGeometryError);
 }
+
+TEST_CASE("scene add_geometry that throws leaves the scene unchanged") {
+  Scene s;
+  GeometryDesc a = GeometryDesc::procedural({Aabb{}}, {identity_transform(), identity_transform()});
+  a.blas = "Shared";
+  s.add_geometry("A", a);
+  s.add_geometry("Own", GeometryDesc::procedural({Aabb{}}));
+  // A duplicate id, into a new BLAS and into the shared one: no BLAS, geometry or instance appears.
+  CHECK_THROWS_AS(s.add_geometry("Own", GeometryDesc::procedural({Aabb{}})), DuplicateIdError);
+  GeometryDesc again = GeometryDesc::procedural({Aabb{}}, {});
+  again.blas = "Shared";
+  CHECK_THROWS_AS(s.add_geometry("A", again), DuplicateIdError);
+  GeometryDesc fresh = GeometryDesc::procedural({Aabb{}}, {identity_transform()});
+  fresh.blas = "Fresh";
+  CHECK_THROWS_AS(s.add_geometry("Own", fresh), DuplicateIdError);
+  CHECK(s.geometries().size() == 2);
+  CHECK(s.blases().size() == 2);
+  CHECK(s.blases()[0].geometries.size() == 1);
+  CHECK(s.instance_count() == 3);
+  // The BLAS name of the failed call is still free.
+  fresh.blas = "Fresh";
+  const GeometryId f = s.add_geometry("F", fresh);
+  CHECK(s.blas_of(f).name == "Fresh");
+  CHECK(s.blas_of(f).shared);
+  CHECK(s.blases().size() == 3);
+}

@@ -87,6 +87,12 @@ inline std::string vec_string(const glm::vec3& v) {
   return std::string("(") + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
 }
 inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+/// Finite bounds with min <= max on every axis (what validate(Aabb) checks).
+inline bool valid_box(const Aabb& box) {
+  return finite(box.min) && finite(box.max) && box.min.x <= box.max.x && box.min.y <= box.max.y &&
+         box.min.z <= box.max.z;
+}
 }  // namespace detail
 
 /// Throws InvalidGeometryError for an AABB with min > max or non-finite bounds.
@@ -102,63 +108,93 @@ inline void validate(const Aabb& box, std::string_view where) {
   }
 }
 
-/// Throws InvalidGeometryError for a non-finite or singular transform.
-inline void validate(const InstanceTransform& t, std::string_view where) {
+namespace detail {
+/// What validate(InstanceTransform) finds: the first non-finite element (row -1: none) and the determinant.
+struct TransformCheck {
+  int row = -1, column = -1;
+  double determinant = 0.0;
+  bool singular = false;
+};
+inline TransformCheck check_transform(const InstanceTransform& t) {
+  TransformCheck out;
   float largest = 0.0f;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 4; ++c) {
       if (!std::isfinite(t[r][c])) {
-        throw InvalidGeometryError(std::string(where) + " has a non-finite element at row " + std::to_string(r) +
-                                   " column " + std::to_string(c) + " (" + std::to_string(t[r][c]) +
-                                   "); give a finite affine transform");
+        out.row = r;
+        out.column = c;
+        return out;
       }
       if (c < 3) largest = std::max(largest, std::fabs(t[r][c]));
     }
   }
   const glm::mat3 linear{glm::vec3(t[0]), glm::vec3(t[1]), glm::vec3(t[2])};
-  const double det = glm::determinant(linear);
+  out.determinant = glm::determinant(linear);
   const double scale = double{largest} * largest * largest;
-  if (!(std::fabs(det) > 1e-9 * scale) || largest == 0.0f) {
-    throw InvalidGeometryError(std::string(where) + " is singular (determinant " + std::to_string(det) +
+  out.singular = !(std::fabs(out.determinant) > 1e-9 * scale) || largest == 0.0f;
+  return out;
+}
+/// Finite and invertible: validate(InstanceTransform) would not throw.
+inline bool valid_transform(const InstanceTransform& t) {
+  const TransformCheck c = check_transform(t);
+  return c.row < 0 && !c.singular;
+}
+}  // namespace detail
+
+/// Throws InvalidGeometryError for a non-finite or singular transform.
+inline void validate(const InstanceTransform& t, std::string_view where) {
+  const detail::TransformCheck c = detail::check_transform(t);
+  if (c.row >= 0) {
+    throw InvalidGeometryError(std::string(where) + " has a non-finite element at row " + std::to_string(c.row) +
+                               " column " + std::to_string(c.column) + " (" + std::to_string(t[c.row][c.column]) +
+                               "); give a finite affine transform");
+  }
+  if (c.singular) {
+    throw InvalidGeometryError(std::string(where) + " is singular (determinant " + std::to_string(c.determinant) +
                                "); an instance needs an invertible 3x3 part: check for a zero scale");
   }
 }
 
 /// Throws InvalidGeometryError for an empty or out-of-range mesh, no AABBs, a bad AABB or transform.
 inline void validate(const GeometryDesc& desc, std::string_view id, std::string_view operation) {
-  const std::string where = std::string(operation) + ": geometry \"" + std::string(id) + "\"";
+  // Messages are built only on failure: registering a million geometries must not format a million strings.
+  auto place = [&] { return std::string(operation) + ": geometry \"" + std::string(id) + "\""; };
   if (desc.kind == GeometryKind::procedural) {
     if (desc.aabbs.empty()) {
-      throw InvalidGeometryError(where + " is procedural with no AABB; give it at least one box");
+      throw InvalidGeometryError(place() + " is procedural with no AABB; give it at least one box");
     }
     if (!desc.mesh.vertices.empty() || !desc.mesh.indices.empty()) {
-      throw InvalidGeometryError(where + " is procedural but has a triangle mesh; use kind = triangles or drop the mesh");
+      throw InvalidGeometryError(place() + " is procedural but has a triangle mesh; use kind = triangles or drop the mesh");
     }
-    for (std::size_t i = 0; i < desc.aabbs.size(); ++i) validate(desc.aabbs[i], where + " AABB " + std::to_string(i));
+    for (std::size_t i = 0; i < desc.aabbs.size(); ++i) {
+      if (!detail::valid_box(desc.aabbs[i])) validate(desc.aabbs[i], place() + " AABB " + std::to_string(i));
+    }
   } else {
     const TriangleMesh& m = desc.mesh;
     if (m.indices.empty() || m.indices.size() % 3 != 0) {
-      throw InvalidGeometryError(where + " has " + std::to_string(m.indices.size()) +
+      throw InvalidGeometryError(place() + " has " + std::to_string(m.indices.size()) +
                                  " indices; a triangle list needs a non-zero multiple of 3");
     }
     if (!desc.aabbs.empty()) {
-      throw InvalidGeometryError(where + " is triangles but has AABBs; use kind = procedural or drop the AABBs");
+      throw InvalidGeometryError(place() + " is triangles but has AABBs; use kind = procedural or drop the AABBs");
     }
     for (std::size_t i = 0; i < m.indices.size(); ++i) {
       if (m.indices[i] >= m.vertices.size()) {
-        throw InvalidGeometryError(where + " index " + std::to_string(i) + " is " + std::to_string(m.indices[i]) +
+        throw InvalidGeometryError(place() + " index " + std::to_string(i) + " is " + std::to_string(m.indices[i]) +
                                    " but there are " + std::to_string(m.vertices.size()) + " vertices; fix the index buffer");
       }
     }
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {
       if (!detail::finite(m.vertices[i])) {
-        throw InvalidGeometryError(where + " vertex " + std::to_string(i) + " is " + detail::vec_string(m.vertices[i]) +
+        throw InvalidGeometryError(place() + " vertex " + std::to_string(i) + " is " + detail::vec_string(m.vertices[i]) +
                                    "; give finite positions");
       }
     }
   }
   for (std::size_t i = 0; i < desc.instances.size(); ++i) {
-    validate(desc.instances[i], where + " instance " + std::to_string(i) + " transform");
+    if (!detail::valid_transform(desc.instances[i])) {
+      validate(desc.instances[i], place() + " instance " + std::to_string(i) + " transform");
+    }
   }
 }
 

@@ -8,11 +8,12 @@
 // The Scene holds one Registry per entity kind; ids are indices into it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -33,14 +34,17 @@ class Registry {
       throw SceneError(std::string(operation) + ": empty " + m_kind + " id; give every " + m_kind +
                        " a non-empty name");
     }
-    const auto index = static_cast<std::uint32_t>(m_entities.size());
-    auto [it, inserted] = m_index.try_emplace(id, index);
-    if (!inserted) {
+    if (2 * (m_names.size() + 1) > m_slots.size()) rehash(std::max<std::size_t>(16, 2 * m_slots.size()));
+    const std::uint32_t tag = tag_of(id);
+    Slot& slot = m_slots[probe(id, tag)];
+    if (slot.index != empty_slot) {
       throw DuplicateIdError(std::string(operation) + ": duplicate " + m_kind + " id \"" + id + "\" (already " +
-                             m_kind + " #" + std::to_string(it->second) + "); choose a unique id");
+                             m_kind + " #" + std::to_string(slot.index) + "); choose a unique id");
     }
-    m_names.push_back(std::move(id));
+    const auto index = static_cast<std::uint32_t>(m_entities.size());
     m_entities.push_back(std::move(entity));
+    m_names.push_back(std::move(id));
+    slot = Slot{tag, index};
     return index;
   }
 
@@ -49,10 +53,11 @@ class Registry {
     const std::uint32_t* index = find_index(id);
     return index ? &m_entities[*index] : nullptr;
   }
-  /// The index of `id`, or nullptr.
+  /// The index of `id`, or nullptr; the pointer is valid until the next add().
   const std::uint32_t* find_index(std::string_view id) const {
-    auto it = m_index.find(std::string(id));
-    return it == m_index.end() ? nullptr : &it->second;
+    if (m_slots.empty()) return nullptr;
+    const Slot& slot = m_slots[probe(id, tag_of(id))];
+    return slot.index == empty_slot ? nullptr : &slot.index;
   }
   /// The index of `id`; throws UnknownIdError naming `operation` and the nearest known ids.
   std::uint32_t index_of(std::string_view id, std::string_view operation = "Registry::at") const {
@@ -98,14 +103,47 @@ class Registry {
   void reserve(std::size_t count) {
     m_entities.reserve(count);
     m_names.reserve(count);
-    m_index.reserve(count);
+    std::size_t slots = 16;
+    while (slots < 2 * count) slots *= 2;
+    if (slots > m_slots.size()) rehash(slots);
   }
 
  private:
+  static constexpr std::uint32_t empty_slot = 0xFFFF'FFFFu;
+  /// One entry of the id index: open addressing, linear probing, at most half full. The ids
+  /// live once, in m_names; a slot holds 32 bits of the id's hash and the entity's index.
+  struct Slot {
+    std::uint32_t tag = 0;
+    std::uint32_t index = empty_slot;
+  };
+
+  static std::uint32_t tag_of(std::string_view id) {
+    const std::uint64_t h = std::hash<std::string_view>{}(id);
+    return static_cast<std::uint32_t>(h ^ (h >> 32));
+  }
+  /// The slot holding `id`, or the empty slot where it would go.
+  std::size_t probe(std::string_view id, std::uint32_t tag) const {
+    const std::size_t mask = m_slots.size() - 1;
+    for (std::size_t i = tag & mask;; i = (i + 1) & mask) {
+      const Slot& slot = m_slots[i];
+      if (slot.index == empty_slot || (slot.tag == tag && m_names[slot.index] == id)) return i;
+    }
+  }
+  void rehash(std::size_t slots) {
+    std::vector<Slot> old = std::exchange(m_slots, std::vector<Slot>(slots));
+    const std::size_t mask = slots - 1;
+    for (const Slot& slot : old) {
+      if (slot.index == empty_slot) continue;
+      std::size_t i = slot.tag & mask;
+      while (m_slots[i].index != empty_slot) i = (i + 1) & mask;
+      m_slots[i] = slot;
+    }
+  }
+
   std::string m_kind;
   std::vector<Entity> m_entities;
   std::vector<std::string> m_names;
-  std::unordered_map<std::string, std::uint32_t> m_index;
+  std::vector<Slot> m_slots;  ///< id -> index; size a power of two (or 0 before the first add)
 };
 
 }  // namespace proceduray

@@ -85,26 +85,21 @@ class Scene {
   GeometryId add_geometry(std::string id, GeometryDesc desc) {
     constexpr std::string_view op = "Scene::add_geometry";
     validate(desc, id, op);
-    if (m_geometries.find(id)) m_geometries.add(op, id, Geometry{});  // throws DuplicateIdError
-    std::uint32_t blas_index = 0;
-    if (desc.blas.empty()) {
-      blas_index = static_cast<std::uint32_t>(m_blases.size());
-      m_blases.push_back(Blas{id, desc.kind, {}, std::move(desc.instances), false});
-    } else {
-      auto [it, inserted] = m_shared_blas.try_emplace(desc.blas, static_cast<std::uint32_t>(m_blases.size()));
-      blas_index = it->second;
-      if (inserted) {
-        m_blases.push_back(Blas{desc.blas, desc.kind, {}, std::move(desc.instances), true});
-      } else {
-        Blas& blas = m_blases[blas_index];
+    // Every check comes before the first change, so a throw leaves the scene as it was.
+    auto blas_index = static_cast<std::uint32_t>(m_blases.size());
+    const bool shared = !desc.blas.empty();
+    bool new_blas = true;
+    if (shared) {
+      if (auto it = m_shared_blas.find(desc.blas); it != m_shared_blas.end()) {
+        blas_index = it->second;
+        new_blas = false;
+        const Blas& blas = m_blases[blas_index];
         if (blas.kind != desc.kind) {
           throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" is " + to_string(desc.kind) +
                                      " but BLAS \"" + blas.name + "\" holds " + to_string(blas.kind) +
                                      " geometry; a BLAS holds one kind: name another BLAS");
         }
-        if (blas.instances.empty()) {
-          blas.instances = std::move(desc.instances);
-        } else if (!desc.instances.empty() && desc.instances != blas.instances) {
+        if (!blas.instances.empty() && !desc.instances.empty() && desc.instances != blas.instances) {
           throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" declares " +
                                      std::to_string(desc.instances.size()) + " instances that differ from the " +
                                      std::to_string(blas.instances.size()) + " of its BLAS \"" + blas.name +
@@ -112,11 +107,20 @@ class Scene {
         }
       }
     }
+    const GeometryKind kind = desc.kind;
+    std::vector<InstanceTransform> instances = std::move(desc.instances);
     desc.instances.clear();
-    Blas& blas = m_blases[blas_index];
-    const auto geometry_index = static_cast<std::uint32_t>(blas.geometries.size());
+    std::string blas_name = !new_blas ? std::string() : shared ? desc.blas : id;
+    const auto geometry_index = new_blas ? 0u : static_cast<std::uint32_t>(m_blases[blas_index].geometries.size());
     const GeometryId gid(m_geometries.add(op, std::move(id), Geometry{std::move(desc), blas_index, geometry_index}));
-    blas.geometries.push_back(gid);
+    if (new_blas) {
+      if (shared) m_shared_blas.emplace(blas_name, blas_index);
+      m_blases.push_back(Blas{std::move(blas_name), kind, {gid}, std::move(instances), shared});
+    } else {
+      Blas& blas = m_blases[blas_index];
+      if (blas.instances.empty()) blas.instances = std::move(instances);
+      blas.geometries.push_back(gid);
+    }
     return gid;
   }
 
