@@ -147,7 +147,7 @@ inline constexpr MaterialRecord mandelbulb_material{{0.35f, 0.85f, 0.45f}, 0.2f,
 
 /// Camera framing all four objects, default light and knobs, at `time` seconds.
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
-  return {pr::look_at({0.0f, 2.8f, 9.0f}, {0.0f, 0.8f, 0.0f}, 50.0f, width, height),
+  return {pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
           {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
           256, 1e-4f, 0.5f, 1.0f, 1.0f, 10, 8, 3, flag_shadows | flag_reflections};
 }
