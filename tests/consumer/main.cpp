@@ -2,10 +2,29 @@
 //   consumer OUT.png   -> exit 0 when the sphere is hit at the centre and the corner is background
 #include <proceduray/proceduray.hpp>
 
+#include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <string>
 
+namespace pr = proceduray;
 namespace vk = proceduray::vk;
+
+namespace consumer {
+// What crosses to the shaders, declared once in C++; the GLSL side is generated from it.
+/// The ray's payload: the colour it brings back.
+struct Colour {
+  glm::vec3 rgb;
+};
+PROCEDURAY_STRUCT(Colour, scalar, rgb);
+/// Hit record data: the sphere's colour.
+struct HitRecord {
+  glm::vec4 colour;
+};
+PROCEDURAY_STRUCT(HitRecord, scalar, colour);
+using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<>, pr::RootArguments<HitRecord>,
+                                      pr::Attributes<>>;
+}  // namespace consumer
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -24,44 +43,50 @@ int main(int argc, char** argv) {
     set.write(0, tlas);
     set.write(1, image.view());
 
-    const char* head = "#version 460\n#extension GL_EXT_ray_tracing : require\n";
-    const std::string rgen = std::string(head) +
+    using consumer::Colour;
+    using consumer::HitRecord;
+    using consumer::Interface;
+    const std::string declarations = pr::glsl_declarations<Interface>();
+    const std::string rgen =
+        "#version 460\n"
         "layout(binding = 0) uniform accelerationStructureEXT tlas;\n"
         "layout(binding = 1, rgba8) uniform writeonly image2D image;\n"
-        "layout(location = 0) rayPayloadEXT vec3 c;\n"
         "void main() {\n"
         "  vec2 p = (vec2(gl_LaunchIDEXT.xy) + 0.5) / vec2(gl_LaunchSizeEXT.xy) * 4.0 - 2.0;\n"
         "  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, 0, vec3(p, 5.0), 0.0, vec3(0, 0, -1), 100.0, 0);\n"
-        "  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(c, 1));\n"
+        "  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(payload.rgb, 1));\n"
         "}\n";
-    const std::string miss = std::string(head) + "layout(location = 0) rayPayloadInEXT vec3 c;\nvoid main() { c = vec3(0); }\n";
-    const std::string hit = std::string(head) + "layout(location = 0) rayPayloadInEXT vec3 c;\n"
-        "layout(shaderRecordEXT) buffer R { vec4 colour; };\nvoid main() { c = colour.rgb; }\n";
-    const std::string isect = std::string(head) + "#include \"primitives/sphere.glsl\"\n"
+    const std::string miss = "#version 460\nvoid main() { payload.rgb = vec3(0); }\n";
+    const std::string hit = "#version 460\nvoid main() { payload.rgb = record.colour.rgb; }\n";
+    const std::string isect = "#version 460\n#include \"primitives/sphere.glsl\"\n"
         "void main() { float a, b; if (ray_sphere(gl_ObjectRayOriginEXT, gl_ObjectRayDirectionEXT, vec3(0), 1.0, a, b))"
         " reportIntersectionEXT(a, 0u); }\n";
     vk::PipelineDesc desc;
-    auto add = [&](vk::ShaderStage s, const std::string& code) {
-      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "consumer", .code = code}));
+    auto add = [&](vk::ShaderStage s, const std::string& code, const std::string& stage_declarations) {
+      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "consumer", .code = code,
+                                                  .preamble = declarations + stage_declarations}));
     };
-    const auto r = add(vk::ShaderStage::raygen, rgen);
-    const auto m = add(vk::ShaderStage::miss, miss);
-    const auto h = add(vk::ShaderStage::closest_hit, hit);
-    const auto i = add(vk::ShaderStage::intersection, isect);
+    const auto r = add(vk::ShaderStage::raygen, rgen, pr::glsl_ray_payload<Interface, Colour>("payload"));
+    const auto m = add(vk::ShaderStage::miss, miss, pr::glsl_ray_payload_in<Interface, Colour>("payload"));
+    const auto h = add(vk::ShaderStage::closest_hit, hit,
+                       pr::glsl_ray_payload_in<Interface, Colour>("payload") +
+                           pr::glsl_shader_record<Interface, HitRecord>("record"));
+    const auto i = add(vk::ShaderStage::intersection, isect, "");
     desc.groups = {vk::ShaderGroup::general_shader(r), vk::ShaderGroup::general_shader(m),
                    vk::ShaderGroup::procedural(h, i)};
     desc.set_layouts = {set.layout()};
     const vk::Pipeline pipeline(ctx, desc);
 
-    const float colour[4] = {0.0f, 1.0f, 0.0f, 1.0f};
-    const auto layout = proceduray::layout_sbt(ctx.sbt_properties(), {{{1, 0}, {1, 0}, {1, sizeof colour}, {}}});
-    const vk::RecordWrite records[] = {{proceduray::SbtRegionKind::raygen, 0, 0},
-                                     {proceduray::SbtRegionKind::miss, 0, 1},
-                                     {proceduray::SbtRegionKind::hit, 0, 2, vk::bytes_of(colour)}};
+    const HitRecord green{glm::vec4(0.0f, 1.0f, 0.0f, 1.0f)};
+    const auto layout = pr::layout_sbt(ctx.sbt_properties(),
+                                       {{{1, 0}, {1, 0}, {1, std::uint32_t{sizeof(HitRecord)}}, {}}});
+    const vk::RecordWrite records[] = {{pr::SbtRegionKind::raygen, 0, 0},
+                                       {pr::SbtRegionKind::miss, 0, 1},
+                                       {pr::SbtRegionKind::hit, 0, 2, Interface::record_data(green)}};
     const vk::SbtBuffer sbt(ctx, pipeline, layout, records);
     vk::trace(ctx, pipeline, set, sbt, 64, 64);
     const auto rgba = image.read();
-    proceduray::write_png(argv[1], 64, 64, rgba);
+    pr::write_png(argv[1], 64, 64, rgba);
 
     const std::size_t centre = (32 * 64 + 32) * 4;
     const bool hit_centre = rgba[centre + 1] == 255 && rgba[centre] == 0;

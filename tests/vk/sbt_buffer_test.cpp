@@ -1,12 +1,23 @@
 #include "test_context.hpp"
 
+#include <proceduray/shader/categories.hpp>
+#include <proceduray/shader/field_list.hpp>
+#include <proceduray/shader/glsl_codegen.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 
 #include <cstring>
+#include <string>
 
 using namespace proceduray;
 
 namespace {
+
+/// Hit record data: one colour; its shaderRecordEXT block is generated from this struct.
+struct ColourRecord {
+  glm::vec4 colour;
+};
+PROCEDURAY_STRUCT(ColourRecord, std430, colour);
+using Interface = ShaderInterface<Payload<>, RootComponent<>, RootArguments<ColourRecord>, Attributes<>>;
 
 constexpr const char* raygen = "#version 460\n#extension GL_EXT_ray_tracing : require\nvoid main() {}\n";
 constexpr const char* miss =
@@ -14,7 +25,7 @@ constexpr const char* miss =
     "void main() { p = vec4(0); }\n";
 constexpr const char* hit =
     "#version 460\n#extension GL_EXT_ray_tracing : require\nlayout(location = 0) rayPayloadInEXT vec4 p;\n"
-    "layout(shaderRecordEXT, std430) buffer R { vec4 c; };\nvoid main() { p = c; }\n";
+    "void main() { p = record.colour; }\n";
 constexpr const char* isect =
     "#version 460\n#extension GL_EXT_ray_tracing : require\nvoid main() { reportIntersectionEXT(1.0, 0u); }\n";
 
@@ -22,7 +33,12 @@ constexpr const char* isect =
 vk::Pipeline small_pipeline(const vk::Context& ctx) {
   vk::PipelineDesc desc;
   auto add = [&](vk::ShaderStage s, const char* code) {
-    return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "sbt_test", .code = code}));
+    std::string declarations;
+    if (s == vk::ShaderStage::closest_hit) {
+      declarations = glsl_declarations<Interface>() + glsl_shader_record<Interface, ColourRecord>("record");
+    }
+    return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "sbt_test", .code = code,
+                                                .preamble = std::move(declarations)}));
   };
   const auto r = add(vk::ShaderStage::raygen, raygen);
   const auto m = add(vk::ShaderStage::miss, miss);
@@ -38,11 +54,11 @@ vk::Pipeline small_pipeline(const vk::Context& ctx) {
 TEST_CASE("shader binding table writes handles and data where the layout says") {
   TestContext t;
   const auto pipeline = small_pipeline(t.ctx);
-  const auto layout = layout_sbt(t.ctx.sbt_properties(), {{{1, 0}, {2, 0}, {3, 16}, {}}});
-  const glm::vec4 colours[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
+  const auto layout = layout_sbt(t.ctx.sbt_properties(), {{{1, 0}, {2, 0}, {3, std::uint32_t{sizeof(ColourRecord)}}, {}}});
+  const ColourRecord colours[3] = {{{1, 0, 0, 1}}, {{0, 1, 0, 1}}, {{0, 0, 1, 1}}};
   std::vector<vk::RecordWrite> records{{SbtRegionKind::raygen, 0, 0}, {SbtRegionKind::miss, 0, 1},
                                      {SbtRegionKind::miss, 1, 1}};
-  for (std::uint32_t i = 0; i < 3; ++i) records.push_back({SbtRegionKind::hit, i, 2, vk::bytes_of(colours[i])});
+  for (std::uint32_t i = 0; i < 3; ++i) records.push_back({SbtRegionKind::hit, i, 2, Interface::record_data(colours[i])});
   const vk::SbtBuffer sbt(t.ctx, pipeline, layout, records);
 
   const auto bytes = sbt.bytes();
