@@ -69,10 +69,11 @@ struct SceneConstants {
   std::uint32_t mandelbulb_iterations;  ///< maximum of the animated count; default 8
   std::uint32_t max_depth;       ///< radiance segments, primary included (3: two reflections); <= max_depth_limit
   std::uint32_t flags;           ///< flag_* bits; default shadows | reflections
+  float min_weight;              ///< reflections that would add less than this to the pixel are not traced; default 0.05
 };
 PROCEDURAY_STRUCT(SceneConstants, scalar, camera, light_position, ambient, light_colour, time, sky_colour, max_steps,
                   epsilon, footprint_scale, step_scale, over_relaxation, julia_iterations, mandelbulb_iterations,
-                  max_depth, flags);
+                  max_depth, flags, min_weight);
 
 /// The radiance ray's payload (location 0).
 struct RadiancePayload {
@@ -80,8 +81,9 @@ struct RadiancePayload {
   std::uint32_t depth;      ///< 0 for primary rays
   std::uint32_t object_id;  ///< ObjectId of the hit (sky_id on a miss)
   float steps;              ///< marching steps of the hit (0 for analytic surfaces)
+  float weight;             ///< how much this ray's colour counts in the pixel (1 for primary rays)
 };
-PROCEDURAY_STRUCT(RadiancePayload, scalar, colour, depth, object_id, steps);
+PROCEDURAY_STRUCT(RadiancePayload, scalar, colour, depth, object_id, steps, weight);
 
 /// The shadow ray's payload (location 1): preset to 1, the shadow miss sets 0.
 struct ShadowPayload {
@@ -149,7 +151,7 @@ inline constexpr MaterialRecord mandelbulb_material{{0.35f, 0.85f, 0.45f}, 0.2f,
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
   return {pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
           {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-          256, 1e-4f, 0.5f, 1.0f, 1.0f, 10, 8, 3, flag_shadows | flag_reflections};
+          256, 1e-4f, 0.5f, 1.0f, 1.0f, 10, 8, 3, flag_shadows | flag_reflections, 0.05f};
 }
 
 namespace detail {

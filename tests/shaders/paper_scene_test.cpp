@@ -63,10 +63,10 @@ TEST_CASE("paper types fit the pipeline limits") {
   static_assert(paper::Interface::max_attribute_size <= proceduray::max_hit_attribute_size);
   CHECK(paper::Interface::max_attribute_size == 16);
   CHECK(paper::Interface::max_payload_size == sizeof(paper::RadiancePayload));
-  CHECK(sizeof(paper::RadiancePayload) == 24);
+  CHECK(sizeof(paper::RadiancePayload) == 28);  // colour, depth, object id, steps, weight
   CHECK(sizeof(paper::ShadowPayload) == 4);
   CHECK(paper::Interface::max_root_arguments_size == 48);
-  CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 12 + 4 * 8);
+  CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 12 + 4 * 9);  // camera, three vec3+float rows, nine knobs
   CHECK(paper::Interface::payload_location<paper::RadiancePayload>() == paper::radiance_ray);
   CHECK(paper::Interface::payload_location<paper::ShadowPayload>() == paper::shadow_ray);
   CHECK(paper::max_recursion_depth == paper::max_depth_limit + 1);

@@ -17,17 +17,24 @@
 /// 1 when nothing lies between origin and origin + dist * dir, else 0.
 float light_visibility(vec3 origin, vec3 dir, float dist) {
   shadow.occluded = 1u;  // stays 1 unless the shadow miss shader runs
+  // Started gl_HitTEXT behind the surface (tmin skips that stretch), so t, and the marching
+  // threshold that grows with it, counts the whole path from the eye: the pixel's true footprint.
+  float path = gl_HitTEXT;
   traceRayEXT(tlas, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT,
-              0xFF, shadow_ray, ray_count, shadow_ray, origin, 0.0, dir, dist, 1);
+              0xFF, shadow_ray, ray_count, shadow_ray, origin - path * dir, path, dir, path + dist, 1);
   return shadow.occluded != 0u ? 0.0 : 1.0;
 }
 
-/// The colour a radiance ray from origin along dir brings back, one level deeper.
-vec3 reflected_colour(vec3 origin, vec3 dir) {
+/// The colour a radiance ray from origin along dir brings back, one level deeper, counting
+/// `weight` in the pixel.
+vec3 reflected_colour(vec3 origin, vec3 dir, float weight) {
   RadiancePayload saved = payload;
   payload.colour = vec3(0.0);
   payload.depth = saved.depth + 1u;
-  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, radiance_ray, ray_count, radiance_ray, origin, 0.0, dir, ray_far, 0);
+  payload.weight = weight;
+  float path = gl_HitTEXT;  // as in light_visibility: t counts the path from the eye
+  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, radiance_ray, ray_count, radiance_ray, origin - path * dir, path, dir,
+              path + ray_far, 0);
   vec3 colour = payload.colour;
   payload = saved;
   return colour;
@@ -48,8 +55,10 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float offset) {
                 visible * phong(albedo, n, l, v, constants.light_colour, record.diffuse, record.specular, record.shininess);
   uint depth_max = min(constants.max_depth, max_depth_limit);
   if ((constants.flags & flag_reflections) != 0u && record.reflectance > 0.0 && payload.depth + 1u < depth_max) {
+    // Model no more than the pixel shows: a reflection adding under min_weight is not traced.
     float f = schlick_fresnel(record.reflectance, dot(n, v));
-    colour = mix(colour, reflected_colour(origin, reflect(-v, n)), f);
+    float weight = payload.weight * f;
+    if (weight >= constants.min_weight) colour = mix(colour, reflected_colour(origin, reflect(-v, n), weight), f);
   }
   return colour;
 }
