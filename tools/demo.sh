@@ -4,7 +4,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${PROCEDURAY_BUILD_DIR:-$root/build}/cmake
-demo=01_hello_sphere
+demo=02_paper_scene
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" --target "$demo" -j"$(nproc)" >/dev/null
 mkdir -p "$root/out"
