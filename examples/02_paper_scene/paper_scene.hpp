@@ -16,7 +16,7 @@
 
 namespace paper {
 
-inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2};
+inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
 class PaperScene {
  public:
@@ -34,8 +34,9 @@ class PaperScene {
     m_pacman = add_procedural("pacman", pacman_aabb, pacmen);
     m_julia = add_procedural("julia", julia_aabb, {julia_placement});
     m_mandelbulb = add_procedural("mandelbulb", mandelbulb_aabb, {mandelbulb_placement});
-    m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0},
-                                                         {pr::BindingKind::storage_image, 1}, constants_slot}});
+    m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                                         {pr::BindingKind::storage_image, 1, 0, 1, "image"},
+                                                         constants_slot}});
   }
 
   /// Pass one (entries) and two (the table), for a device's limits.
@@ -80,11 +81,10 @@ class PaperScene {
   std::optional<pr::ShaderBindingTable> m_sbt;
 };
 
-/// Shaders from this example's folder, each with its generated declarations.
+/// Shaders from this example's folder, with the scene's constants after the derived declarations.
 inline pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) {
   return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-          .declarations = [](pr::ShaderStage, const std::string& name) { return declarations_for(name); },
-          .pipeline_cache = std::move(cache)};
+          .extra_declarations = extra_declarations(), .pipeline_cache = std::move(cache)};
 }
 
 }  // namespace paper

@@ -2,9 +2,7 @@
 // generated declarations per shader, and the scene's fixed numbers (AABBs, placements).
 //
 //   paper::SceneConstants constants = paper::default_constants(1024, 768, time);   // binding 2
-//   std::string preamble = paper::declarations_for("julia.rint");                  // per shader
-//   vk::compile_glsl({.stage = ..., .name = path, .code = read_text_file(path), .preamble = preamble});
-//   paper::Interface::record_data(paper::julia_material);                          // hit record bytes
+//   // each shader compiles with glsl_for(table, stage, name) + paper::extra_declarations()
 //
 // Conventions the shaders in shaders/ (next to this file) rely on:
 //   set 0: binding 0 TLAS (raygen, closest hit); binding 1 rgba8 storage image (raygen);
@@ -29,7 +27,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
-#include <charconv>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -154,81 +151,19 @@ inline SceneConstants default_constants(std::uint32_t width, std::uint32_t heigh
           256, 1e-4f, 0.5f, 1.0f, 1.0f, 10, 8, 3, flag_shadows | flag_reflections, 0.05f};
 }
 
-namespace detail {
-inline std::string glsl_vec3(glm::vec3 v) {
-  std::string out = "vec3(";
-  for (int i = 0; i < 3; ++i) {
-    char buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v[i]).ptr;
-    out += std::string(buffer, end) + (std::string_view(buffer, end).find_first_of(".e") == std::string_view::npos ? ".0" : "") +
-           (i < 2 ? ", " : ")");
-  }
+/// What the shaders need beyond the declarations the scene derives (glsl_for): the C++
+/// constants above as GLSL consts (flag bits, depth limit, local AABBs).
+inline std::string extra_declarations() {
+  std::string out = pr::glsl_const("flag_shadows", flag_shadows) + pr::glsl_const("flag_reflections", flag_reflections) +
+                    pr::glsl_const("flag_object_ids", flag_object_ids) + pr::glsl_const("max_depth_limit", max_depth_limit);
+  const std::pair<std::string, pr::Aabb> boxes[] = {{"pacman", pacman_aabb}, {"julia", julia_aabb}, {"mandelbulb", mandelbulb_aabb}};
+  for (const auto& [name, box] : boxes) out += pr::glsl_const(name + "_aabb_min", box.min) + pr::glsl_const(name + "_aabb_max", box.max);
   return out;
-}
-inline std::string glsl_uint(std::string_view name, std::uint32_t value) {
-  return "const uint " + std::string(name) + " = " + std::to_string(value) + "u;\n";
-}
-}  // namespace detail
-
-/// Declarations every stage but the shadow miss shares: structs, the uniform (`constants`), and
-/// the C++ constants above as GLSL consts (ray indices, flag bits, depth limit, local AABBs).
-inline std::string common_declarations() {
-  std::string out = pr::glsl_declarations<Interface>() + pr::glsl_uniform<SceneConstants>(0, 2, "constants");
-  out += detail::glsl_uint("radiance_ray", radiance_ray) + detail::glsl_uint("shadow_ray", shadow_ray) +
-         detail::glsl_uint("ray_count", ray_count) + detail::glsl_uint("flag_shadows", flag_shadows) +
-         detail::glsl_uint("flag_reflections", flag_reflections) + detail::glsl_uint("flag_object_ids", flag_object_ids) +
-         detail::glsl_uint("max_depth_limit", max_depth_limit);
-  const std::pair<const char*, pr::Aabb> boxes[] = {{"pacman", pacman_aabb}, {"julia", julia_aabb}, {"mandelbulb", mandelbulb_aabb}};
-  for (const auto& [name, box] : boxes) {
-    out += "const vec3 " + std::string(name) + "_aabb_min = " + detail::glsl_vec3(box.min) + ";\n";
-    out += "const vec3 " + std::string(name) + "_aabb_max = " + detail::glsl_vec3(box.max) + ";\n";
-  }
-  return out;
-}
-/// raygen.rgen: outgoing radiance payload `payload`.
-inline std::string raygen_declarations() {
-  return common_declarations() + pr::glsl_ray_payload<Interface, RadiancePayload>("payload");
-}
-/// radiance.rmiss: incoming radiance payload `payload`.
-inline std::string radiance_miss_declarations() {
-  return common_declarations() + pr::glsl_ray_payload_in<Interface, RadiancePayload>("payload");
-}
-/// shadow.rmiss: incoming shadow payload `shadow`.
-inline std::string shadow_miss_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_ray_payload_in<Interface, ShadowPayload>("shadow");
-}
-/// plane.rchit: material `record`, incoming radiance `payload` (also traced for reflections), outgoing `shadow`.
-inline std::string plane_hit_declarations() {
-  return common_declarations() + pr::glsl_shader_record<Interface, MaterialRecord>("record") +
-         pr::glsl_ray_payload_in<Interface, RadiancePayload>("payload") +
-         pr::glsl_ray_payload<Interface, ShadowPayload>("shadow");
-}
-/// shade.rchit: as plane.rchit, plus the hit attributes `hit`.
-inline std::string shade_hit_declarations() {
-  return plane_hit_declarations() + pr::glsl_hit_attribute<Interface, ProceduralHit>("hit");
-}
-/// pacman.rint, julia.rint, mandelbulb.rint: the uniform and the hit attributes `hit`.
-inline std::string intersection_declarations() {
-  return common_declarations() + pr::glsl_hit_attribute<Interface, ProceduralHit>("hit");
 }
 
 /// The example's shader files (in examples/02_paper_scene/shaders/).
 inline constexpr std::array<std::string_view, 8> shader_files{"raygen.rgen",  "radiance.rmiss", "shadow.rmiss",
                                                               "plane.rchit",  "shade.rchit",    "pacman.rint",
                                                               "julia.rint",   "mandelbulb.rint"};
-
-/// The generated declarations for one of shader_files (a path is fine: its file name counts);
-/// throws std::invalid_argument for another name.
-inline std::string declarations_for(std::string_view path) {
-  const std::string_view file = path.substr(path.find_last_of("/\\") + 1);
-  if (file == "pacman.rint" || file == "julia.rint" || file == "mandelbulb.rint") return intersection_declarations();
-  if (file == "raygen.rgen") return raygen_declarations();
-  if (file == "radiance.rmiss") return radiance_miss_declarations();
-  if (file == "shadow.rmiss") return shadow_miss_declarations();
-  if (file == "plane.rchit") return plane_hit_declarations();
-  if (file == "shade.rchit") return shade_hit_declarations();
-  throw std::invalid_argument("paper::declarations_for: no declarations for shader '" + std::string(path) +
-                              "'; expected one of paper::shader_files");
-}
 
 }  // namespace paper

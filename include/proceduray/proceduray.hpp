@@ -10,6 +10,7 @@
 #pragma once
 
 #include <proceduray/image/png.hpp>
+#include <proceduray/scene/glsl_for.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
 #include <proceduray/scene/shader_table.hpp>

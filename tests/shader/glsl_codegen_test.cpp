@@ -129,3 +129,12 @@ TEST_CASE("insert_after_version keeps version first and line numbers right") {
   CHECK(out == "#version 460\nstruct A { float x; };\n#line 2\nvoid main() {}\n");
   CHECK(proceduray::insert_after_version("void main() {}\n", "// g\n") == "// g\n#line 1\nvoid main() {}\n");
 }
+
+TEST_CASE("glsl_const writes host constants exactly") {
+  CHECK(proceduray::glsl_const("flags", 6u) == "const uint flags = 6u;\n");
+  CHECK(proceduray::glsl_const("half", 0.5f) == "const float half = 0.5;\n");
+  CHECK(proceduray::glsl_const("one", 1.0f) == "const float one = 1.0;\n");
+  CHECK(proceduray::glsl_const("tiny", 1e-4f) == "const float tiny = 1e-04;\n");
+  CHECK(proceduray::glsl_const("box_min", glm::vec3(-1.5f, 0.0f, 2.25f)) ==
+        "const vec3 box_min = vec3(-1.5, 0.0, 2.25);\n");
+}

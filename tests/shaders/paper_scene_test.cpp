@@ -1,6 +1,7 @@
-// Tests for examples/02_paper_scene: every shader compiles with glslang against its generated
-// declarations, and the shader-side types have the sizes the pipeline and the SBT rely on.
-#include "02_paper_scene/paper_types.hpp"
+// Tests for examples/02_paper_scene: every shader compiles with glslang against the
+// declarations the scene derives (glsl_for), and the shader-side types have the sizes the
+// pipeline and the SBT rely on.
+#include "02_paper_scene/paper_scene.hpp"
 
 #include <proceduray/vk/shader_compiler.hpp>
 
@@ -27,10 +28,21 @@ vk::ShaderStage stage_of(const std::filesystem::path& file) {
   return vk::ShaderStage::intersection;
 }
 
+/// The scene's built table; a device's limits are not needed to derive declarations.
+const proceduray::ShaderBindingTable& paper_table() {
+  static paper::PaperScene scene;
+  static const proceduray::ShaderBindingTable& table = scene.build(proceduray::DeviceLimits{});
+  return table;
+}
+
+std::string declarations(std::string_view file) {
+  return proceduray::glsl_for(paper_table(), stage_of(std::filesystem::path(file)), file) + paper::extra_declarations();
+}
+
 std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
   const std::filesystem::path path = paper_shader_dir() / file;
   return vk::compile_glsl({.stage = stage_of(path), .name = path.string(), .code = vk::read_text_file(path),
-                           .preamble = paper::declarations_for(file)});
+                           .preamble = declarations(file)});
 }
 
 }  // namespace
@@ -53,11 +65,6 @@ TEST_CASE("paper shader files are all listed") {
   CHECK(on_disk == paper::shader_files.size());
 }
 
-TEST_CASE("declarations_for accepts paths and rejects unknown shaders") {
-  CHECK(paper::declarations_for("some/dir/julia.rint") == paper::intersection_declarations());
-  CHECK(paper::declarations_for("shade.rchit") == paper::shade_hit_declarations());
-  CHECK_THROWS_AS(paper::declarations_for("sphere.rint"), std::invalid_argument);
-}
 
 TEST_CASE("paper types fit the pipeline limits") {
   static_assert(paper::Interface::max_attribute_size <= proceduray::max_hit_attribute_size);
@@ -73,13 +80,19 @@ TEST_CASE("paper types fit the pipeline limits") {
 }
 
 TEST_CASE("generated declarations carry the uniform block and no hand copies") {
-  const std::string decl = paper::shade_hit_declarations();
+  const std::string decl = declarations("shade.rchit");
   CHECK(decl.find("layout(set = 0, binding = 2, scalar) uniform SceneConstantsUniform {") != std::string::npos);
   CHECK(decl.find("layout(shaderRecordEXT, scalar) buffer MaterialRecordShaderRecord {") != std::string::npos);
   CHECK(decl.find("hitAttributeEXT ProceduralHit hit;") != std::string::npos);
   CHECK(decl.find("layout(location = 0) rayPayloadInEXT RadiancePayload payload;") != std::string::npos);
   CHECK(decl.find("layout(location = 1) rayPayloadEXT ShadowPayload shadow;") != std::string::npos);
   CHECK(decl.find("const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);") != std::string::npos);
+  CHECK(decl.find("layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;") != std::string::npos);
+  CHECK(declarations("raygen.rgen").find("layout(location = 0) rayPayloadEXT RadiancePayload radiance;") !=
+        std::string::npos);
+  CHECK(declarations("shadow.rmiss").find("layout(location = 1) rayPayloadInEXT ShadowPayload payload;") !=
+        std::string::npos);
+  CHECK(declarations("julia.rint").find("rayPayload") == std::string::npos);  // intersection shaders have none
   // The shaders declare no struct of their own: every struct comes from the C++ types.
   for (const auto& entry : std::filesystem::directory_iterator(paper_shader_dir())) {
     CAPTURE(entry.path().string());

@@ -37,9 +37,7 @@ struct Paint {
 };
 PROCEDURAY_STRUCT(Paint, scalar, rgb);
 
-using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Constants>, pr::RootArguments<Paint>,
-                                      pr::Attributes<BallHit>>;
-constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2};
+constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
 
 inline const glm::vec3 ball_centres[2] = {{-1.2f, 0.0f, 0.0f}, {1.2f, 0.0f, 0.0f}};
 inline const glm::vec4 ball_colours[2] = {{1, 0, 0, 1}, {0, 0, 1, 1}};
@@ -47,17 +45,6 @@ inline const glm::vec4 floor_colour{0.5f, 0.5f, 0.5f, 1.0f};
 
 inline Constants constants(std::uint32_t width, std::uint32_t height, glm::vec4 sky = {0.2f, 0.4f, 0.8f, 1.0f}) {
   return {pr::look_at({0.0f, 1.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, 45.0f, width, height), sky};
-}
-
-/// Generated GLSL for each of the scene's shaders, by file name.
-inline std::string declarations(pr::ShaderStage stage, const std::string& name) {
-  std::string out = pr::glsl_declarations<Interface>() + pr::glsl_uniform<Constants>(0, 2, "constants");
-  if (stage == pr::ShaderStage::raygen) return out + pr::glsl_ray_payload<Interface, Colour>("payload");
-  if (stage == pr::ShaderStage::intersection) return out + pr::glsl_hit_attribute<Interface, BallHit>("hit");
-  out += pr::glsl_ray_payload_in<Interface, Colour>("payload");
-  if (name == "ball.rchit") out += pr::glsl_hit_attribute<Interface, BallHit>("hit");
-  if (stage == pr::ShaderStage::closest_hit) out += pr::glsl_shader_record<Interface, Paint>("record");
-  return out;
 }
 
 /// The scene and its shader table, built for a context's limits.
@@ -73,8 +60,9 @@ class RendererScene {
     std::vector<pr::InstanceTransform> balls;
     for (const glm::vec3& c : ball_centres) balls.push_back(pr::instance_transform(glm::translate(glm::mat4(1), c)));
     m_ball = m_scene.add_geometry("ball", pr::GeometryDesc::procedural({pr::Aabb{}}, balls));
-    m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0},
-                                                         {pr::BindingKind::storage_image, 1}, constants_slot}});
+    m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                                         {pr::BindingKind::storage_image, 1, 0, 1, "image"},
+                                                         constants_slot}});
     m_paint = m_scene.add_local_signature<Paint>("paint");
   }
 
@@ -98,8 +86,7 @@ class RendererScene {
   }
 
   static pr::vk::RendererOptions options(std::filesystem::path cache = {}) {
-    return {.shader_dirs = {test_source_dir() / "vk" / "shaders"}, .declarations = declarations,
-            .pipeline_cache = std::move(cache)};
+    return {.shader_dirs = {test_source_dir() / "vk" / "shaders"}, .pipeline_cache = std::move(cache)};
   }
 
  private:

@@ -1,3 +1,3 @@
 #version 460
 // The shadow ray reached the light: the caller preset occluded = 1.
-void main() { shadow.occluded = 0u; }
+void main() { payload.occluded = 0u; }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/shader/glsl_type.hpp"
 
 namespace proceduray {
 
@@ -32,6 +33,8 @@ struct Binding {
   std::uint32_t binding = 0;                       ///< binding number in its set
   std::uint32_t set = 0;                           ///< descriptor set; default 0
   std::uint32_t count = 1;                         ///< array size; default 1
+  std::string name;                                ///< GLSL name to declare it under (glsl_for); empty: not declared
+  const TypeOps* type = nullptr;                   ///< a uniform or storage buffer's contents (UniformSlot sets it)
 };
 
 /// What the user declares for a global signature.

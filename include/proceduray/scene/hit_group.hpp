@@ -16,6 +16,7 @@
 #include <typeinfo>
 
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/shader/glsl_type.hpp"
 
 namespace proceduray {
 
@@ -40,6 +41,7 @@ struct HitGroup {
   HitGroupDesc desc;                               ///< as declared
   std::uint32_t attribute_size = 0;                ///< hit attribute bytes (triangles: 8, procedural: sizeof(Attributes))
   std::type_index attribute_type = typeid(void);   ///< Attributes; void for triangles' built-in ones
+  const TypeOps* attribute_glsl = nullptr;         ///< Attributes' GLSL description; null for triangles
 };
 
 /// Throws HitGroupKindError when the shaders do not fit the kind.

@@ -13,12 +13,15 @@
 #include <typeindex>
 #include <typeinfo>
 
+#include "proceduray/shader/glsl_type.hpp"
+
 namespace proceduray {
 
 /// A registered local signature.
 struct LocalSignature {
   std::uint32_t data_size = 0;                  ///< sizeof(Args): bytes after the handle in each record
   std::type_index data_type = typeid(void);     ///< Args, for run-time checks of string lookups
+  const TypeOps* data_glsl = nullptr;           ///< Args' GLSL description (shader layer)
 };
 
 }  // namespace proceduray

@@ -12,6 +12,8 @@
 #include <typeindex>
 #include <typeinfo>
 
+#include "proceduray/shader/glsl_type.hpp"
+
 namespace proceduray {
 
 /// What the user declares for a ray type.
@@ -24,6 +26,7 @@ struct Ray {
   RayDesc desc;                                   ///< as declared
   std::uint32_t payload_size = 0;                 ///< sizeof(Payload)
   std::type_index payload_type = typeid(void);    ///< Payload, for run-time id checks
+  const TypeOps* payload_glsl = nullptr;          ///< Payload's GLSL description (shader layer)
 };
 
 }  // namespace proceduray

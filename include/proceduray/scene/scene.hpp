@@ -48,13 +48,21 @@ struct Blas {
 };
 
 /// Every entity of a scene, keyed by id.
+namespace detail {
+template <class A>
+constexpr const TypeOps* attribute_glsl_of() {
+  if constexpr (std::is_void_v<A>) return nullptr;
+  else return &type_ops<A>;
+}
+}  // namespace detail
+
 class Scene {
  public:
   /// Registers a ray type with payload type Payload; throws DuplicateIdError.
   template <PayloadData Payload>
   RayId<Payload> add_ray(std::string id, RayDesc desc) {
     return RayId<Payload>(m_rays.add("Scene::add_ray", std::move(id),
-                                     Ray{std::move(desc), sizeof(Payload), typeid(Payload)}));
+                                     Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}));
   }
 
   /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
@@ -78,7 +86,7 @@ class Scene {
       size = triangle_attribute_size;
     }
     return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
-                                       HitGroup{std::move(desc), size, typeid(Attributes)}));
+                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}));
   }
 
   /// Registers a geometry and puts it in its BLAS; throws InvalidGeometryError, DuplicateIdError.
@@ -135,7 +143,7 @@ class Scene {
   template <RecordData Args>
   LocalSignatureId<Args> add_local_signature(std::string id) {
     return LocalSignatureId<Args>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
-                                                         LocalSignature{sizeof(Args), typeid(Args)}));
+                                                         LocalSignature{sizeof(Args), typeid(Args), &type_ops<Args>}));
   }
 
   /// The ray registered as `id`, or nullptr.

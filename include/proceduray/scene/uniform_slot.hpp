@@ -20,9 +20,10 @@ struct UniformSlot {
   using type = T;
   std::uint32_t binding = 0;  ///< layout(binding = N)
   std::uint32_t set = 0;      ///< layout(set = N); default 0
+  const char* name = "";      ///< GLSL instance name glsl_for declares it under; empty: declared by hand
 
   /// The binding as the global signature declares it.
-  constexpr operator Binding() const { return {BindingKind::uniform_buffer, binding, set, 1}; }
+  operator Binding() const { return {BindingKind::uniform_buffer, binding, set, 1, name, &type_ops<T>}; }
 };
 
 }  // namespace proceduray

@@ -17,10 +17,13 @@
 #pragma once
 
 #include <proceduray/shader/categories.hpp>
+
+#include <glm/glm.hpp>
 #include <proceduray/shader/glsl_type.hpp>
 #include <proceduray/shader/layout.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -239,6 +242,27 @@ std::string glsl_uniform(std::uint32_t set, std::uint32_t binding, std::string_v
   return "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(binding) + ", " +
          std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) + "Uniform {\n" +
          detail::member_lines(t) + "} " + std::string(name) + ";\n";
+}
+
+/// A GLSL constant with the exact value of a host constant: `const uint name = 3u;`.
+inline std::string glsl_const(std::string_view name, std::uint32_t value) {
+  return "const uint " + std::string(name) + " = " + std::to_string(value) + "u;\n";
+}
+/// `const float name = 0.5;`, printed so it reads back as the same float.
+inline std::string glsl_const(std::string_view name, float value) {
+  char digits[32];
+  const auto end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+  std::string text(digits, end);
+  if (text.find_first_of(".en") == std::string::npos) text += ".0";
+  return "const float " + std::string(name) + " = " + text + ";\n";
+}
+/// `const vec3 name = vec3(x, y, z);`, each component as glsl_const(float) prints it.
+inline std::string glsl_const(std::string_view name, glm::vec3 v) {
+  auto value = [](float f) {
+    const std::string line = glsl_const("x", f);
+    return line.substr(line.find('=') + 2, line.size() - line.find('=') - 4);
+  };
+  return "const vec3 " + std::string(name) + " = vec3(" + value(v.x) + ", " + value(v.y) + ", " + value(v.z) + ");\n";
 }
 
 /// `source` with `generated` inserted on the line after its `#version` line (at the start if it has none).

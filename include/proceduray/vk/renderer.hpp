@@ -2,7 +2,6 @@
 //
 //   proceduray::ShaderBindingTable sbt = table.build(ctx.limits());
 //   proceduray::vk::Renderer renderer(ctx, sbt, {.shader_dirs = {"shaders"},
-//                                                .declarations = my_declarations,
 //                                                .pipeline_cache = "proceduray.cache"});
 //   renderer.set(constants_slot, constants);          // typed uniform, uploaded before the next trace
 //   renderer.set_transform(pacman, 1, moved);         // TLAS refit before the next trace, no BLAS work
@@ -13,11 +12,12 @@
 // refittable TLAS whose instances carry the SBT offsets the scene assigned, descriptor sets
 // from the global signature (the acceleration-structure binding gets the TLAS, the storage
 // image binding the frame, uniform bindings the values given with set()), the pipeline from
-// the plan (shaders read from shader_dirs, compiled with their generated declarations, the
+// the plan (shaders read from shader_dirs, compiled with the declarations glsl_for derives, the
 // stack size from the groups' own sizes, a disk cache when asked), and the SBT bytes.
 // The table and its scene must outlive the renderer.
 #pragma once
 
+#include <proceduray/scene/glsl_for.hpp>
 #include <proceduray/scene/shader_binding_table.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/acceleration.hpp>
@@ -42,7 +42,9 @@ namespace proceduray::vk {
 /// How a Renderer finds and compiles its shaders. Every member has a default.
 struct RendererOptions {
   std::vector<std::filesystem::path> shader_dirs;  ///< where the plan's shader names are read; default: the current folder
-  /// The generated GLSL each shader compiles with (see shader/glsl_codegen.hpp); default none.
+  /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
+  std::string extra_declarations;
+  /// Replaces the generated declarations when set: the whole preamble of each shader.
   std::function<std::string(ShaderStage, const std::string& name)> declarations;
   std::filesystem::path pipeline_cache;  ///< cache file; empty (default): none
   BuildOptions blas{};                   ///< BLAS builds; default compacted, fast trace
@@ -239,7 +241,8 @@ inline void Renderer::build_pipeline() {
   auto start = Clock::now();
   for (const PlannedStage& stage : plan.stages) {
     const std::string path = find_shader(stage.shader);
-    std::string preamble = m_options.declarations ? m_options.declarations(stage.stage, stage.shader) : std::string();
+    std::string preamble = m_options.declarations ? m_options.declarations(stage.stage, stage.shader)
+                                                  : glsl_for(*m_table, stage.stage, stage.shader) + m_options.extra_declarations;
     desc.add_shader(stage.stage, compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
                                                .preamble = std::move(preamble)}));
   }

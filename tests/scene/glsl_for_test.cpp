@@ -1,0 +1,145 @@
+// scene/glsl_for.hpp: declarations derived from the scene, per shader and stage.
+#include <proceduray/scene/glsl_for.hpp>
+#include <proceduray/scene/shader_table.hpp>
+#include <proceduray/scene/uniform_slot.hpp>
+#include <proceduray/shader/field_list.hpp>
+
+#include <doctest/doctest.h>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+
+namespace glsl_for_test {
+struct Light {
+  glm::vec3 colour;
+  float pad;
+};
+PROCEDURAY_STRUCT(Light, scalar, colour, pad);
+struct Shadow {
+  std::uint32_t occluded;
+};
+PROCEDURAY_STRUCT(Shadow, scalar, occluded);
+struct Hit {
+  glm::vec3 normal;
+};
+PROCEDURAY_STRUCT(Hit, scalar, normal);
+struct Material {
+  glm::vec4 albedo;
+};
+PROCEDURAY_STRUCT(Material, scalar, albedo);
+struct Other {
+  float x;
+};
+PROCEDURAY_STRUCT(Other, scalar, x);
+struct Globals {
+  glm::vec4 sky;
+};
+PROCEDURAY_STRUCT(Globals, std430, sky);
+}  // namespace glsl_for_test
+
+using namespace proceduray;
+using namespace glsl_for_test;
+
+namespace {
+
+constexpr UniformSlot<Globals> globals{.binding = 2, .name = "globals"};
+
+/// How a fixture misuses its shaders, if at all.
+enum class Misuse { none, two_payloads, two_records };
+
+/// Two rays (light, shadow), a procedural ball, a triangle floor. two_payloads binds the ball's
+/// closest hit to the shadow ray too; two_records gives the ball's shadow entry another record type.
+struct Fixture {
+  Scene scene;
+  std::optional<ShaderTable> table;
+  std::optional<ShaderBindingTable> sbt;
+
+  explicit Fixture(Misuse misuse = Misuse::none) {
+    const bool second_payload = misuse == Misuse::two_payloads;
+    auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
+    auto shadow = scene.add_ray<Shadow>("shadow ray", {.miss = "shadow.rmiss"});
+    scene.add_hit_group<Hit>("ball", {.kind = HitGroupKind::procedural, .closest_hit = "ball.rchit",
+                                      .intersection = "ball.rint"});
+    scene.add_hit_group<Hit>("ball_shadow", {.kind = HitGroupKind::procedural,
+                                             .closest_hit = second_payload ? "ball.rchit" : "",
+                                             .intersection = "ball.rint"});
+    scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
+    scene.add_hit_group("floor_shadow", {.kind = HitGroupKind::triangles});
+    auto ball = scene.add_geometry("ball", GeometryDesc::procedural({Aabb{}}));
+    auto floor = scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 1, 2}}));
+    auto material = scene.add_local_signature<Material>("material");
+    auto other = scene.add_local_signature<Other>("other");
+    auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                                                     {BindingKind::storage_image, 1, 0, 1, "image"},
+                                                                     globals}});
+    table.emplace(scene);
+    table->add_raygen("main.rgen");
+    table->set_global_signature(global);
+    table->add_hit(light, scene.hit_group_id("ball"), material, Material{}, ball);
+    if (misuse == Misuse::two_records) {
+      table->add_hit(shadow, scene.hit_group_id("ball_shadow"), other, Other{}, ball);
+    } else {
+      table->add_hit(shadow, scene.hit_group_id("ball_shadow"), material, Material{}, ball);
+    }
+    table->add_hit(light, scene.hit_group_id("floor"), other, Other{}, floor);
+    table->add_hit(shadow, scene.hit_group_id("floor_shadow"), floor);
+    sbt.emplace(table->build(DeviceLimits{}));
+  }
+  std::string operator()(ShaderStage stage, const char* shader) const { return glsl_for(*sbt, stage, shader); }
+};
+
+bool has(const std::string& text, const char* piece) { return text.find(piece) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("glsl_for gives every stage the structs ray indices and named bindings") {
+  const Fixture f;
+  const std::string any = f(ShaderStage::intersection, "ball.rint");
+  CHECK(has(any, "struct Light {"));
+  CHECK(has(any, "struct Material {"));
+  CHECK(has(any, "const uint light_ray = 0u;"));
+  CHECK(has(any, "const uint shadow_ray_ray = 1u;"));  // "shadow ray" made an identifier
+  CHECK(has(any, "const uint ray_count = 2u;"));
+  CHECK(has(any, "layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;"));
+  CHECK(has(any, "layout(set = 0, binding = 1, rgba8) uniform image2D image;"));
+  CHECK(has(any, "layout(set = 0, binding = 2, std430) uniform GlobalsUniform {"));
+  CHECK(has(any, "} globals;"));
+}
+
+TEST_CASE("glsl_for declares payloads by stage") {
+  const Fixture f;
+  const std::string raygen = f(ShaderStage::raygen, "main.rgen");
+  CHECK(has(raygen, "layout(location = 0) rayPayloadEXT Light light;"));
+  CHECK(has(raygen, "layout(location = 1) rayPayloadEXT Shadow shadow_ray;"));
+  CHECK_FALSE(has(raygen, "rayPayloadInEXT"));
+  CHECK(has(f(ShaderStage::miss, "shadow.rmiss"), "layout(location = 1) rayPayloadInEXT Shadow payload;"));
+  CHECK(has(f(ShaderStage::miss, "sky.rmiss"), "layout(location = 0) rayPayloadInEXT Light payload;"));
+  const std::string hit = f(ShaderStage::closest_hit, "ball.rchit");
+  CHECK(has(hit, "layout(location = 0) rayPayloadInEXT Light payload;"));
+  CHECK(has(hit, "layout(location = 1) rayPayloadEXT Shadow shadow_ray;"));  // to trace shadow rays
+  CHECK_FALSE(has(hit, "rayPayloadEXT Light"));  // location 0 is the incoming payload
+  CHECK(has(hit, "hitAttributeEXT Hit hit;"));
+  CHECK(has(hit, "layout(shaderRecordEXT, scalar) buffer MaterialShaderRecord {"));
+  const std::string isect = f(ShaderStage::intersection, "ball.rint");
+  CHECK(has(isect, "hitAttributeEXT Hit hit;"));
+  CHECK_FALSE(has(isect, "rayPayload"));
+  const std::string floor = f(ShaderStage::closest_hit, "floor.rchit");
+  CHECK(has(floor, "OtherShaderRecord"));
+  CHECK_FALSE(has(floor, "hitAttributeEXT"));  // triangles use the built-in barycentrics
+}
+
+TEST_CASE("glsl_for names a shader used with two payload types") {
+  const Fixture f(Misuse::two_payloads);
+  CHECK_THROWS_WITH_AS(f(ShaderStage::closest_hit, "ball.rchit"),
+                       doctest::Contains("shader \"ball.rchit\" is used with two payload types, Light and Shadow"),
+                       SceneError);
+}
+
+TEST_CASE("glsl_for names a shader used with two record types") {
+  CHECK_NOTHROW(Fixture()(ShaderStage::intersection, "ball.rint"));
+  const Fixture f(Misuse::two_records);
+  CHECK_THROWS_WITH_AS(f(ShaderStage::intersection, "ball.rint"),
+                       doctest::Contains("shader \"ball.rint\" is used with two record data types, Material and Other"),
+                       SceneError);
+}
