@@ -44,6 +44,7 @@ using namespace glsl_for_test;
 namespace {
 
 constexpr UniformSlot<Globals> globals{.binding = 2, .name = "globals"};
+constexpr StorageSlot<Other> others{.binding = 3, .set = 1, .name = "others"};
 
 /// How a fixture misuses its shaders, if at all.
 enum class Misuse { none, two_payloads, two_records };
@@ -72,7 +73,7 @@ struct Fixture {
     auto other = scene.add_local_signature<Other>("other");
     auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                                                      {BindingKind::storage_image, 1, 0, 1, "image"},
-                                                                     globals}});
+                                                                     globals, others}});
     table.emplace(scene);
     table->add_raygen("main.rgen");
     table->set_global_signature(global);
@@ -105,6 +106,7 @@ TEST_CASE("glsl_for gives every stage the structs ray indices and named bindings
   CHECK(has(any, "layout(set = 0, binding = 1, rgba8) uniform image2D image;"));
   CHECK(has(any, "layout(set = 0, binding = 2, std430) uniform GlobalsUniform {"));
   CHECK(has(any, "} globals;"));
+  CHECK(has(any, "layout(set = 1, binding = 3, scalar) readonly buffer OtherBuffer {\n    Other data[];\n} others;"));
 }
 
 TEST_CASE("glsl_for declares payloads by stage") {

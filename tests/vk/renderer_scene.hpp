@@ -36,8 +36,14 @@ struct Paint {
   glm::vec4 rgb;
 };
 PROCEDURAY_STRUCT(Paint, scalar, rgb);
+/// Per-instance multiplier of the ball colour, from a storage buffer indexed by instance.
+struct Tint {
+  glm::vec4 rgb;
+};
+PROCEDURAY_STRUCT(Tint, scalar, rgb);
 
 constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
+constexpr pr::StorageSlot<Tint> tints_slot{.binding = 3, .name = "tints"};
 
 inline const glm::vec3 ball_centres[2] = {{-1.2f, 0.0f, 0.0f}, {1.2f, 0.0f, 0.0f}};
 inline const glm::vec4 ball_colours[2] = {{1, 0, 0, 1}, {0, 0, 1, 1}};
@@ -45,6 +51,13 @@ inline const glm::vec4 floor_colour{0.5f, 0.5f, 0.5f, 1.0f};
 
 inline Constants constants(std::uint32_t width, std::uint32_t height, glm::vec4 sky = {0.2f, 0.4f, 0.8f, 1.0f}) {
   return {pr::look_at({0.0f, 1.0f, 6.0f}, {0.0f, 0.0f, 0.0f}, 45.0f, width, height), sky};
+}
+
+/// Gives every uniform and storage buffer a value: the default constants and white tints.
+inline void prepare(pr::vk::Renderer& renderer, std::uint32_t width, std::uint32_t height) {
+  renderer.set(constants_slot, constants(width, height));
+  const Tint white[] = {{glm::vec4(1.0f)}, {glm::vec4(1.0f)}, {glm::vec4(1.0f)}, {glm::vec4(1.0f)}};
+  renderer.set_storage(tints_slot, std::span<const Tint>(white));
 }
 
 /// The scene and its shader table, built for a context's limits.
@@ -62,7 +75,7 @@ class RendererScene {
     m_ball = m_scene.add_geometry("ball", pr::GeometryDesc::procedural({pr::Aabb{}}, balls));
     m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                                          {pr::BindingKind::storage_image, 1, 0, 1, "image"},
-                                                         constants_slot}});
+                                                         constants_slot, tints_slot}});
     m_paint = m_scene.add_local_signature<Paint>("paint");
   }
 

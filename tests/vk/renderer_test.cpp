@@ -35,7 +35,7 @@ TEST_CASE("renderer traces a scene table: per-instance records, triangles and pr
   TestContext t;
   RendererScene s;
   vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
-  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  renderer_scene::prepare(renderer, width, height);
   const vk::Frame f = renderer.render(width, height);
   REQUIRE(f.rgba.size() == std::size_t{width} * height * 4);
   CHECK(near(pixel(f, where(renderer_scene::ball_centres[0])), bytes(renderer_scene::ball_colours[0])));
@@ -52,7 +52,7 @@ TEST_CASE("renderer uniform changes reach the next trace without rebuilding") {
   TestContext t;
   RendererScene s;
   vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
-  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  renderer_scene::prepare(renderer, width, height);
   const vk::Frame before = renderer.render(width, height);
   const glm::vec4 dusk{0.9f, 0.5f, 0.1f, 1.0f};
   renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height, dusk));
@@ -65,7 +65,7 @@ TEST_CASE("renderer set_transform refits the TLAS and the image follows") {
   TestContext t;
   RendererScene s;
   vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
-  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  renderer_scene::prepare(renderer, width, height);
   const VkDeviceSize blas_before = renderer.blas_bytes();
   const glm::vec3 moved{0.0f, 1.2f, -1.0f};
   renderer.set_transform(s.ball(), 1, glm::translate(glm::mat4(1.0f), moved));
@@ -85,8 +85,23 @@ TEST_CASE("renderer renders are byte identical") {
   TestContext t;
   RendererScene s;
   vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
-  renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  renderer_scene::prepare(renderer, width, height);
   CHECK(renderer.render(width, height).rgba == renderer.render(width, height).rgba);
+}
+
+TEST_CASE("renderer storage buffers reach the shaders indexed by instance") {
+  TestContext t;
+  RendererScene s;
+  const ShaderBindingTable& table = s.table(t.ctx);
+  vk::Renderer renderer(t.ctx, table, RendererScene::options());
+  renderer_scene::prepare(renderer, width, height);
+  // The shader indexes by gl_InstanceCustomIndexEXT: the instance's place in the TLAS.
+  std::vector<renderer_scene::Tint> tints(table.instances().size(), {glm::vec4(1.0f)});
+  tints[table.tlas_index(s.ball(), 1)] = {glm::vec4(0.5f)};
+  renderer.set_storage(renderer_scene::tints_slot, std::span<const renderer_scene::Tint>(tints));
+  const vk::Frame f = renderer.render(width, height);
+  CHECK(near(pixel(f, where(renderer_scene::ball_centres[0])), bytes(renderer_scene::ball_colours[0])));
+  CHECK(near(pixel(f, where(renderer_scene::ball_centres[1])), glm::ivec4(0, 0, 128, 255)));  // blue halved
 }
 
 TEST_CASE("renderer refuses to trace before its uniforms have values") {
@@ -96,6 +111,11 @@ TEST_CASE("renderer refuses to trace before its uniforms have values") {
   CHECK_THROWS_WITH_AS(renderer.render(width, height), doctest::Contains("set 0 binding 2 was never given a value"),
                        std::logic_error);
   renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+  CHECK_THROWS_WITH_AS(renderer.render(width, height),
+                       doctest::Contains("storage buffer at set 0 binding 3 was never given data"), std::logic_error);
+  CHECK_THROWS_WITH_AS(renderer.set_storage(renderer_scene::tints_slot, {}), doctest::Contains("no elements"),
+                       std::invalid_argument);
+  renderer_scene::prepare(renderer, width, height);
   CHECK_THROWS_WITH_AS(renderer.render(0, height), doctest::Contains("size 0x64"), std::invalid_argument);
 }
 
@@ -146,7 +166,7 @@ TEST_CASE("renderer pipeline cache is reused and a corrupt one is rebuilt") {
     CHECK(cache.warning().find(why) != std::string::npos);
     vk::Renderer rebuilt(t.ctx, s.table(t.ctx), RendererScene::options(path));
     CHECK_FALSE(rebuilt.timings().pipeline_cached);
-    rebuilt.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
+    renderer_scene::prepare(rebuilt, width, height);
     CHECK(near(pixel(rebuilt.render(width, height), where(renderer_scene::ball_centres[0])),
                bytes(renderer_scene::ball_colours[0])));
     CHECK(vk::PipelineCache(t.ctx, path).loaded());  // saved again, valid

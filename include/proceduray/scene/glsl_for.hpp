@@ -6,7 +6,8 @@
 // What a shader gets (names are the convention the shaders use):
 //   every stage   the structs of every registered type the scene uses, `const uint <ray>_ray`
 //                 per ray type and `ray_count`, and each named binding of the global signature
-//                 (acceleration structure, rgba8 storage image, typed uniform or storage buffer)
+//                 (acceleration structure, rgba8 storage image, typed uniform, or a readonly
+//                 storage buffer of T[] read as `<name>.data[i]`)
 //   raygen        `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index
 //   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of
 //   closest hit   `rayPayloadInEXT <Payload> payload` of the rays whose records use it, the
@@ -69,10 +70,13 @@ inline std::string binding_glsl(const Binding& b) {
         throw SceneError("glsl_for: binding \"" + b.name + "\" (set " + std::to_string(b.set) + ", binding " +
                          std::to_string(b.binding) + ") is named but has no type; declare it with a UniformSlot<T>");
       }
-      const bool uniform = b.kind == BindingKind::uniform_buffer;
-      return where + ", " + std::string(to_string(b.type->rule)) + ") " + (uniform ? "uniform " : "buffer ") +
-             std::string(b.type->glsl_name) + (uniform ? "Uniform" : "Buffer") + " {\n" + member_lines(*b.type) + "} " +
-             name + ";\n";
+      const std::string rule(to_string(b.type->rule));
+      const std::string type(b.type->glsl_name);
+      if (b.kind == BindingKind::uniform_buffer) {
+        return where + ", " + rule + ") uniform " + type + "Uniform {\n" + member_lines(*b.type) + "} " + name + ";\n";
+      }
+      // A storage buffer holds an array of its type, read as name.data[i].
+      return where + ", " + rule + ") readonly buffer " + type + "Buffer {\n    " + type + " data[];\n} " + name + ";\n";
     }
   }
   return {};

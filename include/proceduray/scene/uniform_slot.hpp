@@ -1,10 +1,13 @@
-// A typed uniform binding: declared once, used both in the global signature and for writes.
+// Typed buffer bindings: declared once, used both in the global signature and for writes.
 //
 //   struct SceneConstants { ... };  PROCEDURAY_STRUCT(SceneConstants, scalar, ...);
 //   constexpr proceduray::UniformSlot<SceneConstants> constants{.binding = 2};
 //   scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0},
 //                                                     {BindingKind::storage_image, 1}, constants}});
 //   renderer.set(constants, value);   // value must be a SceneConstants: anything else does not compile
+//
+//   constexpr proceduray::StorageSlot<Tint> tints{.binding = 3, .name = "tints"};
+//   renderer.set_storage(tints, std::span<const Tint>(per_instance));  // GLSL: tints.data[i]
 #pragma once
 
 #include <proceduray/scene/global_signature.hpp>
@@ -24,6 +27,18 @@ struct UniformSlot {
 
   /// The binding as the global signature declares it.
   operator Binding() const { return {BindingKind::uniform_buffer, binding, set, 1, name, &type_ops<T>}; }
+};
+
+/// A storage buffer binding holding an array of T (GLSL: `name.data[i]`), T registered with the shader layer.
+template <RegisteredStruct T>
+struct StorageSlot {
+  using type = T;
+  std::uint32_t binding = 0;  ///< layout(binding = N)
+  std::uint32_t set = 0;      ///< layout(set = N); default 0
+  const char* name = "";      ///< GLSL instance name glsl_for declares it under; empty: declared by hand
+
+  /// The binding as the global signature declares it.
+  operator Binding() const { return {BindingKind::storage_buffer, binding, set, 1, name, &type_ops<T>}; }
 };
 
 }  // namespace proceduray

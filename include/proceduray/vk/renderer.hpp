@@ -4,6 +4,7 @@
 //   proceduray::vk::Renderer renderer(ctx, sbt, {.shader_dirs = {"shaders"},
 //                                                .pipeline_cache = "proceduray.cache"});
 //   renderer.set(constants_slot, constants);          // typed uniform, uploaded before the next trace
+//   renderer.set_storage(tints_slot, tints);          // typed storage buffer (an array)
 //   renderer.set_transform(pacman, 1, moved);         // TLAS refit before the next trace, no BLAS work
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
@@ -82,6 +83,11 @@ class Renderer {
     std::memcpy(u.value.data(), &value, sizeof(T));
     u.dirty = true;
   }
+  /// Sets a storage buffer's contents, an array of T (at least one element); reallocated when it grows.
+  template <class T>
+  void set_storage(StorageSlot<T> slot, std::span<const std::type_identity_t<T>> values) {
+    set_storage_bytes(slot.set, slot.binding, std::as_bytes(values), "Renderer::set_storage");
+  }
   /// Moves instance `instance` of `geometry`; the TLAS is refit before the next trace (no BLAS work).
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world);
 
@@ -105,6 +111,11 @@ class Renderer {
     std::unique_ptr<Buffer> buffer;
     bool dirty = false;
   };
+  struct Storage {
+    std::uint32_t set = 0, binding = 0;
+    std::unique_ptr<Buffer> buffer;
+  };
+  void set_storage_bytes(std::uint32_t set, std::uint32_t binding, std::span<const std::byte> bytes, const char* operation);
   Uniform& uniform(std::uint32_t set, std::uint32_t binding, std::size_t size, const char* operation);
   void build_acceleration_structures();
   void build_descriptor_sets();
@@ -127,6 +138,7 @@ class Renderer {
   bool m_transforms_dirty = false;
   std::vector<std::unique_ptr<DescriptorSet>> m_sets;  // index = set number
   std::vector<Uniform> m_uniforms;
+  std::vector<Storage> m_storage;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_image_bindings;  // (set, binding) of storage images
   std::unique_ptr<Pipeline> m_pipeline;
   std::unique_ptr<SbtBuffer> m_sbt;
@@ -216,10 +228,7 @@ inline void Renderer::build_descriptor_sets() {
       case BindingKind::acceleration_structure: m_sets[b.set]->write(b.binding, m_tlas.structure()); break;
       case BindingKind::storage_image: m_image_bindings.emplace_back(b.set, b.binding); break;
       case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, {}, nullptr, false}); break;
-      case BindingKind::storage_buffer:
-        throw std::invalid_argument("Renderer: set " + std::to_string(b.set) + " binding " + std::to_string(b.binding) +
-                                    " is a storage buffer; the renderer does not fill storage buffers yet: pass the "
-                                    "data through record data or a uniform");
+      case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, nullptr}); break;
     }
   }
 }
@@ -283,6 +292,26 @@ inline Renderer::Uniform& Renderer::uniform(std::uint32_t set, std::uint32_t bin
                               "declare it there (a UniformSlot converts to its Binding)");
 }
 
+inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding, std::span<const std::byte> bytes,
+                                         const char* operation) {
+  for (Storage& s : m_storage) {
+    if (s.set != set || s.binding != binding) continue;
+    if (bytes.empty()) {
+      throw std::invalid_argument(std::string(operation) + ": no elements given for set " + std::to_string(set) +
+                                  " binding " + std::to_string(binding) + "; a storage buffer needs at least one");
+    }
+    if (!s.buffer || s.buffer->size() < bytes.size()) {
+      s.buffer = std::make_unique<Buffer>(*m_ctx, bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      m_sets[set]->write(binding, *s.buffer);
+    }
+    s.buffer->write(bytes);
+    return;
+  }
+  throw std::invalid_argument(std::string(operation) + ": set " + std::to_string(set) + " binding " +
+                              std::to_string(binding) + " is not a storage buffer of the global signature; "
+                              "declare it there (a StorageSlot converts to its Binding)");
+}
+
 inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
   const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_transform");
   Instance moved = m_instances[k];
@@ -305,6 +334,12 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
     if (!u.buffer) {
       throw std::logic_error("Renderer::render: the uniform at set " + std::to_string(u.set) + " binding " +
                              std::to_string(u.binding) + " was never given a value; call set(slot, value) first");
+    }
+  }
+  for (const Storage& s : m_storage) {
+    if (!s.buffer) {
+      throw std::logic_error("Renderer::render: the storage buffer at set " + std::to_string(s.set) + " binding " +
+                             std::to_string(s.binding) + " was never given data; call set_storage(slot, values) first");
     }
   }
   prepare_image(width, height);
