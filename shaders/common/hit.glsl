@@ -1,0 +1,29 @@
+// Hit validation as the D3D12 sample's IsAValidHit: a candidate counts only when its t lies
+// in the ray's [t_min, t_max] and the ray's cull flags do not reject its facing, so an
+// intersection function can try its next candidate instead of reporting one the traversal drops.
+//
+//   uint cull = hit_cull_bits(gl_IncomingRayFlagsEXT);          // intersection shader (GLSL)
+//   if (hit_is_valid(t, t_lo, t_hi, d, n, cull)) { ... }        // n: outward normal
+//
+// Facing follows the normal: dot(d, n) < 0 is front facing (entering), > 0 back facing.
+#ifndef PROCEDURAY_COMMON_HIT_GLSL
+#define PROCEDURAY_COMMON_HIT_GLSL
+
+#include "compat.glsl"
+
+/// Cull bits: back-facing hits (the ray leaves through the surface) and front-facing hits.
+const uint hit_cull_back = 1u;
+const uint hit_cull_front = 2u;
+
+/// Whether the cull bits reject a hit whose outward normal is n for a ray along d.
+PROCEDURAY_INLINE bool hit_is_culled(vec3 d, vec3 n, uint cull) {
+  float dn = dot(d, n);
+  return ((cull & hit_cull_back) != 0u && dn > 0.0f) || ((cull & hit_cull_front) != 0u && dn < 0.0f);
+}
+
+/// t in [t_min, t_max] and not culled.
+PROCEDURAY_INLINE bool hit_is_valid(float t, float t_min, float t_max, vec3 d, vec3 n, uint cull) {
+  return t >= t_min && t <= t_max && !hit_is_culled(d, n, cull);
+}
+
+#endif

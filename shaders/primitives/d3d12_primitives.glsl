@@ -1,0 +1,106 @@
+// The D3D12 procedural-geometry sample's primitives behind one call: analytic (box, several
+// spheres), volumetric (metaballs) and signed distance (sdf.glsl's seven), in local space
+// where the primitive's AABB is [-1, 1]^3.
+//
+//   float t; vec3 n; float steps;
+//   if (d3d12_intersect(kind, params, spin, time, o, d, gl_RayTminEXT, gl_RayTmaxEXT, cull, m,
+//                       metaball_method, metaball_steps, t, n, steps)) reportIntersectionEXT(t, 0u);
+//
+// Each primitive: clips the ray to its own AABB first (drivers may report hits of an enlarged
+// box), turns the ray by -spin about y (animation without acceleration-structure work: the
+// primitive must fit its AABB at every angle), intersects, and accepts only a hit whose t is in
+// [t_lo, t_hi] and whose facing the cull bits allow (common/hit.glsl). Normals are unit, outward,
+// in local space: analytic for box, spheres and metaballs; tetrahedral differences of the
+// distance, with the offset tied to the hit threshold at the hit's distance, for SDFs. `steps`
+// counts distance or field evaluations (0 for analytic primitives). Marching runs along the
+// unit direction, so epsilon and footprint in `m` are local lengths; m.step_scale is multiplied
+// by 1 / sdf_lipschitz.
+//
+// This file defines march_distance (for sphere_trace.glsl) over the selected SDF: include it
+// alone, not with another definer of march_distance.
+#ifndef PROCEDURAY_PRIMITIVES_D3D12_PRIMITIVES_GLSL
+#define PROCEDURAY_PRIMITIVES_D3D12_PRIMITIVES_GLSL
+
+#include "../common/compat.glsl"
+#include "../common/hit.glsl"
+#include "../common/ray.glsl"
+#include "box.glsl"
+#include "sdf.glsl"
+#include "spheres.glsl"
+
+/// Primitive kinds: the analytic and volumetric ones here, the SDFs (3 to 9) in sdf.glsl.
+const uint primitive_box = 0u;
+const uint primitive_spheres = 1u;
+const uint primitive_metaballs = 2u;
+const uint primitive_kind_count = 10u;
+
+#ifdef __cplusplus
+inline uint d3d12_sdf_kind = 0u;  // what march_distance marches; set by d3d12_intersect
+inline vec4 d3d12_sdf_params = vec4(1.0f);
+#else
+uint d3d12_sdf_kind;
+vec4 d3d12_sdf_params;
+#endif
+
+PROCEDURAY_INLINE float march_distance(vec3 p) { return sdf_distance(d3d12_sdf_kind, p, d3d12_sdf_params); }
+
+#include "../marching/sphere_trace.glsl"
+#include "metaballs.glsl"
+
+/// v turned by angle a about the y axis.
+PROCEDURAY_INLINE vec3 rotate_y(vec3 v, float a) {
+  float c = cos(a);
+  float s = sin(a);
+  return vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+}
+
+PROCEDURAY_INLINE bool d3d12_intersect(uint kind, vec4 params, float spin, float time, vec3 o, vec3 d, float t_lo,
+                                       float t_hi, uint cull, MarchSettings m, uint metaball_method,
+                                       uint metaball_steps, PROCEDURAY_OUT(float) t_hit, PROCEDURAY_OUT(vec3) normal,
+                                       PROCEDURAY_OUT(float) steps) {
+  t_hit = 0.0f;
+  normal = vec3(0.0f, 1.0f, 0.0f);
+  steps = 0.0f;
+  float t0 = t_lo;
+  float t1 = t_hi;
+  if (!ray_clip_aabb(o, d, vec3(-1.0f), vec3(1.0f), t0, t1)) return false;
+  float angle = spin * time;
+  vec3 ro = rotate_y(o, -angle);
+  vec3 rd = rotate_y(d, -angle);
+  float t = 0.0f;
+  vec3 n = vec3(0.0f, 1.0f, 0.0f);
+  if (kind == primitive_box) {
+    if (!ray_box(ro, rd, -vec3(params.x, params.y, params.z), vec3(params.x, params.y, params.z), t0, t1, cull, t, n))
+      return false;
+  } else if (kind == primitive_spheres) {
+    if (!ray_spheres(ro, rd, params.x, t0, t1, cull, t, n)) return false;
+  } else {
+    float len = length(rd);
+    if (!(len > 0.0f)) return false;
+    vec3 u = rd / len;
+    float s = 0.0f;
+    uint count = 0u;
+    if (kind == primitive_metaballs) {
+      bool hit = metaballs_march(ro, u, t0 * len, t1 * len, params.x, params.y, time, metaball_method, metaball_steps,
+                                 m, s, n, count);
+      steps = float(count);
+      if (!hit) return false;
+    } else {
+      d3d12_sdf_kind = kind;
+      d3d12_sdf_params = params;
+      MarchSettings ms = m;
+      ms.step_scale = (m.step_scale > 0.0f ? m.step_scale : 1.0f) / sdf_lipschitz(kind, params);
+      bool hit = sphere_trace(ro, u, t0 * len, t1 * len, ms, s, count);
+      steps = float(count);
+      if (!hit) return false;
+      n = tetrahedral_normal(ro + s * u, max(march_epsilon(ms, s), 1.0e-5f));
+    }
+    t = s / len;
+    if (!hit_is_valid(t, t0, t1, rd, n, cull)) return false;
+  }
+  t_hit = t;
+  normal = rotate_y(n, angle);
+  return true;
+}
+
+#endif
