@@ -53,3 +53,11 @@ TEST_CASE("compile_glsl_file names a missing file") {
   CHECK_THROWS_WITH_AS(compile_glsl_file(ShaderStage::miss, "/nonexistent/x.rmiss"),
                        doctest::Contains("/nonexistent/x.rmiss"), std::runtime_error);
 }
+
+TEST_CASE("compile_glsl names a shader without an entry point") {
+  CHECK_THROWS_WITH_AS(compile_glsl({.stage = ShaderStage::miss,
+                                     .name = "no_main.rmiss",
+                                     .code = "#version 460\n#extension GL_EXT_ray_tracing : require\n"
+                                             "void shade() {}\n"}),
+                       doctest::Contains("no_main.rmiss"), ShaderCompileError);
+}
