@@ -1,0 +1,259 @@
+// The D3D12 procedural-geometry sample's scene, shader side: the structs that cross to the
+// GLSL, the primitives and their host-checked parameters, placements and defaults.
+//
+//   d3d12::SceneConstants c = d3d12::default_constants(1024, 768, time);   // binding 2
+//   d3d12::validate(d3d12::default_primitive(d3d12::cog));                 // throws on bad input
+//
+// Conventions the shaders in shaders/ (next to this file) rely on:
+//   set 0: binding 0 TLAS; binding 1 rgba8 storage image; binding 2 uniform SceneConstants (scalar).
+//   Rays:  radiance = 0 (miss radiance.rmiss), shadow = 1 (miss shadow.rmiss); traceRayEXT uses
+//          sbtRecordOffset = missIndex = ray index and sbtRecordStride = ray_count = 2.
+//   Hit groups, as in the sample (radiance | shadow):
+//          plane            triangles   plane.rchit                     | no shaders
+//          analytic         procedural  shade.rchit + analytic.rint     | analytic.rint
+//          volumetric       procedural  shade.rchit + volumetric.rint   | volumetric.rint
+//          signed_distance  procedural  shade.rchit + signed_distance.rint | signed_distance.rint
+//   Every hit record carries a PrimitiveRecord: the primitive's kind and parameters select the
+//   intersection function (shaders/primitives/d3d12_primitives.glsl) and its material.
+//   Each primitive is one AABB geometry [-1, 1]^3 with one instance; local space = object space.
+#pragma once
+
+#include <proceduray/scene/geometry.hpp>
+#include <proceduray/shader/shader.hpp>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace d3d12 {
+
+namespace pr = proceduray;
+
+/// SceneConstants::flags bits: shadows, reflections, and the debug view (r = object id,
+/// g and b = marching steps of the primary hit (low and high byte), a = 0 where any value was
+/// NaN or infinite, else 255).
+inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_debug = 4u;
+/// Radiance segments at most (primary + one reflection), and the recursion that allows (+ shadow).
+inline constexpr std::uint32_t max_depth_limit = 2, max_recursion_depth = max_depth_limit + 1;
+/// Metaball marches (SceneConstants::metaball_method), as in shaders/primitives/metaballs.glsl.
+inline constexpr std::uint32_t metaball_fixed = 0u, metaball_lipschitz = 1u;
+
+/// Primitive kinds, equal to the primitive_* and sdf_* consts of d3d12_primitives.glsl (a test checks).
+enum PrimitiveKind : std::uint32_t {
+  box, spheres, metaballs, mini_spheres, round_cube, square_torus, twisted_torus, cog, cylinder, fractal_pyramid,
+  primitive_count
+};
+inline constexpr std::array<std::string_view, primitive_count> primitive_names{
+    "box", "spheres", "metaballs", "mini_spheres", "round_cube", "square_torus", "twisted_torus", "cog", "cylinder",
+    "fractal_pyramid"};
+/// The sample's three intersection shaders: analytic, volumetric, signed distance.
+inline std::string_view hit_group_of(PrimitiveKind k) {
+  return k <= spheres ? "analytic" : (k == metaballs ? "volumetric" : "signed_distance");
+}
+/// Object ids of the debug view: 0 sky, 1 plane, 2 + kind for primitives.
+inline constexpr std::uint32_t sky_id = 0, plane_id = 1;
+inline constexpr std::uint32_t object_id(PrimitiveKind k) { return 2u + k; }
+
+/// Per-frame uniform (set 0, binding 2).
+struct SceneConstants {
+  pr::Camera camera;          ///< primary rays
+  glm::vec3 light_position;   ///< point light, world space
+  float ambient;              ///< ambient fraction of the albedo; default 0.2
+  glm::vec3 light_colour;     ///< default white
+  float time;                 ///< seconds: spins primitives and moves the metaballs (no AS work)
+  glm::vec3 sky_colour;       ///< zenith colour
+  std::uint32_t max_steps;    ///< sphere-tracing and Lipschitz-metaball steps at most; default 512 (the sample's)
+  float epsilon;              ///< absolute hit threshold, world units; default 1e-4
+  float footprint_scale;      ///< threshold in pixel footprints, max(epsilon, k * pixel_angle * t); default 0.5
+  float step_scale;           ///< extra factor on 1 / Lipschitz steps; default 1
+  std::uint32_t metaball_method;  ///< metaball_fixed (default) or metaball_lipschitz
+  std::uint32_t metaball_steps;   ///< fixed steps across the box; default 128 (the sample's)
+  std::uint32_t flags;        ///< flag_* bits; default shadows | reflections
+  std::uint32_t max_depth;    ///< radiance segments, primary included; <= max_depth_limit
+};
+PROCEDURAY_STRUCT(SceneConstants, scalar, camera, light_position, ambient, light_colour, time, sky_colour, max_steps,
+                  epsilon, footprint_scale, step_scale, metaball_method, metaball_steps, flags, max_depth);
+
+/// The radiance ray's payload (location 0).
+struct RadiancePayload {
+  glm::vec3 colour;         ///< linear RGB
+  std::uint32_t depth;      ///< 0 for primary rays
+  std::uint32_t object_id;  ///< of the hit (sky_id on a miss)
+  float steps;              ///< marching steps of the hit (0 for analytic surfaces)
+  std::uint32_t nonfinite;  ///< 1 when a hit produced a NaN or infinity anywhere
+};
+PROCEDURAY_STRUCT(RadiancePayload, scalar, colour, depth, object_id, steps, nonfinite);
+
+/// The shadow ray's payload (location 1): preset to 1, the shadow miss sets 0.
+struct ShadowPayload {
+  std::uint32_t occluded;
+};
+PROCEDURAY_STRUCT(ShadowPayload, scalar, occluded);
+
+/// What every intersection shader reports (16 bytes).
+struct ProceduralHit {
+  glm::vec3 normal;  ///< local (= object) space, outward, unit
+  float steps;       ///< distance or field evaluations (0 for analytic primitives)
+};
+PROCEDURAY_STRUCT(ProceduralHit, scalar, normal, steps);
+
+/// Hit record data (the sample's local root arguments): which primitive, its parameters, its material.
+struct PrimitiveRecord {
+  glm::vec3 albedo;         ///< base colour
+  float reflectance;        ///< Schlick F0; 0 = no reflection
+  glm::vec4 params;         ///< per kind, see validate()
+  std::uint32_t kind;       ///< PrimitiveKind (unused by the plane)
+  std::uint32_t object_id;  ///< for the debug view
+  float spin;               ///< radians per second about the local y axis
+  float checker;            ///< plane: checker square size; 0 = plain
+};
+PROCEDURAY_STRUCT(PrimitiveRecord, scalar, albedo, reflectance, params, kind, object_id, spin, checker);
+
+using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>, pr::RootComponent<SceneConstants>,
+                                      pr::RootArguments<PrimitiveRecord>, pr::Attributes<ProceduralHit>>;
+
+/// A primitive the host asks for: kind, parameters, material, spin.
+struct Primitive {
+  PrimitiveKind kind = box;
+  glm::vec4 params{1.0f, 0.0f, 0.0f, 0.0f};
+  glm::vec3 albedo{0.8f};
+  float reflectance = 0.1f;
+  float spin = 0.0f;
+};
+
+/// A host parameter that cannot make a primitive: names the operation, the value and the fix.
+struct PrimitiveError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Farthest reach of the primitive from the local y axis (for spin: it must stay in its AABB).
+inline float xz_reach(const Primitive& p) {
+  switch (p.kind) {
+    case box: return std::sqrt(p.params.x * p.params.x + p.params.z * p.params.z);
+    case spheres: return 0.3f * std::sqrt(2.0f) + 0.6f * p.params.x;
+    case metaballs: return 0.45f + p.params.x;
+    case mini_spheres: case cylinder: case fractal_pyramid: return std::sqrt(2.0f) * p.params.x;
+    case round_cube: return 0.98f * p.params.x;
+    case square_torus: return 0.9f * p.params.x;
+    case twisted_torus: case cog: return 0.92f * p.params.x;
+    case primitive_count: break;
+  }
+  return 0.0f;
+}
+
+/// Throws PrimitiveError unless `p` describes a primitive inside its AABB [-1, 1]^3. params:
+/// box: xyz half sizes in (0, 1]; spheres and SDFs: x scale in (0, 1]; metaballs: x influence
+/// radius in (0, 1], y threshold in (0, 1); twisted torus: y twist in [-8, 8] rad per unit;
+/// fractal pyramid: y iterations, a whole number in [0, 8]. spin: finite, and 0 unless the
+/// primitive's reach from the y axis is within 1.
+inline void validate(const Primitive& p) {
+  if (p.kind >= primitive_count) {
+    throw PrimitiveError("d3d12 primitive: kind " + std::to_string(p.kind) + " is not a PrimitiveKind; use one below " +
+                         std::to_string(primitive_count));
+  }
+  const std::string what = "d3d12 primitive '" + std::string(primitive_names[p.kind]) + "': ";
+  auto in = [](float v, float lo, float hi) { return std::isfinite(v) && v > lo && v <= hi; };
+  if (p.kind == box) {
+    for (int i = 0; i < 3; ++i) {
+      if (!in(p.params[i], 0.0f, 1.0f)) {
+        throw PrimitiveError(what + "half size " + std::to_string(p.params[i]) + " (params[" + std::to_string(i) +
+                             "]) must be in (0, 1]; a box needs positive sizes that fit its AABB [-1, 1]^3");
+      }
+    }
+  } else if (p.kind == metaballs) {
+    if (!in(p.params.x, 0.0f, 1.0f)) {
+      throw PrimitiveError(what + "influence radius " + std::to_string(p.params.x) +
+                           " (params.x) must be in (0, 1]; with 0 no source has any field");
+    }
+    if (!(std::isfinite(p.params.y) && p.params.y > 0.0f && p.params.y < 1.0f)) {
+      throw PrimitiveError(what + "threshold " + std::to_string(p.params.y) +
+                           " (params.y) must be in (0, 1): each source's potential is 1 at its centre");
+    }
+  } else if (!in(p.params.x, 0.0f, 1.0f)) {
+    throw PrimitiveError(what + (p.kind == spheres ? "radius scale " : "scale ") + std::to_string(p.params.x) +
+                         " (params.x) must be in (0, 1]; zero or negative sizes make no surface");
+  }
+  if (p.kind == twisted_torus && !(std::isfinite(p.params.y) && std::abs(p.params.y) <= 8.0f)) {
+    throw PrimitiveError(what + "twist " + std::to_string(p.params.y) +
+                         " (params.y) must be in [-8, 8] radians per unit height (its Lipschitz bound grows with it)");
+  }
+  if (p.kind == fractal_pyramid && !(p.params.y >= 0.0f && p.params.y <= 8.0f && p.params.y == std::floor(p.params.y))) {
+    throw PrimitiveError(what + "iterations " + std::to_string(p.params.y) + " (params.y) must be a whole number in [0, 8]");
+  }
+  if (!std::isfinite(p.spin)) throw PrimitiveError(what + "spin " + std::to_string(p.spin) + " must be finite");
+  if (p.spin != 0.0f && xz_reach(p) > 1.0f) {
+    throw PrimitiveError(what + "spin " + std::to_string(p.spin) + " turns a shape reaching " +
+                         std::to_string(xz_reach(p)) + " from its axis out of its AABB; use spin 0 or a smaller scale");
+  }
+}
+
+/// The sample-like defaults of each kind: parameters, colour, spin.
+inline Primitive default_primitive(PrimitiveKind k) {
+  static constexpr std::array<glm::vec3, primitive_count> colours{
+      glm::vec3{0.9f, 0.4f, 0.3f}, {0.3f, 0.6f, 0.95f}, {0.95f, 0.8f, 0.2f}, {0.5f, 0.85f, 0.5f}, {0.85f, 0.5f, 0.85f},
+      {0.3f, 0.85f, 0.85f}, {0.95f, 0.6f, 0.3f}, {0.7f, 0.7f, 0.75f}, {0.55f, 0.45f, 0.9f}, {0.9f, 0.75f, 0.55f}};
+  Primitive p{.kind = k, .albedo = colours[k]};
+  if (k == box) p.params = {0.6f, 0.6f, 0.6f, 0.0f};
+  if (k == metaballs) p.params = {0.6f, 0.25f, 0.0f, 0.0f};
+  if (k == twisted_torus) p.params = {1.0f, 3.0f, 0.0f, 0.0f};
+  if (k == fractal_pyramid) p.params = {1.0f, 4.0f, 0.0f, 0.0f};
+  if (k == square_torus || k == cog) p.spin = 0.6f;
+  if (k == twisted_torus) p.spin = 0.8f;
+  return p;
+}
+
+/// The whole sample set, in kind order.
+inline std::array<Primitive, primitive_count> default_primitives() {
+  std::array<Primitive, primitive_count> all;
+  for (std::uint32_t k = 0; k < primitive_count; ++k) all[k] = default_primitive(static_cast<PrimitiveKind>(k));
+  return all;
+}
+
+/// The hit record of a primitive.
+inline PrimitiveRecord record_of(const Primitive& p) {
+  return {p.albedo, p.reflectance, p.params, p.kind, object_id(p.kind), p.spin, 0.0f};
+}
+/// The ground's record: a reflective checker.
+inline constexpr PrimitiveRecord plane_record{{0.85f, 0.85f, 0.85f}, 0.25f, {}, 0, plane_id, 0.0f, 1.0f};
+/// The ground: y = 0, x and z within +-plane_half (world space).
+inline constexpr float plane_half = 14.0f;
+
+/// Where the scene puts primitive `k`: the sample's grid (two rows of five on the ground), or
+/// `isolated`, 100 units apart with no ground, so a camera sees one alone (tests, gallery, benchmark).
+enum class Layout { sample, isolated };
+inline glm::vec3 placement(PrimitiveKind k, Layout layout) {
+  if (layout == Layout::isolated) return {100.0f * static_cast<float>(k), 0.0f, 0.0f};
+  const float column = static_cast<float>(k % 5) - 2.0f, row = k < 5 ? 1.0f : -1.0f;
+  return {2.6f * column, 1.0f, 1.4f * row};
+}
+
+/// Camera on the whole sample grid.
+inline pr::Camera sample_camera(std::uint32_t width, std::uint32_t height) {
+  return pr::look_at({0.0f, 6.0f, 13.5f}, {0.0f, 0.5f, 0.0f}, 45.0f, width, height);
+}
+/// Camera on primitive k alone (Layout::isolated): from the front, a little above.
+inline pr::Camera isolated_camera(PrimitiveKind k, std::uint32_t width, std::uint32_t height) {
+  const glm::vec3 c = placement(k, Layout::isolated);
+  return pr::look_at(c + glm::vec3(0.0f, 1.8f, 4.2f), c, 40.0f, width, height);
+}
+
+/// Default knobs and light for `camera`, at `time` seconds.
+inline SceneConstants default_constants(const pr::Camera& camera, float time) {
+  const glm::vec3 eye(camera.eye);
+  return {camera, eye + glm::vec3(-6.0f, 9.0f, 2.0f), 0.2f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
+          512, 1e-4f, 0.5f, 1.0f, metaball_fixed, 128, flag_shadows | flag_reflections, max_depth_limit};
+}
+
+/// The C++ constants above that the shaders need, as GLSL consts.
+inline std::string extra_declarations() {
+  return pr::glsl_const("flag_shadows", flag_shadows) + pr::glsl_const("flag_reflections", flag_reflections) +
+         pr::glsl_const("flag_debug", flag_debug) + pr::glsl_const("max_depth_limit", max_depth_limit);
+}
+
+}  // namespace d3d12

@@ -1,0 +1,32 @@
+// The body of the three intersection shaders: the record's primitive, intersected in local
+// (= object) space with the knobs from `constants`, reported when valid for this ray
+// (t in [gl_RayTminEXT, gl_RayTmaxEXT], cull flags honoured: the sample's IsAValidHit).
+// Marching runs along the unit object-space direction: the world epsilon is divided by the
+// instance's scale; the footprint term is an angle and needs none.
+#ifndef D3D12_INTERSECT_GLSL
+#define D3D12_INTERSECT_GLSL
+
+#include "primitives/d3d12_primitives.glsl"
+
+void intersect_record_primitive() {
+  vec3 o = gl_ObjectRayOriginEXT;
+  vec3 d = gl_ObjectRayDirectionEXT;
+  uint cull = 0u;
+  if ((gl_IncomingRayFlagsEXT & gl_RayFlagsCullBackFacingTrianglesEXT) != 0u) cull |= hit_cull_back;
+  if ((gl_IncomingRayFlagsEXT & gl_RayFlagsCullFrontFacingTrianglesEXT) != 0u) cull |= hit_cull_front;
+  float len = max(length(d), 1.0e-30);
+  float world_per_object = max(length(gl_WorldRayDirectionEXT) / len, 1.0e-20);
+  MarchSettings m = MarchSettings(constants.max_steps, constants.epsilon / world_per_object,
+                                  constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale, 1.0);
+  float t;
+  vec3 n;
+  float steps;
+  if (!d3d12_intersect(record.kind, record.params, record.spin, constants.time, o, d, gl_RayTminEXT, gl_RayTmaxEXT,
+                       cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps))
+    return;
+  hit.normal = n;
+  hit.steps = steps;
+  reportIntersectionEXT(t, 0u);
+}
+
+#endif

@@ -1,0 +1,50 @@
+// Lighting shared by plane.rchit and shade.rchit: Phong, a shadow ray towards the point light
+// (the sample's flags: accept the first hit, skip closest hit, cull back faces), and one
+// Schlick-weighted reflection. The reflection reuses the incoming payload (glslang rejects a
+// second payload at location 0), saved and restored around the call.
+#ifndef D3D12_SURFACE_GLSL
+#define D3D12_SURFACE_GLSL
+
+#include "d3d12.glsl"
+#include "common/ray.glsl"
+#include "shading/phong.glsl"
+
+float light_visibility(vec3 origin, vec3 dir, float dist) {
+  shadow.occluded = 1u;
+  traceRayEXT(tlas, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT |
+              gl_RayFlagsCullBackFacingTrianglesEXT, 0xFF, shadow_ray, ray_count, shadow_ray, origin, 0.0, dir, dist, 1);
+  return shadow.occluded != 0u ? 0.0 : 1.0;
+}
+
+vec3 reflected_colour(vec3 origin, vec3 dir) {
+  RadiancePayload saved = payload;
+  payload.colour = vec3(0.0);
+  payload.depth = saved.depth + 1u;
+  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, radiance_ray, ray_count, radiance_ray, origin, 0.0, dir, ray_far, 0);
+  vec3 colour = payload.colour;
+  uint nonfinite = payload.nonfinite;
+  payload = saved;
+  payload.nonfinite |= nonfinite;
+  return colour;
+}
+
+/// Colour at world point p with world normal n; secondary rays start `offset` off the surface.
+vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float reflectance, float offset) {
+  vec3 v = -safe_normalize(gl_WorldRayDirectionEXT, n);
+  if (dot(n, v) < 0.0) n = -n;
+  vec3 to_light = constants.light_position - p;
+  float dist = length(to_light);
+  vec3 l = safe_normalize(to_light, n);
+  vec3 origin = offset_ray_origin(p + offset * n, n);
+  float visible = 1.0;
+  if ((constants.flags & flag_shadows) != 0u) visible = dot(n, l) > 0.0 ? light_visibility(origin, l, dist) : 0.0;
+  vec3 colour = constants.ambient * albedo + visible * phong(albedo, n, l, v, constants.light_colour, 0.9, 0.4, 40.0);
+  if ((constants.flags & flag_reflections) != 0u && reflectance > 0.0 &&
+      payload.depth + 1u < min(constants.max_depth, max_depth_limit)) {
+    float f = schlick_fresnel(reflectance, dot(n, v));
+    colour = mix(colour, reflected_colour(origin, reflect(-v, n)), f);
+  }
+  return colour;
+}
+
+#endif
