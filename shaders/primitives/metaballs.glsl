@@ -3,9 +3,11 @@
 // zero beyond the influence radius R. Two marches, both in [s_lo, s_hi] along a unit u:
 //   metaball_method_fixed      the D3D12 sample's: `steps` equal steps, then bisection of the
 //                              first sign change (thin necks narrower than a step are missed);
-//   metaball_method_lipschitz  steps of |F - threshold| / L, L = count * 1.875 / R the field's
-//                              Lipschitz bound (|f'| <= 1.875 at x = 1/2), so no step crosses
-//                              the surface; a hit when the bound falls below epsilon(s).
+//   metaball_method_lipschitz  steps of max(|F - threshold| / L, epsilon(s)), L = count * 1.875 / R
+//                              the field's Lipschitz bound (|f'| <= 1.875 at x = 1/2): no step
+//                              longer than epsilon crosses the surface; the crossing is bisected.
+//                              (Stopping where the bound falls below epsilon instead would accept
+//                              near misses within L * epsilon of the threshold: fat silhouettes.)
 //
 //   float s; vec3 n; uint steps;
 //   if (metaballs_march(o, u, s_lo, s_hi, 0.6f, 0.25f, time, metaball_method_fixed, 128u, m, s, n, steps)) ...
@@ -75,21 +77,33 @@ PROCEDURAY_INLINE bool metaballs_march(vec3 o, vec3 u, float s_lo, float s_hi, f
   bool start_inside = start_value > 0.0f;
   if (method == metaball_method_lipschitz) {
     float lipschitz = metaball_lipschitz(radius);
+    float a = s_lo;  // last point on the start's side
     float s = s_lo;
     float v = start_value;
     for (uint i = 0u; i < m.max_steps; ++i) {
-      float bound = abs(v) / lipschitz;  // no surface within this distance of o + s u
-      bool crossed = (v > 0.0f) != start_inside;
-      if (crossed || bound < march_epsilon(m, s)) {
-        found = true;
-        break;
-      }
-      s += max(bound, 0.5f * march_epsilon(m, s));
+      // No surface within |v| / L of o + s u; below the threshold the march takes epsilon(s)
+      // steps, so a crossing is bracketed by [a, s] and bisected as the fixed march does.
+      s = a + max(abs(v) / lipschitz, march_epsilon(m, a));
       if (s > s_hi) break;
       v = metaball_field(o + s * u, radius, time) - threshold;
       steps += 1u;
+      if ((v > 0.0f) != start_inside) {
+        found = true;
+        break;
+      }
+      a = s;
     }
-    s_hit = s;
+    if (found) {
+      float b = s;
+      for (uint k = 0u; k < metaball_bisections; ++k) {
+        float mid = 0.5f * (a + b);
+        float vm = metaball_field(o + mid * u, radius, time) - threshold;
+        steps += 1u;
+        if ((vm > 0.0f) != start_inside) b = mid;
+        else a = mid;
+      }
+      s_hit = b;
+    }
   } else {
     uint n = max(fixed_steps, 1u);
     float ds = (s_hi - s_lo) / float(n);

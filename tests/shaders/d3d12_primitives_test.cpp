@@ -101,6 +101,31 @@ TEST_CASE("metaball fixed and Lipschitz marches find the same surface") {
   }
 }
 
+TEST_CASE("metaball marches agree on coverage with a footprint threshold") {
+  // A coarse threshold (as far pixels get): the Lipschitz march must not accept near misses.
+  MarchSettings m = settings();
+  m.footprint = 0.01f;
+  std::size_t fixed_hits = 0, lipschitz_hits = 0, differ = 0;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      const glm::vec3 o(-1.0f + 0.05f * x, -1.0f + 0.05f * y, -4.0f);
+      float s;
+      glm::vec3 n;
+      std::uint32_t steps;
+      const bool a = metaballs_march(o, {0.0f, 0.0f, 1.0f}, 3.0f, 5.0f, 0.6f, 0.25f, 0.0f, metaball_method_fixed, 128u,
+                                     m, s, n, steps);
+      const bool b = metaballs_march(o, {0.0f, 0.0f, 1.0f}, 3.0f, 5.0f, 0.6f, 0.25f, 0.0f, metaball_method_lipschitz,
+                                     128u, m, s, n, steps);
+      fixed_hits += a;
+      lipschitz_hits += b;
+      differ += a != b;
+    }
+  }
+  CHECK(fixed_hits > 100);
+  CHECK(differ <= 8);
+  CHECK(std::abs(double(fixed_hits) - double(lipschitz_hits)) <= 8.0);
+}
+
 TEST_CASE("metaball falloff slope stays within the Lipschitz bound") {
   float steepest = 0.0f;
   for (int i = 0; i < 1000; ++i) {
