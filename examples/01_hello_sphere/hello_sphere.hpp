@@ -27,14 +27,6 @@ namespace pr = proceduray;
 namespace vk = proceduray::vk;
 
 // The data that crosses to the shaders, declared once here; the GLSL side is generated.
-/// Pinhole camera, pushed as push constants.
-struct Camera {
-  glm::vec4 eye;
-  glm::vec4 forward;  ///< unit view direction
-  glm::vec4 right;    ///< scaled by tan(fov/2) * aspect
-  glm::vec4 up;       ///< scaled by tan(fov/2)
-};
-PROCEDURAY_STRUCT(Camera, std430, eye, forward, right, up);
 /// The radiance ray's payload.
 struct Colour {
   glm::vec3 rgb;
@@ -56,12 +48,12 @@ struct MissRecord {
 };
 PROCEDURAY_STRUCT(MissRecord, scalar, background);
 
-using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Camera>,
+using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<pr::Camera>,
                                       pr::RootArguments<HitRecord, MissRecord>, pr::Attributes<SphereHit>>;
 
 /// Generated declarations each stage compiles with (see glsl_codegen.hpp).
 inline std::string raygen_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_push_constant<Camera>("camera") +
+  return pr::glsl_declarations<Interface>() + pr::glsl_push_constant<pr::Camera>("camera") +
          pr::glsl_ray_payload<Interface, Colour>("payload");
 }
 inline std::string miss_declarations() {
@@ -124,24 +116,9 @@ struct Layout {
   static constexpr float fov_y_degrees = 40.0f;
 };
 
-/// Camera looking at the origin from Layout::eye.
-inline Camera make_camera(std::uint32_t width, std::uint32_t height) {
-  const glm::vec3 forward = glm::normalize(-Layout::eye);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tan_half = std::tan(glm::radians(Layout::fov_y_degrees) * 0.5f);
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  return {glm::vec4(Layout::eye, 1), glm::vec4(forward, 0), glm::vec4(right * tan_half * aspect, 0),
-          glm::vec4(up * tan_half, 0)};
-}
-
-/// Pixel where a world point appears (the inverse of the raygen shader's mapping).
-inline glm::ivec2 project(const Camera& c, glm::vec3 p, std::uint32_t width, std::uint32_t height) {
-  const glm::vec3 v = p - glm::vec3(c.eye);
-  const float z = glm::dot(v, glm::vec3(c.forward));
-  const float u = glm::dot(v, glm::vec3(c.right)) / glm::dot(glm::vec3(c.right), glm::vec3(c.right)) / z;
-  const float w = glm::dot(v, glm::vec3(c.up)) / glm::dot(glm::vec3(c.up), glm::vec3(c.up)) / z;
-  return {static_cast<int>(std::floor((u + 1) * 0.5f * width)), static_cast<int>(std::floor((1 - w) * 0.5f * height))};
+/// The camera: at Layout::eye, looking at the origin (pushed as push constants).
+inline pr::Camera make_camera(std::uint32_t width, std::uint32_t height) {
+  return pr::look_at(Layout::eye, glm::vec3(0.0f), Layout::fov_y_degrees, width, height);
 }
 
 /// The GPU objects of the scene, built once; render() traces it at any size.
@@ -164,7 +141,7 @@ class HelloSphere {
     vk::check_trace_size(*m_ctx, width, height);
     vk::StorageImage image(*m_ctx, width, height);
     m_set.write(1, image.view());
-    const Camera camera = make_camera(width, height);
+    const pr::Camera camera = make_camera(width, height);
     vk::trace(*m_ctx, m_pipeline, m_set, m_sbt, width, height, vk::bytes_of(camera));
     return image.read();
   }
@@ -201,7 +178,7 @@ class HelloSphere {
     desc.groups = {vk::ShaderGroup::general_shader(rgen), vk::ShaderGroup::general_shader(miss),
                    vk::ShaderGroup::procedural(chit, isec)};
     desc.set_layouts = {set.layout()};
-    desc.push_constant_size = sizeof(Camera);
+    desc.push_constant_size = sizeof(pr::Camera);
     return desc;
   }
   static pr::SbtLayout sbt_layout(const vk::Context& ctx) {

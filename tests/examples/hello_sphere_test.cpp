@@ -34,7 +34,7 @@ bool is_background(Pixel p) {
 }
 
 glm::ivec2 centre_pixel(int instance) {
-  return hello_sphere::project(hello_sphere::make_camera(width, height), Layout::centres[instance], width, height);
+  return proceduray::project(hello_sphere::make_camera(width, height), Layout::centres[instance], width, height);
 }
 
 }  // namespace
@@ -89,9 +89,9 @@ TEST_CASE("hello sphere rays inside the box but outside the sphere miss") {
   const auto camera = hello_sphere::make_camera(width, height);
   // A point at 1.25 radii along the box's diagonal is inside the AABB's silhouette, outside the sphere.
   const glm::vec3 corner = Layout::centres[0] + Layout::radii[0] * glm::vec3(-0.85f, 0.85f, 0.0f);
-  CHECK(is_background(at(rgba, hello_sphere::project(camera, corner, width, height))));
+  CHECK(is_background(at(rgba, proceduray::project(camera, corner, width, height))));
   const glm::vec3 inside = Layout::centres[0] + Layout::radii[0] * glm::vec3(-0.5f, 0.5f, 0.0f);
-  CHECK_FALSE(is_background(at(rgba, hello_sphere::project(camera, inside, width, height))));
+  CHECK_FALSE(is_background(at(rgba, proceduray::project(camera, inside, width, height))));
 }
 
 TEST_CASE("hello sphere renders are byte identical") {
