@@ -18,6 +18,26 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+/// One benchmark row: median trace ms of 5 frames, then a debug frame for coverage and steps.
+void bench_row(proceduray::vk::Renderer& renderer, const std::string& name, d3d12::SceneConstants c, std::uint32_t w,
+               std::uint32_t h, std::uint32_t id) {
+  renderer.set(d3d12::constants_slot, c);
+  std::vector<double> ms;
+  for (int f = 0; f < 5; ++f) ms.push_back(renderer.render(w, h, false).trace_ms);
+  c.flags = d3d12::flag_debug;
+  renderer.set(d3d12::constants_slot, c);
+  const proceduray::vk::Frame debug = renderer.render(w, h);
+  std::size_t hits = 0;
+  double steps = 0;
+  for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
+    if (debug.rgba[i * 4] != id) continue;
+    ++hits;
+    steps += debug.rgba[i * 4 + 1] + 256.0 * debug.rgba[i * 4 + 2];
+  }
+  std::printf("%-16s %10.2f %8.1f%% %22.1f\n", name.c_str(), median(ms), 100.0 * double(hits) / (double(w) * h),
+              hits ? steps / double(hits) : 0.0);
+}
+
 /// Renders each primitive alone (Layout::isolated): the gallery tiles and the benchmark rows.
 void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, const char* gallery, bool bench) {
   d3d12::D3d12Scene scene(d3d12::default_primitives(), d3d12::Layout::isolated);
@@ -37,20 +57,11 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
                   std::size_t(w) * 4);
     }
     if (!bench) continue;
-    std::vector<double> ms;
-    for (int f = 0; f < 5; ++f) ms.push_back(renderer.render(w, h, false).trace_ms);
-    c.flags = d3d12::flag_debug;
-    renderer.set(d3d12::constants_slot, c);
-    const proceduray::vk::Frame debug = renderer.render(w, h);
-    std::size_t hits = 0;
-    double steps = 0;
-    for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
-      if (debug.rgba[i * 4] != d3d12::object_id(kind)) continue;
-      ++hits;
-      steps += debug.rgba[i * 4 + 1] + 256.0 * debug.rgba[i * 4 + 2];
+    bench_row(renderer, std::string(d3d12::primitive_names[k]), c, w, h, d3d12::object_id(kind));
+    if (kind == d3d12::metaballs) {
+      c.metaball_method = d3d12::metaball_lipschitz;
+      bench_row(renderer, "  (Lipschitz)", c, w, h, d3d12::object_id(kind));
     }
-    std::printf("%-16s %10.2f %8.1f%% %22.1f\n", std::string(d3d12::primitive_names[k]).c_str(), median(ms),
-                100.0 * double(hits) / (double(w) * h), hits ? steps / double(hits) : 0.0);
   }
   if (gallery) {
     proceduray::write_png(gallery, w * columns, h * rows, tiles);
