@@ -202,7 +202,9 @@ inline Primitive default_primitive(PrimitiveKind k) {
   if (k == box) p.params = {0.6f, 0.6f, 0.6f, 0.0f};
   if (k == metaballs) p.params = {0.6f, 0.25f, 0.0f, 0.0f};
   if (k == twisted_torus) p.params = {1.0f, 3.0f, 0.0f, 0.0f};
-  if (k == fractal_pyramid) p.params = {1.0f, 4.0f, 0.0f, 0.0f};
+  // 0.95: a surface lying on the AABB face (y = -1 at scale 1) hangs on the clip's rounding;
+  // on an H100 a row of base pixels missed that lavapipe and the CPU hit.
+  if (k == fractal_pyramid) p.params = {0.95f, 4.0f, 0.0f, 0.0f};
   if (k == square_torus || k == cog) p.spin = 0.6f;
   if (k == twisted_torus) p.spin = 0.8f;
   return p;

@@ -37,8 +37,11 @@ d3d12::SceneConstants debug_constants(const Camera& camera, float time, std::uin
 struct CpuPixel {
   bool in_aabb = false, hit = false;
 };
-CpuPixel cpu_pixel(const d3d12::Primitive& p, const d3d12::SceneConstants& c, std::uint32_t x, std::uint32_t y) {
-  const float u = (static_cast<float>(x) + 0.5f) / size * 2.0f - 1.0f, v = (static_cast<float>(y) + 0.5f) / size * 2.0f - 1.0f;
+CpuPixel cpu_pixel(const d3d12::Primitive& p, d3d12::SceneConstants c, std::uint32_t x, std::uint32_t y,
+                   float footprint_scale = -1.0f, float jitter = 0.0f) {
+  if (footprint_scale >= 0.0f) c.footprint_scale = footprint_scale;
+  const float u = (static_cast<float>(x) + 0.5f + jitter) / size * 2.0f - 1.0f;
+  const float v = (static_cast<float>(y) + 0.5f + jitter) / size * 2.0f - 1.0f;
   const glm::vec3 dir = glm::normalize(glm::vec3(c.camera.forward) + u * glm::vec3(c.camera.right) - v * glm::vec3(c.camera.up));
   const glm::vec3 o = glm::vec3(c.camera.eye) - d3d12::placement(p.kind, d3d12::Layout::isolated);
   CpuPixel out;
@@ -120,15 +123,26 @@ TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
         const d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), time, method);
         alone.renderer.set(d3d12::constants_slot, c);
         const vk::Frame f = alone.renderer.render(size, size);
-        std::size_t gpu = 0, cpu = 0, disagree = 0, outside_aabb = 0, nonfinite = 0, unstepped = 0;
+        // The CPU's answer at the GPU's hit threshold (0.5 pixel footprints), at 0.25 and 1, and
+        // for rays moved by +-0.02 pixel: a pixel is certain where all five agree. Elsewhere
+        // rounding (FMA contraction; where the fractal's distance bound jumps at fold seams, the
+        // march's sample points) may tip it either way: seen on an H100, 28 such pyramid pixels.
+        std::size_t gpu = 0, cpu = 0, tight = 0, loose = 0, disagree = 0, certain_disagree = 0, outside_aabb = 0,
+                    nonfinite = 0, unstepped = 0;
         for (std::uint32_t y = 0; y < size; ++y) {
           for (std::uint32_t x = 0; x < size; ++x) {
             const std::size_t i = (std::size_t(y) * size + x) * 4;
             const bool gpu_hit = f.rgba[i] == d3d12::object_id(p.kind);
             const CpuPixel c_px = cpu_pixel(p, c, x, y);
+            const bool tight_hit = cpu_pixel(p, c, x, y, 0.25f).hit, loose_hit = cpu_pixel(p, c, x, y, 1.0f).hit;
+            const bool stable = cpu_pixel(p, c, x, y, -1.0f, 0.02f).hit == c_px.hit &&
+                                cpu_pixel(p, c, x, y, -1.0f, -0.02f).hit == c_px.hit;
             gpu += gpu_hit;
             cpu += c_px.hit;
+            tight += tight_hit;
+            loose += loose_hit;
             disagree += gpu_hit != c_px.hit;
+            certain_disagree += stable && tight_hit == loose_hit && loose_hit == c_px.hit && gpu_hit != c_px.hit;
             outside_aabb += gpu_hit && !c_px.in_aabb;
             nonfinite += f.rgba[i + 3] != 255;
             unstepped += gpu_hit && p.kind > d3d12::spheres && f.rgba[i + 1] == 0 && f.rgba[i + 2] == 0;
@@ -138,12 +152,18 @@ TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
         CAPTURE(d3d12::primitive_names[p.kind]);
         CAPTURE(time);
         CAPTURE(method);
-        CHECK(cpu > n * 0.05);                          // the camera sees the primitive
-        CHECK(std::abs(double(gpu) - double(cpu)) <= n * 0.01);  // coverage within 1 % of the image
-        CHECK(disagree <= n * 0.02);                    // and per pixel (silhouettes may differ)
-        CHECK(outside_aabb == 0);                       // hits only inside the own AABB
-        CHECK(nonfinite == 0);                          // no NaN or infinity in any output
-        CHECK(unstepped == 0);                          // marched hits report their steps
+        CAPTURE(cpu);
+        CAPTURE(tight);
+        CAPTURE(loose);
+        CHECK(cpu > n * 0.05);                             // the camera sees the primitive
+        CHECK(double(gpu) >= double(tight) - n * 0.005);    // coverage between the tight and loose
+        CHECK(double(gpu) <= double(loose) + n * 0.005);    // thresholds' coverage
+        CHECK(std::abs(double(gpu) - double(cpu)) <= n * 0.02);  // and within 2 % of the image of the CPU's
+        CHECK(disagree <= n * 0.03);                       // per pixel, uncertain ones included
+        CHECK(certain_disagree <= n * 0.005);              // per pixel, where the answer is certain
+        CHECK(outside_aabb == 0);                          // hits only inside the own AABB
+        CHECK(nonfinite == 0);                             // no NaN or infinity in any output
+        CHECK(unstepped == 0);                             // marched hits report their steps
         if (p.kind == d3d12::metaballs && time == 0.0f) metaball_coverage[method] = gpu;
       }
     }
