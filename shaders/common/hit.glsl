@@ -2,8 +2,10 @@
 // in the ray's [t_min, t_max] and the ray's cull flags do not reject its facing, so an
 // intersection function can try its next candidate instead of reporting one the traversal drops.
 //
-//   uint cull = hit_cull_bits(gl_IncomingRayFlagsEXT);          // intersection shader (GLSL)
-//   if (hit_is_valid(t, t_lo, t_hi, d, n, cull)) { ... }        // n: outward normal
+//   uint cull = 0u;                                              // intersection shader (GLSL):
+//   if ((gl_IncomingRayFlagsEXT & gl_RayFlagsCullBackFacingTrianglesEXT) != 0u) cull |= hit_cull_back;
+//   if ((gl_IncomingRayFlagsEXT & gl_RayFlagsCullFrontFacingTrianglesEXT) != 0u) cull |= hit_cull_front;
+//   if (hit_is_valid(t, gl_RayTminEXT, gl_RayTmaxEXT, d, n, cull)) { ... }   // n: outward normal
 //
 // Facing follows the normal: dot(d, n) < 0 is front facing (entering), > 0 back facing.
 #ifndef PROCEDURAY_COMMON_HIT_GLSL
