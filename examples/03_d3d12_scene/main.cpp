@@ -3,6 +3,7 @@
 // rays, animated over --frames with no acceleration-structure work. Prints timings and the SBT.
 //   --gallery PATH  also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)
 //   --bench         per primitive alone at --size: trace ms (median of 5), coverage, mean steps
+#include "../common/run.hpp"
 #include "d3d12_scene.hpp"
 
 #include <algorithm>
@@ -13,10 +14,7 @@
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
+using examples::median;
 
 /// One benchmark row: median trace ms of 5 frames, then a debug frame for coverage and steps.
 void bench_row(proceduray::vk::Renderer& renderer, const std::string& name, d3d12::SceneConstants c, std::uint32_t w,
@@ -88,33 +86,24 @@ int main(int argc, char** argv) {
     proceduray::check_writable(o.out);
     if (gallery) proceduray::check_writable(gallery);
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
-    std::printf("device: %s\n", ctx.name().c_str());
     if (gallery || bench) {
+      std::printf("device: %s\n", ctx.name().c_str());
       isolated(ctx, o, gallery, bench);
       return ctx.validation_messages().empty() ? 0 : 1;
     }
     d3d12::D3d12Scene scene;
     const proceduray::ShaderBindingTable& sbt = scene.build(ctx.limits());
     proceduray::vk::Renderer renderer(ctx, sbt, d3d12::renderer_options(o.cache));
-    const auto& t = renderer.timings();
-    std::printf("acceleration structures: %.1f ms\nshaders compiled: %.1f ms\npipeline: %.1f ms (%s)\n",
-                t.acceleration_ms, t.compile_ms, t.pipeline_ms, t.pipeline_cached ? "from cache" : "cold");
     const proceduray::Camera camera = d3d12::sample_camera(o.width, o.height);
     renderer.set(d3d12::constants_slot, d3d12::default_constants(camera, 0.0f));
-    std::printf("warm-up: %.1f ms\n", renderer.warm_up());
-    std::vector<double> trace_ms;
-    proceduray::vk::Frame frame;
-    for (std::uint32_t f = 0; f < o.frames; ++f) {
-      // Only the uniform time changes: no TLAS refit, no BLAS work (frame.tlas_refit stays false).
+    examples::print_build(ctx, renderer);
+    // Only the uniform time changes: no TLAS refit, no BLAS work (the run reports "TLAS refit: no").
+    const examples::Run run = examples::run_frames(renderer, o, [&](std::uint32_t f) {
       renderer.set(d3d12::constants_slot, d3d12::default_constants(camera, 0.1f * static_cast<float>(f)));
-      frame = renderer.render(o.width, o.height, f + 1 == o.frames);
-      trace_ms.push_back(frame.trace_ms);
-    }
-    std::printf("trace: %.2f ms median of %u frames at %ux%u; TLAS refit: %s\n", median(trace_ms), o.frames, o.width,
-                o.height, frame.tlas_refit ? "yes" : "no");
+    });
+    examples::print_run(run, o);
     std::printf("%s", proceduray::format_sbt(sbt).c_str());
-    proceduray::write_png(o.out, o.width, o.height, frame.rgba);
-    std::printf("%s\n", std::filesystem::absolute(o.out).string().c_str());
+    examples::write_last(run, o);
     return ctx.validation_messages().empty() ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "03_d3d12_scene: %s\n", e.what());
