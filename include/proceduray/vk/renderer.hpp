@@ -354,21 +354,18 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   m_ctx->submit([&](VkCommandBuffer cmd) {
     if (m_transforms_dirty) m_tlas.record_update(*m_ctx, cmd, m_instances);
     m_transforms_dirty = false;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_pipeline->get());
     std::vector<VkDescriptorSet> sets;
     for (const auto& s : m_sets) sets.push_back(s->get());
-    if (!sets.empty()) {
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_pipeline->layout(), 0,
-                              static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
-    }
-    m_ctx->rt().cmd_set_ray_tracing_pipeline_stack_size(cmd, m_pipeline->stack_size());
-    if (m_queries) {
-      vkCmdResetQueryPool(cmd, m_queries.get(), 0, 2);
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, m_queries.get(), 0);
-    }
-    const auto& r = m_sbt->regions();
-    m_ctx->rt().cmd_trace_rays(cmd, &r[0], &r[1], &r[2], &r[3], width, height, 1);
-    if (m_queries) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, m_queries.get(), 1);
+    if (m_queries) vkCmdResetQueryPool(cmd, m_queries.get(), 0, 2);
+    const VkQueryPool queries = m_queries.get();
+    auto stamp = [queries](VkPipelineStageFlagBits stage, std::uint32_t query) {
+      return [=](VkCommandBuffer c) {
+        if (queries != VK_NULL_HANDLE) vkCmdWriteTimestamp(c, stage, queries, query);
+      };
+    };
+    record_trace(*m_ctx, cmd, *m_pipeline, sets, *m_sbt, width, height, {},
+                 std::function<void(VkCommandBuffer)>(stamp(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0)),
+                 std::function<void(VkCommandBuffer)>(stamp(VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 1)));
     recorded_ms = ms_since(host_start);
   });
   frame.host_ms = recorded_ms;

@@ -25,26 +25,41 @@ inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint3
 }
 
 /// Binds the pipeline, set 0 and the push constants, traces, and waits for the queue.
-inline void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
-                  const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
-                  std::span<const std::byte> push_constants = {}) {
-  check_trace_size(ctx, width, height);
+/// Records the binds (pipeline, sets 0..n-1, push constants), the stack size and one trace into `cmd`;
+/// `before` and `after` run right around vkCmdTraceRaysKHR (timestamps, say).
+template <class Around = void (*)(VkCommandBuffer)>
+void record_trace(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline,
+                  std::span<const VkDescriptorSet> sets, const SbtBuffer& sbt, std::uint32_t width,
+                  std::uint32_t height, std::span<const std::byte> push_constants = {},
+                  Around before = [](VkCommandBuffer) {}, Around after = [](VkCommandBuffer) {}) {
   if (push_constants.size() != pipeline.push_constant_size()) {
     throw std::invalid_argument("trace: " + std::to_string(push_constants.size()) +
                                 " bytes of push constants given but the pipeline declares " +
                                 std::to_string(pipeline.push_constant_size()));
   }
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.get());
+  if (!sets.empty()) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout(), 0,
+                            static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
+  }
+  if (!push_constants.empty()) {
+    vkCmdPushConstants(cmd, pipeline.layout(), all_ray_tracing_stages, 0,
+                       static_cast<std::uint32_t>(push_constants.size()), push_constants.data());
+  }
+  ctx.rt().cmd_set_ray_tracing_pipeline_stack_size(cmd, pipeline.stack_size());
+  before(cmd);
+  const auto& r = sbt.regions();
+  ctx.rt().cmd_trace_rays(cmd, &r[0], &r[1], &r[2], &r[3], width, height, 1);
+  after(cmd);
+}
+
+inline void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
+                  const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
+                  std::span<const std::byte> push_constants = {}) {
+  check_trace_size(ctx, width, height);
+  const VkDescriptorSet raw = set.get();
   ctx.submit([&](VkCommandBuffer cmd) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.get());
-    VkDescriptorSet raw = set.get();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout(), 0, 1, &raw, 0, nullptr);
-    if (!push_constants.empty()) {
-      vkCmdPushConstants(cmd, pipeline.layout(), all_ray_tracing_stages, 0,
-                         static_cast<std::uint32_t>(push_constants.size()), push_constants.data());
-    }
-    ctx.rt().cmd_set_ray_tracing_pipeline_stack_size(cmd, pipeline.stack_size());
-    const auto& r = sbt.regions();
-    ctx.rt().cmd_trace_rays(cmd, &r[0], &r[1], &r[2], &r[3], width, height, 1);
+    record_trace(ctx, cmd, pipeline, {&raw, 1}, sbt, width, height, push_constants);
   });
 }
 
