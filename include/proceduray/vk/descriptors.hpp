@@ -9,6 +9,7 @@
 
 #include <proceduray/vk/acceleration.hpp>
 
+#include <algorithm>
 #include <initializer_list>
 #include <map>
 #include <vector>
@@ -43,6 +44,9 @@ class DescriptorSet {
 
  private:
   VkDescriptorType type_of(std::uint32_t binding, const char* what) const;
+  /// The common part of a one-descriptor write; throws unless the binding's type is accepted.
+  VkWriteDescriptorSet write_info(std::uint32_t binding, const char* what,
+                                  std::initializer_list<VkDescriptorType> accepted, const void* next = nullptr) const;
 
   const Context* m_ctx;
   std::map<std::uint32_t, VkDescriptorType> m_types;
@@ -95,50 +99,41 @@ inline VkDescriptorType DescriptorSet::type_of(std::uint32_t binding, const char
   return it->second;
 }
 
-inline void DescriptorSet::write(std::uint32_t binding, const AccelerationStructure& tlas) {
-  if (type_of(binding, "an acceleration structure") != VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR) {
-    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) +
-                                " is not an acceleration structure binding");
+inline VkWriteDescriptorSet DescriptorSet::write_info(std::uint32_t binding, const char* what,
+                                                     std::initializer_list<VkDescriptorType> accepted,
+                                                     const void* next) const {
+  const VkDescriptorType type = type_of(binding, what);
+  if (std::find(accepted.begin(), accepted.end(), type) == accepted.end()) {
+    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) + " cannot hold " + what +
+                                "; write it to a binding of that type");
   }
+  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, next);
+  write.dstSet = m_set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  return write;
+}
+
+inline void DescriptorSet::write(std::uint32_t binding, const AccelerationStructure& tlas) {
   VkAccelerationStructureKHR handle = tlas.get();
   auto as = make<VkWriteDescriptorSetAccelerationStructureKHR>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
   as.accelerationStructureCount = 1;
   as.pAccelerationStructures = &handle;
-  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &as);
-  write.dstSet = m_set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  const auto write = write_info(binding, "an acceleration structure", {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR}, &as);
   vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
 }
 
 inline void DescriptorSet::write(std::uint32_t binding, VkImageView storage_image) {
-  if (type_of(binding, "a storage image") != VK_DESCRIPTOR_TYPE_STORAGE_IMAGE) {
-    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) +
-                                " is not a storage image binding");
-  }
-  VkDescriptorImageInfo image{VK_NULL_HANDLE, storage_image, VK_IMAGE_LAYOUT_GENERAL};
-  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  write.dstSet = m_set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const VkDescriptorImageInfo image{VK_NULL_HANDLE, storage_image, VK_IMAGE_LAYOUT_GENERAL};
+  auto write = write_info(binding, "a storage image", {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   write.pImageInfo = &image;
   vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
 }
 
 inline void DescriptorSet::write(std::uint32_t binding, const Buffer& buffer) {
-  const VkDescriptorType type = type_of(binding, "a buffer");
-  if (type != VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER && type != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER) {
-    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) +
-                                " is not a uniform or storage buffer binding");
-  }
-  VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
-  auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  write.dstSet = m_set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = type;
+  const VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
+  auto write = write_info(binding, "a buffer", {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   write.pBufferInfo = &info;
   vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
 }
