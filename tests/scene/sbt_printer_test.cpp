@@ -45,10 +45,10 @@ TEST_CASE("sbt_printer small scene prints the exact table") {
       "hit    |      2 |    192 | Tri         | Radiance | Plane    |        1 |         224 |          4\n"
       "hit    |      3 |    240 | TriShadow   | Shadow   | Plane    |        1 |         272 |          0\n"
       "\n"
-      "TLAS instance | BLAS  | instance | sbt offset\n"
-      "--------------+-------+----------+-----------\n"
-      "            0 | Plane |        0 |          0\n"
-      "            1 | Plane |        1 |          2\n";
+      "TLAS instance | BLAS  | instance | sbt offset | mask\n"
+      "--------------+-------+----------+------------+-----\n"
+      "            0 | Plane |        0 |          0 | 0xff\n"
+      "            1 | Plane |        1 |          2 | 0xff\n";
   CHECK(text == expected);
 }
 

@@ -1,5 +1,5 @@
-// Geometry: triangles (vertices + indices) or procedural (AABBs), its instance transforms,
-// its opaque flag and the BLAS it lives in.
+// Geometry: triangles (vertices + indices) or procedural (AABBs), its instance transforms and
+// masks, its opaque flag, how it changes over time and the BLAS it lives in.
 //
 //   auto pacman = scene.add_geometry("Pacman", proceduray::GeometryDesc::procedural(
 //       {{glm::vec3(-0.5f), glm::vec3(0.5f)}},                       // one AABB
@@ -7,7 +7,14 @@
 //
 // Each geometry gets its own BLAS unless `blas` names one shared with other geometries of
 // the same kind; its geometry index is its position in that BLAS (registration order).
-// Instances belong to the BLAS: geometries sharing one declare the same instances, or none.
+// Instances belong to the BLAS: geometries sharing one declare the same instances, or none,
+// and the same masks and update policy.
+//
+// The update policy says what the renderer may rebuild, so it does only that work:
+//   Static            built once and compacted; moving or reshaping it is an error
+//   DynamicTransform  instances move (Renderer::set_transform): TLAS refit, no BLAS work
+//   DynamicGeometry   boxes or vertices change too: BLAS refit for the same primitive count
+//                     and indices, BLAS rebuild when the topology changes, then a TLAS update
 #pragma once
 
 #include <cmath>
@@ -26,6 +33,14 @@ namespace proceduray {
 enum class GeometryKind : std::uint32_t { triangles = 0, procedural = 1 };
 
 inline const char* to_string(GeometryKind kind) { return kind == GeometryKind::triangles ? "triangles" : "procedural"; }
+
+/// How a geometry changes after it is built. CamelCase as engines name them (`static` is a keyword).
+enum class UpdatePolicy : std::uint32_t { Static = 0, DynamicTransform = 1, DynamicGeometry = 2 };
+
+inline const char* to_string(UpdatePolicy policy) {
+  constexpr const char* names[] = {"Static", "DynamicTransform", "DynamicGeometry"};
+  return names[static_cast<std::uint32_t>(policy)];
+}
 
 /// An axis-aligned box in BLAS space.
 struct Aabb {
@@ -56,6 +71,9 @@ struct GeometryDesc {
   std::vector<InstanceTransform> instances;      ///< TLAS instances of its BLAS; empty = inherit from the BLAS
   bool opaque = true;                            ///< VK_GEOMETRY_OPAQUE_BIT; default on (any-hit skipped)
   std::string blas;                              ///< BLAS shared with other geometries; empty = its own BLAS
+  std::uint8_t mask = 0xFF;                      ///< instance mask of every instance (Layers bits); default all
+  std::vector<std::uint8_t> instance_masks;      ///< per-instance masks overriding `mask`; empty or one per instance
+  UpdatePolicy update = UpdatePolicy::Static;    ///< what may change after the build; default Static
 
   /// A procedural geometry.
   static GeometryDesc procedural(std::vector<Aabb> aabbs, std::vector<InstanceTransform> instances = {identity_transform()}) {
@@ -190,6 +208,15 @@ inline void validate(const GeometryDesc& desc, std::string_view id, std::string_
                                    "; give finite positions");
       }
     }
+  }
+  if (!desc.instance_masks.empty() && desc.instance_masks.size() != desc.instances.size()) {
+    throw InvalidGeometryError(place() + " has " + std::to_string(desc.instance_masks.size()) + " instance masks for " +
+                               std::to_string(desc.instances.size()) + " instances; give one mask per instance, or "
+                               "none and set `mask` for all");
+  }
+  if (static_cast<std::uint32_t>(desc.update) > static_cast<std::uint32_t>(UpdatePolicy::DynamicGeometry)) {
+    throw InvalidGeometryError(place() + " has update policy " + std::to_string(static_cast<std::uint32_t>(desc.update)) +
+                               "; use UpdatePolicy::Static, DynamicTransform or DynamicGeometry");
   }
   for (std::size_t i = 0; i < desc.instances.size(); ++i) {
     if (!detail::valid_transform(desc.instances[i])) {

@@ -4,17 +4,23 @@
 //   std::string preamble = proceduray::glsl_for(sbt, ShaderStage::closest_hit, "shade.rchit");
 //
 // What a shader gets (names are the convention the shaders use):
-//   every stage   the structs of every registered type the scene uses, `const uint <ray>_ray`
-//                 per ray type and `ray_count`, and each named binding of the global signature
-//                 (acceleration structure, rgba8 storage image, typed uniform, or a readonly
-//                 storage buffer of T[] read as `<name>.data[i]`)
-//   raygen        `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index
-//   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of
+//   every stage   the structs of every registered type the scene uses; per ray type
+//                 `const uint <ray>_ray`, `<ray>_flags` and `<ray>_mask` (its RayDesc), and
+//                 `ray_count`; `layer_<name>` per layer; `<id>_callable` per callable; each
+//                 named binding of the global signature (acceleration structure, rgba8 storage
+//                 image, typed uniform, or a readonly storage buffer of T[] read as `<name>.data[i]`)
+//   raygen        `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index,
+//                 and `callableDataEXT <Data> <id>_call` per callable, at location = its index
+//   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of,
+//                 and the callables' data
 //   closest hit   `rayPayloadInEXT <Payload> payload` of the rays whose records use it, the
-//                 group's `hitAttributeEXT <Attributes> hit`, the entries' `record` block, and
-//                 `rayPayloadEXT` for the other ray types (to trace shadow rays, say)
-//   any hit       as closest hit, without outgoing payloads
+//                 group's `hitAttributeEXT <Attributes> hit`, the entries' `record` block,
+//                 `rayPayloadEXT` for the other ray types (to trace shadow rays, say), and the
+//                 callables' data
+//   any hit       as closest hit, without outgoing payloads or callable data
 //   intersection  `hitAttributeEXT <Attributes> hit` and the entries' `record` block
+//   callable      `callableDataInEXT <Data> call` of the callables it implements, their
+//                 `record` block, and the other callables' data
 // It throws SceneError when one shader is used in ways that need two different types (two
 // payloads, attributes or record types), naming them: split the shader or unify the types.
 #pragma once
@@ -100,6 +106,8 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
   for (std::uint32_t l = 0; l < scene.local_signatures().size(); ++l) {
     add_root(scene.local_signature(LocalSignatureId<>(l)).data_glsl);
   }
+  const auto callables = scene.callables().size();
+  for (std::uint32_t c = 0; c < callables; ++c) add_root(scene.callable(CallableId<>(c)).data_glsl);
   const std::vector<Binding>* bindings = nullptr;
   if (plan.global_signature.valid()) bindings = &scene.global_signature(plan.global_signature).desc.bindings;
   if (bindings != nullptr) {
@@ -108,9 +116,20 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
   std::string out = glsl_declarations(std::span<const TypeOps* const>(roots), true);
 
   for (std::uint32_t r = 0; r < rays; ++r) {
-    out += "const uint " + detail::glsl_identifier(scene.rays().name(r)) + "_ray = " + std::to_string(r) + "u;\n";
+    const std::string name = detail::glsl_identifier(scene.rays().name(r));
+    const RayDesc& desc = scene.ray(RayId<>(r)).desc;
+    out += "const uint " + name + "_ray = " + std::to_string(r) + "u;\n";
+    out += "const uint " + name + "_flags = " + std::to_string(static_cast<std::uint32_t>(desc.flags)) + "u;\n";
+    out += "const uint " + name + "_mask = " + std::to_string(desc.cull_mask) + "u;\n";
   }
   out += "const uint ray_count = " + std::to_string(rays) + "u;\n";
+  const auto layers = scene.layers().names();
+  for (std::uint32_t l = 0; l < layers.size(); ++l) {
+    out += "const uint layer_" + detail::glsl_identifier(layers[l]) + " = " + std::to_string(1u << l) + "u;\n";
+  }
+  for (std::uint32_t c = 0; c < callables; ++c) {
+    out += "const uint " + detail::glsl_identifier(scene.callables().name(c)) + "_callable = " + std::to_string(c) + "u;\n";
+  }
   if (bindings != nullptr) {
     for (const Binding& b : *bindings) {
       if (!b.name.empty()) out += detail::binding_glsl(b);
@@ -127,6 +146,17 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
     return "layout(shaderRecordEXT, " + std::string(to_string(t->rule)) + ") buffer " + std::string(t->glsl_name) +
            "ShaderRecord {\n" + detail::member_lines(*t) + "} record;\n";
   };
+  // Outgoing callable data, every callable but `skip` (the one a callable shader receives).
+  auto callable_data = [&](std::uint32_t skip) {
+    std::string text;
+    for (std::uint32_t c = 0; c < callables; ++c) {
+      if (c == skip) continue;
+      text += "layout(location = " + std::to_string(c) + ") callableDataEXT " +
+              std::string(scene.callable(CallableId<>(c)).data_glsl->glsl_name) + " " +
+              detail::glsl_identifier(scene.callables().name(c)) + "_call;\n";
+    }
+    return text;
+  };
   auto data_type = [&](const SbtRecord& record) -> const TypeOps* {
     const ShaderTableEntry* e = table.entry(record);
     if (e == nullptr || e->local_signature == no_index) return nullptr;
@@ -141,6 +171,7 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
         if (rec.group != no_index && plan.groups[rec.group].name == shader) records.push_back(data_type(rec));
       }
       out += record_block(records);
+      out += callable_data(no_index);
       break;
     }
     case ShaderStage::miss: {
@@ -156,6 +187,7 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
       }
       if (detail::one_type(payloads, shader, "payload") != nullptr) out += payload(location, true, "payload");
       out += record_block(records);
+      out += callable_data(no_index);
       break;
     }
     case ShaderStage::closest_hit:
@@ -188,10 +220,28 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
         for (std::uint32_t r = 0; r < rays; ++r) {
           if (r != location) out += payload(r, false, detail::glsl_identifier(scene.rays().name(r)));
         }
+        out += callable_data(no_index);
       }
       break;
     }
-    case ShaderStage::callable: break;
+    case ShaderStage::callable: {
+      std::vector<const TypeOps*> data, records;
+      std::uint32_t location = no_index;
+      const auto list = table.records(SbtRegionKind::callable);
+      for (std::uint32_t c = 0; c < list.size(); ++c) {
+        if (scene.callable(CallableId<>(c)).desc.shader != shader) continue;
+        data.push_back(scene.callable(CallableId<>(c)).data_glsl);
+        records.push_back(data_type(list[c]));
+        location = std::min(location, c);
+      }
+      if (const TypeOps* d = detail::one_type(data, shader, "callable data"); d != nullptr) {
+        out += "layout(location = " + std::to_string(location) + ") callableDataInEXT " + std::string(d->glsl_name) +
+               " call;\n";
+      }
+      out += record_block(records);
+      out += callable_data(location);
+      break;
+    }
   }
   return out;
 }

@@ -1,5 +1,5 @@
 // Strong ids for scene entities: an index into the scene's registry, typed by entity kind
-// and, for rays and local signatures, by the data type they carry.
+// and, for rays, local signatures and callables, by the data type they carry.
 //
 //   proceduray::RayId<RayPayload> radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss"});
 //   proceduray::RayId<> any_ray = radiance;          // typed ids convert to untyped ones
@@ -22,6 +22,7 @@ struct GeometryTag {};
 struct GlobalSignatureTag {};
 struct LocalSignatureTag {};
 struct EntryTag {};
+struct CallableTag {};
 
 /// A typed index into a scene registry; default-constructed ids are invalid.
 template <class Tag, class Data = void>
@@ -61,6 +62,9 @@ using GlobalSignatureId = Id<GlobalSignatureTag>;
 /// A local signature; Args is its record data type (void: untyped).
 template <class Args = void>
 using LocalSignatureId = Id<LocalSignatureTag, Args>;
+/// A callable shader; Data is the type it is called with (void: untyped).
+template <class Data = void>
+using CallableId = Id<CallableTag, Data>;
 /// A shader-table entry, in the order entries were added.
 using EntryId = Id<EntryTag>;
 

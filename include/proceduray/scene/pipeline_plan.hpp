@@ -45,7 +45,7 @@ struct PlannedGroup {
 /// Everything a pipeline needs, derived from the scene and its entries.
 struct PipelinePlan {
   std::vector<PlannedStage> stages;               ///< used stages, each once: raygen, miss, then hit stages
-  std::vector<PlannedGroup> groups;               ///< used groups: raygen, miss, then hit groups; handle order
+  std::vector<PlannedGroup> groups;               ///< used groups: raygen, miss, hit groups, callables; handle order
   std::uint32_t max_recursion_depth = 1;          ///< as declared by ShaderTable::set_max_recursion_depth
   std::uint32_t max_payload_size = 0;             ///< largest ray payload (bytes)
   std::uint32_t max_attribute_size = 0;           ///< largest hit attributes of a used hit group (bytes)

@@ -4,7 +4,7 @@
 //
 // It prints the regions (offset, stride, size, count), every record (region, index, byte
 // offset, group, ray, geometry, instance, data offset and size; instance "*" = the block
-// shared by instances without their own entries), and the TLAS instances' SBT offsets.
+// shared by instances without their own entries), and the TLAS instances' SBT offsets and masks.
 #pragma once
 
 #include <algorithm>
@@ -67,7 +67,7 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
   auto name_or_dash = [](const std::string& s) { return s.empty() ? std::string("-") : s; };
   std::vector<std::vector<std::string>> records{
       {"region", "record", "offset", "group", "ray", "geometry", "instance", "data offset", "data bytes"}};
-  for (std::uint32_t k = 0; k < 3; ++k) {
+  for (std::uint32_t k = 0; k < 4; ++k) {
     const auto kind = static_cast<SbtRegionKind>(k);
     const auto list = sbt.records(kind);
     for (std::uint32_t i = 0; i < list.size() && i < max_records; ++i) {
@@ -86,11 +86,15 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
     }
   }
   out += detail::format_table(records) + '\n';
-  std::vector<std::vector<std::string>> instances{{"TLAS instance", "BLAS", "instance", "sbt offset"}};
+  std::vector<std::vector<std::string>> instances{{"TLAS instance", "BLAS", "instance", "sbt offset", "mask"}};
+  auto hex = [](std::uint8_t m) {
+    const char digits[] = "0123456789abcdef";
+    return std::string("0x") + digits[m >> 4] + digits[m & 15];
+  };
   const auto tlas = sbt.instances();
   for (std::size_t i = 0; i < tlas.size() && i < max_records; ++i) {
     instances.push_back({std::to_string(i), scene.blases()[tlas[i].blas].name, std::to_string(tlas[i].instance),
-                         std::to_string(tlas[i].sbt_offset)});
+                         std::to_string(tlas[i].sbt_offset), hex(tlas[i].mask)});
   }
   if (tlas.size() > max_records) instances.push_back({"...", std::string("(") + std::to_string(tlas.size() - max_records) + " more)"});
   out += detail::format_table(instances);

@@ -8,6 +8,8 @@
 //                                                   .closest_hit = "pacman.rchit", .intersection = "pacman.rint"});
 //   auto geometry = scene.add_geometry("Pacman", proceduray::GeometryDesc::procedural({{}}, transforms));
 //   auto sig      = scene.add_local_signature<ProceduralArgs>("Procedural");
+//   scene.add_layer("casts_shadow");                            // named bits of instance masks
+//   auto tint     = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
 //   const proceduray::HitGroup* maybe = scene.find_hit_group("Pacman");   // nullptr if absent
 //   auto again = scene.ray_id<RayPayload>("Radiance");   // throws: unknown id, wrong payload type
 //
@@ -16,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,11 +29,13 @@
 #include <utility>
 #include <vector>
 
+#include "proceduray/scene/callable.hpp"
 #include "proceduray/scene/errors.hpp"
 #include "proceduray/scene/geometry.hpp"
 #include "proceduray/scene/global_signature.hpp"
 #include "proceduray/scene/hit_group.hpp"
 #include "proceduray/scene/ids.hpp"
+#include "proceduray/scene/layers.hpp"
 #include "proceduray/scene/local_signature.hpp"
 #include "proceduray/scene/ray.hpp"
 #include "proceduray/scene/registry.hpp"
@@ -44,6 +49,8 @@ struct Blas {
   GeometryKind kind = GeometryKind::procedural;  ///< kind of all its geometries
   std::vector<GeometryId> geometries;        ///< in geometry-index order
   std::vector<InstanceTransform> instances;  ///< one TLAS instance each
+  std::vector<std::uint8_t> masks;           ///< instance masks, one per instance
+  UpdatePolicy update = UpdatePolicy::Static;  ///< of all its geometries
   bool shared = false;                       ///< named by GeometryDesc::blas
 };
 
@@ -93,6 +100,8 @@ class Scene {
   GeometryId add_geometry(std::string id, GeometryDesc desc) {
     constexpr std::string_view op = "Scene::add_geometry";
     validate(desc, id, op);
+    std::vector<std::uint8_t> masks = desc.instance_masks;
+    if (masks.empty()) masks.assign(desc.instances.size(), desc.mask);
     // Every check comes before the first change, so a throw leaves the scene as it was.
     auto blas_index = static_cast<std::uint32_t>(m_blases.size());
     const bool shared = !desc.blas.empty();
@@ -102,20 +111,35 @@ class Scene {
         blas_index = it->second;
         new_blas = false;
         const Blas& blas = m_blases[blas_index];
+        auto refuse = [&](const std::string& what) {
+          return InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" " + what);
+        };
         if (blas.kind != desc.kind) {
-          throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" is " + to_string(desc.kind) +
-                                     " but BLAS \"" + blas.name + "\" holds " + to_string(blas.kind) +
-                                     " geometry; a BLAS holds one kind: name another BLAS");
+          throw refuse(std::string("is ") + to_string(desc.kind) + " but BLAS \"" + blas.name + "\" holds " +
+                       to_string(blas.kind) + " geometry; a BLAS holds one kind: name another BLAS");
+        }
+        if (blas.update != desc.update) {
+          throw refuse(std::string("is ") + to_string(desc.update) + " but BLAS \"" + blas.name + "\" is " +
+                       to_string(blas.update) + "; geometries sharing a BLAS share its instances and its builds, "
+                       "so declare the same update policy or name another BLAS");
         }
         if (!blas.instances.empty() && !desc.instances.empty() && desc.instances != blas.instances) {
-          throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" declares " +
-                                     std::to_string(desc.instances.size()) + " instances that differ from the " +
-                                     std::to_string(blas.instances.size()) + " of its BLAS \"" + blas.name +
-                                     "\"; instances belong to the BLAS: declare them once (others leave them empty)");
+          throw refuse("declares " + std::to_string(desc.instances.size()) + " instances that differ from the " +
+                       std::to_string(blas.instances.size()) + " of its BLAS \"" + blas.name +
+                       "\"; instances belong to the BLAS: declare them once (others leave them empty)");
+        }
+        if (!blas.instances.empty() && !desc.instances.empty() && masks != blas.masks) {
+          throw refuse("declares instance masks that differ from those of its BLAS \"" + blas.name +
+                       "\"; masks belong to the instances: declare them once, with the instances");
         }
       }
     }
+    if (desc.instances.empty() && (desc.mask != all_layers || !desc.instance_masks.empty())) {
+      throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" sets instance masks but declares no "
+                                 "instances; masks belong to the instances: set them on the geometry that declares them");
+    }
     const GeometryKind kind = desc.kind;
+    const UpdatePolicy update = desc.update;
     std::vector<InstanceTransform> instances = std::move(desc.instances);
     desc.instances.clear();
     std::string blas_name = !new_blas ? std::string() : shared ? desc.blas : id;
@@ -123,13 +147,39 @@ class Scene {
     const GeometryId gid(m_geometries.add(op, std::move(id), Geometry{std::move(desc), blas_index, geometry_index}));
     if (new_blas) {
       if (shared) m_shared_blas.emplace(blas_name, blas_index);
-      m_blases.push_back(Blas{std::move(blas_name), kind, {gid}, std::move(instances), shared});
+      m_blases.push_back(Blas{std::move(blas_name), kind, {gid}, std::move(instances), std::move(masks), update, shared});
     } else {
       Blas& blas = m_blases[blas_index];
-      if (blas.instances.empty()) blas.instances = std::move(instances);
+      if (blas.instances.empty()) {
+        blas.instances = std::move(instances);
+        blas.masks = std::move(masks);
+      }
       blas.geometries.push_back(gid);
     }
     return gid;
+  }
+
+  /// Adds a named layer (a bit of instance masks and cull masks) and returns its bit;
+  /// throws DuplicateIdError, or SceneError past eight layers.
+  std::uint8_t add_layer(std::string name) { return m_layers.add(std::move(name), "Scene::add_layer"); }
+  /// The union of the named layers' bits; throws UnknownIdError naming the known layers.
+  std::uint8_t layer_mask(std::initializer_list<std::string_view> names) const {
+    return m_layers.mask(names, "Scene::layer_mask");
+  }
+  /// The scene's layers, bit order.
+  const Layers& layers() const { return m_layers; }
+
+  /// Registers a callable shader called with Data; throws DuplicateIdError, SceneError for no shader.
+  template <class Data>
+  CallableId<Data> add_callable(std::string id, CallableDesc desc) {
+    static_assert(PayloadData<Data>,
+                  "Scene::add_callable: the callable data type (Data in the instantiation above) must be registered "
+                  "with PROCEDURAY_STRUCT: it is declared in GLSL as callableDataEXT from that registration");
+    if (desc.shader.empty()) {
+      throw SceneError("Scene::add_callable: callable " + detail::quote_id(id) + " has no shader; set .shader");
+    }
+    return CallableId<Data>(m_callables.add("Scene::add_callable", std::move(id),
+                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}));
   }
 
   /// Registers a global signature; throws SceneError for bad bindings, DuplicateIdError.
@@ -185,6 +235,18 @@ class Scene {
     return LocalSignatureId<Args>(index);
   }
 
+  /// The callable of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
+  template <class Data = void>
+  CallableId<Data> callable_id(std::string_view id) const {
+    const std::uint32_t index = m_callables.index_of(id, "Scene::callable_id");
+    if constexpr (!std::is_void_v<Data>) {
+      check_type(m_callables.entities()[index].data_type, typeid(Data), "Scene::callable_id", "callable", id, "data");
+    }
+    return CallableId<Data>(index);
+  }
+  /// The callable of an id; throws UnknownIdError.
+  const Callable& callable(CallableId<> id) const { return m_callables.at(id.index(), "Scene::callable"); }
+
   /// The ray of an id; throws UnknownIdError for an id this scene did not issue.
   const Ray& ray(RayId<> id) const { return m_rays.at(id.index(), "Scene::ray"); }
   /// The ray registered as `id`; throws UnknownIdError.
@@ -214,6 +276,8 @@ class Scene {
   const Registry<HitGroup>& hit_groups() const { return m_hit_groups; }
   /// All geometries in registration order.
   const Registry<Geometry>& geometries() const { return m_geometries; }
+  /// All callables in callable-index order.
+  const Registry<Callable>& callables() const { return m_callables; }
   /// All global signatures.
   const Registry<GlobalSignature>& global_signatures() const { return m_global_signatures; }
   /// All local signatures.
@@ -248,6 +312,8 @@ class Scene {
   Registry<Geometry> m_geometries{"geometry"};
   Registry<GlobalSignature> m_global_signatures{"global signature"};
   Registry<LocalSignature> m_local_signatures{"local signature"};
+  Registry<Callable> m_callables{"callable"};
+  Layers m_layers;
   std::vector<Blas> m_blases;
   std::unordered_map<std::string, std::uint32_t> m_shared_blas;
 };

@@ -47,7 +47,7 @@ struct ShaderTableEntry {
   std::uint32_t local_signature = no_index;   ///< local signature index; no_index = no record data
   std::uint32_t geometry = no_index;          ///< geometry index (hit); no_index for a default entry
   std::uint32_t instance = no_index;          ///< instance of the geometry's BLAS; no_index = all instances
-  std::uint32_t shader = no_index;            ///< raygen: index into ShaderTable::raygen_shaders()
+  std::uint32_t shader = no_index;            ///< raygen: index into ShaderTable::raygen_shaders(); callable: its index
   std::uint32_t data_size = 0;                ///< record data bytes
   std::uint64_t data_offset = 0;              ///< where they are in ShaderTable::data()
   bool is_default = false;                    ///< a per-(ray, kind) default hit entry
@@ -67,6 +67,7 @@ struct TlasInstance {
   std::uint32_t blas = 0;        ///< index into Scene::blases()
   std::uint32_t instance = 0;    ///< index into that BLAS's instances
   std::uint32_t sbt_offset = 0;  ///< instanceShaderBindingTableRecordOffset
+  std::uint8_t mask = 0xFF;      ///< instance mask (GeometryDesc::mask or instance_masks)
 };
 
 /// The answer of ShaderBindingTable::resolve.

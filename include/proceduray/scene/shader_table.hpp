@@ -10,6 +10,7 @@
 //   for (std::uint32_t i = 0; i < 3; ++i)
 //     table.add_hit(radiance, pacman_group, procedural_sig, ProceduralArgs{.instance = i}, pacman, i);
 //   table.set_default_hit(shadow, pacman_shadow);       // any procedural (shadow, geometry) left unbound
+//   table.add_callable(tint, tint_signature, TintArgs{...});   // optional: callable records exist per callable
 //   table.set_max_recursion_depth(2);
 //   proceduray::ShaderBindingTable sbt = table.build(limits);
 //
@@ -72,6 +73,13 @@ class ShaderTable {
     requires ArgumentsMatchSignature<Given, Args>
   EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Args> signature, const Given& data) {
     return add_miss_impl(ray.index(), signature.index(), &data, sizeof(Args));
+  }
+
+  /// Gives the record of callable `callable` record data; callables without it get a record with none.
+  template <class Data, RecordData Args, class Given>
+    requires ArgumentsMatchSignature<Given, Args>
+  EntryId add_callable(CallableId<Data> callable, LocalSignatureId<Args> signature, const Given& data) {
+    return add_callable_impl(callable.index(), signature.index(), &data, sizeof(Args));
   }
 
   /// Binds <ray, hit group> (no record data) to a geometry, or one instance of it.
@@ -189,6 +197,24 @@ class ShaderTable {
     e.data_offset = push_data(data, size);
     return push_entry(e);
   }
+  EntryId add_callable_impl(std::uint32_t callable, std::uint32_t signature, const void* data, std::uint32_t size) {
+    constexpr std::string_view op = "ShaderTable::add_callable";
+    m_scene->callables().check_index(callable, op);
+    m_scene->local_signatures().check_index(signature, op);
+    for (const ShaderTableEntry& other : m_entries) {
+      if (other.region == SbtRegionKind::callable && other.shader == callable) {
+        throw DuplicateIdError(std::string(op) + ": callable \"" + m_scene->callables().name(callable) +
+                               "\" already has an entry; a callable has one record: add it once");
+      }
+    }
+    ShaderTableEntry e;
+    e.region = SbtRegionKind::callable;
+    e.shader = callable;
+    e.local_signature = signature;
+    e.data_size = size;
+    e.data_offset = push_data(data, size);
+    return push_entry(e);
+  }
   EntryId add_hit_impl(std::string_view op, std::uint32_t ray, std::uint32_t group, std::uint32_t signature,
                        const void* data, std::uint32_t size, std::uint32_t geometry, std::uint32_t instance,
                        bool is_default) {
@@ -293,6 +319,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
   // Sort the entries: raygen, miss per ray, geometry-wide hit, defaults, instance-specific hit.
   std::vector<std::uint32_t> raygen;
   std::vector<std::uint32_t> miss_of_ray(ray_count, no_index);
+  std::vector<std::uint32_t> entry_of_callable(s.callables().size(), no_index);
   std::vector<std::uint32_t> wide(std::size_t{geometry_count} * ray_count, no_index);
   std::array<std::vector<std::uint32_t>, 2> defaults{std::vector<std::uint32_t>(ray_count, no_index),
                                                       std::vector<std::uint32_t>(ray_count, no_index)};
@@ -307,6 +334,8 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
       raygen.push_back(i);
     } else if (e.region == SbtRegionKind::miss) {
       miss_of_ray[e.ray] = i;
+    } else if (e.region == SbtRegionKind::callable) {
+      entry_of_callable[e.shader] = i;
     } else if (e.is_default) {
       defaults[static_cast<std::uint32_t>(s.hit_groups().entities()[e.hit_group].desc.kind)][e.ray] = i;
     } else if (e.instance == all_instances) {
@@ -374,6 +403,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
       TlasInstance& tlas = out.m_instances[first + i];
       tlas.blas = b;
       tlas.instance = i;
+      tlas.mask = blas.masks[i];
       const std::uint32_t begin = specific_start[first + i];
       const std::uint32_t end = specific_start[first + i + 1];
       if (begin == end) {
@@ -483,6 +513,12 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
     plan.max_attribute_size = std::max(plan.max_attribute_size, hg.attribute_size);
   }
   for (SbtRecord& record : hit) record.group = group_of_hit_group[m_entries[record.entry].hit_group];
+  // Callable records: one per registered callable, in callable-index order, after the hit groups.
+  for (std::uint32_t c = 0; c < s.callables().size(); ++c) {
+    const std::uint32_t group = general(ShaderStage::callable, s.callables().entities()[c].desc.shader);
+    out.m_records[3].push_back(SbtRecord{group, entry_of_callable[c], no_index, no_index, no_index});
+    use(entry_of_callable[c], SbtRegionKind::callable);
+  }
   for (std::uint32_t i = 0; i < signature_used.size(); ++i) {
     if (signature_used[i]) plan.local_signatures.push_back(LocalSignatureId<>(i));
   }
@@ -491,7 +527,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
       {static_cast<std::uint32_t>(out.m_records[0].size()), plan.max_record_data_size[0]},
       {static_cast<std::uint32_t>(out.m_records[1].size()), plan.max_record_data_size[1]},
       {static_cast<std::uint32_t>(hit.size()), plan.max_record_data_size[2]},
-      {0, 0}}});
+      {static_cast<std::uint32_t>(out.m_records[3].size()), plan.max_record_data_size[3]}}});
   return out;
 }
 
