@@ -18,35 +18,35 @@
 #include "compat.glsl"
 
 /// Direction components at or below this magnitude count as parallel to the slab.
-const float ray_parallel_epsilon = 1.0e-20f;
+PROCEDURAY_CONST real ray_parallel_epsilon = R(1.0e-20);
 
 /// One slab of the clip: narrows [t_near, t_far] to the t where o + t d lies in [lo, hi].
-PROCEDURAY_INLINE bool ray_clip_slab(float o, float d, float lo, float hi, PROCEDURAY_INOUT(float) t_near,
-                                     PROCEDURAY_INOUT(float) t_far) {
+PROCEDURAY_INLINE bool ray_clip_slab(real o, real d, real lo, real hi, PROCEDURAY_INOUT(real) t_near,
+                                     PROCEDURAY_INOUT(real) t_far) {
   if (abs(d) <= ray_parallel_epsilon) return o >= lo && o <= hi;  // parallel: all t or none
-  float inv = 1.0f / d;
-  float ta = (lo - o) * inv;
-  float tb = (hi - o) * inv;
+  real inv = R(1.0) / d;
+  real ta = (lo - o) * inv;
+  real tb = (hi - o) * inv;
   t_near = max(t_near, min(ta, tb));
   t_far = min(t_far, max(ta, tb));
   return t_near <= t_far;
 }
 
 /// Clips [t_near, t_far] to the box; false when nothing is left. An origin on a face counts as inside.
-PROCEDURAY_INLINE bool ray_clip_aabb(vec3 o, vec3 d, vec3 box_min, vec3 box_max, PROCEDURAY_INOUT(float) t_near,
-                                     PROCEDURAY_INOUT(float) t_far) {
+PROCEDURAY_INLINE bool ray_clip_aabb(real3 o, real3 d, real3 box_min, real3 box_max, PROCEDURAY_INOUT(real) t_near,
+                                     PROCEDURAY_INOUT(real) t_far) {
   return ray_clip_slab(o.x, d.x, box_min.x, box_max.x, t_near, t_far) &&
          ray_clip_slab(o.y, d.y, box_min.y, box_max.y, t_near, t_far) &&
          ray_clip_slab(o.z, d.z, box_min.z, box_max.z, t_near, t_far);
 }
 
 /// Whether t is a hit the ray accepts (the D3D12 sample's IsInRange): t_min <= t <= t_max.
-PROCEDURAY_INLINE bool t_in_range(float t, float t_min, float t_max) { return t >= t_min && t <= t_max; }
+PROCEDURAY_INLINE bool t_in_range(real t, real t_min, real t_max) { return t >= t_min && t <= t_max; }
 
 /// v / |v|, or `fallback` when |v| is too small to divide by (normalize(0) is NaN).
-PROCEDURAY_INLINE vec3 safe_normalize(vec3 v, vec3 fallback) {
-  float len2 = dot(v, v);
-  return len2 > 1.0e-30f ? v * inversesqrt(len2) : fallback;
+PROCEDURAY_INLINE real3 safe_normalize(real3 v, real3 fallback) {
+  real len2 = dot(v, v);
+  return len2 > R(1.0e-30) ? v * inversesqrt(len2) : fallback;
 }
 
 #ifndef __cplusplus

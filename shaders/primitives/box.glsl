@@ -15,12 +15,12 @@
 #include "../common/ray.glsl"
 
 /// First boundary point of [box_min, box_max] along o + t d with t in [t_lo, t_hi] that the cull bits accept.
-PROCEDURAY_INLINE bool ray_box(vec3 o, vec3 d, vec3 box_min, vec3 box_max, float t_lo, float t_hi, uint cull,
-                               PROCEDURAY_OUT(float) t_hit, PROCEDURAY_OUT(vec3) normal) {
-  t_hit = 0.0f;
-  normal = vec3(0.0f, 1.0f, 0.0f);
-  float t_near = -3.0e38f;  // finite stand-ins for -inf and +inf
-  float t_far = 3.0e38f;
+PROCEDURAY_INLINE bool ray_box(real3 o, real3 d, real3 box_min, real3 box_max, real t_lo, real t_hi, uint cull,
+                               PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
+  t_hit = R(0.0);
+  normal = real3(R(0.0), R(1.0), R(0.0));
+  real t_near = -R(3.0e38);  // finite stand-ins for -inf and +inf
+  real t_far = R(3.0e38);
   int near_axis = -1;
   int far_axis = -1;
   for (int i = 0; i < 3; ++i) {
@@ -28,18 +28,18 @@ PROCEDURAY_INLINE bool ray_box(vec3 o, vec3 d, vec3 box_min, vec3 box_max, float
       if (o[i] < box_min[i] || o[i] > box_max[i]) return false;  // parallel and outside the slab
       continue;
     }
-    float inv = 1.0f / d[i];
-    float ta = (box_min[i] - o[i]) * inv;
-    float tb = (box_max[i] - o[i]) * inv;
-    float lo = min(ta, tb);
-    float hi = max(ta, tb);
+    real inv = R(1.0) / d[i];
+    real ta = (box_min[i] - o[i]) * inv;
+    real tb = (box_max[i] - o[i]) * inv;
+    real lo = min(ta, tb);
+    real hi = max(ta, tb);
     if (lo > t_near) { t_near = lo; near_axis = i; }
     if (hi < t_far) { t_far = hi; far_axis = i; }
   }
   if (!(t_near <= t_far)) return false;
   if (near_axis >= 0) {
-    vec3 n = vec3(0.0f);
-    n[near_axis] = d[near_axis] > 0.0f ? -1.0f : 1.0f;
+    real3 n = real3(R(0.0));
+    n[near_axis] = d[near_axis] > R(0.0) ? -R(1.0) : R(1.0);
     if (hit_is_valid(t_near, t_lo, t_hi, d, n, cull)) {
       t_hit = t_near;
       normal = n;
@@ -47,8 +47,8 @@ PROCEDURAY_INLINE bool ray_box(vec3 o, vec3 d, vec3 box_min, vec3 box_max, float
     }
   }
   if (far_axis >= 0) {
-    vec3 n = vec3(0.0f);
-    n[far_axis] = d[far_axis] > 0.0f ? 1.0f : -1.0f;
+    real3 n = real3(R(0.0));
+    n[far_axis] = d[far_axis] > R(0.0) ? R(1.0) : -R(1.0);
     if (hit_is_valid(t_far, t_lo, t_hi, d, n, cull)) {
       t_hit = t_far;
       normal = n;

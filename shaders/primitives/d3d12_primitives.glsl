@@ -29,71 +29,71 @@
 #include "spheres.glsl"
 
 /// Primitive kinds: the analytic and volumetric ones here, the SDFs (3 to 9) in sdf.glsl.
-const uint primitive_box = 0u;
-const uint primitive_spheres = 1u;
-const uint primitive_metaballs = 2u;
-const uint primitive_kind_count = 10u;
+PROCEDURAY_CONST uint primitive_box = 0u;
+PROCEDURAY_CONST uint primitive_spheres = 1u;
+PROCEDURAY_CONST uint primitive_metaballs = 2u;
+PROCEDURAY_CONST uint primitive_kind_count = 10u;
 
 #ifdef __cplusplus
-inline uint d3d12_sdf_kind = 0u;  // what march_distance marches; set by d3d12_intersect
-inline vec4 d3d12_sdf_params = vec4(1.0f);
+static inline uint d3d12_sdf_kind = 0u;  // what march_distance marches; set by d3d12_intersect
+static inline real4 d3d12_sdf_params = real4(R(1.0));
 #else
 uint d3d12_sdf_kind;
-vec4 d3d12_sdf_params;
+real4 d3d12_sdf_params;
 #endif
 
-PROCEDURAY_INLINE float march_distance(vec3 p) { return sdf_distance(d3d12_sdf_kind, p, d3d12_sdf_params); }
+PROCEDURAY_INLINE real march_distance(real3 p) { return sdf_distance(d3d12_sdf_kind, p, d3d12_sdf_params); }
 
 #include "../marching/sphere_trace.glsl"
 #include "metaballs.glsl"
 
 /// v turned by angle a about the y axis.
-PROCEDURAY_INLINE vec3 rotate_y(vec3 v, float a) {
-  float c = cos(a);
-  float s = sin(a);
-  return vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+PROCEDURAY_INLINE real3 rotate_y(real3 v, real a) {
+  real c = cos(a);
+  real s = sin(a);
+  return real3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
 }
 
-PROCEDURAY_INLINE bool d3d12_intersect(uint kind, vec4 params, float spin, float time, vec3 o, vec3 d, float t_lo,
-                                       float t_hi, uint cull, MarchSettings m, uint metaball_method,
-                                       uint metaball_steps, PROCEDURAY_OUT(float) t_hit, PROCEDURAY_OUT(vec3) normal,
-                                       PROCEDURAY_OUT(float) steps) {
-  t_hit = 0.0f;
-  normal = vec3(0.0f, 1.0f, 0.0f);
-  steps = 0.0f;
-  float t0 = t_lo;
-  float t1 = t_hi;
-  if (!ray_clip_aabb(o, d, vec3(-1.0f), vec3(1.0f), t0, t1)) return false;
-  float angle = spin * time;
-  vec3 ro = rotate_y(o, -angle);
-  vec3 rd = rotate_y(d, -angle);
-  float t = 0.0f;
-  vec3 n = vec3(0.0f, 1.0f, 0.0f);
+PROCEDURAY_INLINE bool d3d12_intersect(uint kind, real4 params, real spin, real time, real3 o, real3 d, real t_lo,
+                                       real t_hi, uint cull, MarchSettings m, uint metaball_method,
+                                       uint metaball_steps, PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal,
+                                       PROCEDURAY_OUT(real) steps) {
+  t_hit = R(0.0);
+  normal = real3(R(0.0), R(1.0), R(0.0));
+  steps = R(0.0);
+  real t0 = t_lo;
+  real t1 = t_hi;
+  if (!ray_clip_aabb(o, d, real3(-R(1.0)), real3(R(1.0)), t0, t1)) return false;
+  real angle = spin * time;
+  real3 ro = rotate_y(o, -angle);
+  real3 rd = rotate_y(d, -angle);
+  real t = R(0.0);
+  real3 n = real3(R(0.0), R(1.0), R(0.0));
   if (kind == primitive_box) {
-    if (!ray_box(ro, rd, -vec3(params.x, params.y, params.z), vec3(params.x, params.y, params.z), t0, t1, cull, t, n))
+    if (!ray_box(ro, rd, -real3(params.x, params.y, params.z), real3(params.x, params.y, params.z), t0, t1, cull, t, n))
       return false;
   } else if (kind == primitive_spheres) {
     if (!ray_spheres(ro, rd, params.x, t0, t1, cull, t, n)) return false;
   } else {
-    float len = length(rd);
-    if (!(len > 0.0f)) return false;
-    vec3 u = rd / len;
-    float s = 0.0f;
+    real len = length(rd);
+    if (!(len > R(0.0))) return false;
+    real3 u = rd / len;
+    real s = R(0.0);
     uint count = 0u;
     if (kind == primitive_metaballs) {
       bool hit = metaballs_march(ro, u, t0 * len, t1 * len, params.x, params.y, time, metaball_method, metaball_steps,
                                  m, s, n, count);
-      steps = float(count);
+      steps = real(count);
       if (!hit) return false;
     } else {
       d3d12_sdf_kind = kind;
       d3d12_sdf_params = params;
       MarchSettings ms = m;
-      ms.step_scale = (m.step_scale > 0.0f ? m.step_scale : 1.0f) / sdf_lipschitz(kind, params);
+      ms.step_scale = (m.step_scale > R(0.0) ? m.step_scale : R(1.0)) / sdf_lipschitz(kind, params);
       bool hit = sphere_trace(ro, u, t0 * len, t1 * len, ms, s, count);
-      steps = float(count);
+      steps = real(count);
       if (!hit) return false;
-      n = tetrahedral_normal(ro + s * u, max(march_epsilon(ms, s), 1.0e-5f));
+      n = tetrahedral_normal(ro + s * u, max(march_epsilon(ms, s), R(1.0e-5)));
     }
     t = s / len;
     if (!hit_is_valid(t, t0, t1, rd, n, cull)) return false;

@@ -17,49 +17,49 @@
 #include "../common/compat.glsl"
 
 /// Quaternion product a b.
-PROCEDURAY_INLINE vec4 quat_mul(vec4 a, vec4 b) {
-  return vec4(a.x * b.x - a.y * b.y - a.z * b.z - a.w * b.w,
+PROCEDURAY_INLINE real4 quat_mul(real4 a, real4 b) {
+  return real4(a.x * b.x - a.y * b.y - a.z * b.z - a.w * b.w,
               a.x * b.y + a.y * b.x + a.z * b.w - a.w * b.z,
               a.x * b.z - a.y * b.w + a.z * b.x + a.w * b.y,
               a.x * b.w + a.y * b.z - a.z * b.y + a.w * b.x);
 }
 
 /// Quaternion square a a (cheaper than quat_mul(a, a)).
-PROCEDURAY_INLINE vec4 quat_square(vec4 a) {
-  return vec4(a.x * a.x - a.y * a.y - a.z * a.z - a.w * a.w, 2.0f * a.x * a.y, 2.0f * a.x * a.z, 2.0f * a.x * a.w);
+PROCEDURAY_INLINE real4 quat_square(real4 a) {
+  return real4(a.x * a.x - a.y * a.y - a.z * a.z - a.w * a.w, R(2.0) * a.x * a.y, R(2.0) * a.x * a.z, R(2.0) * a.x * a.w);
 }
 
 /// Escape radius: |z| beyond it diverges; large enough that the estimate is accurate.
-const float julia_bailout = 16.0f;
+PROCEDURAY_CONST real julia_bailout = R(16.0);
 
 /// Distance estimate to the Julia set of c after `iterations` steps (0 inside).
-PROCEDURAY_INLINE float julia_distance(vec3 p, vec4 c, uint iterations) {
-  vec4 z = vec4(p.x, p.y, p.z, 0.0f);
-  vec4 dz = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+PROCEDURAY_INLINE real julia_distance(real3 p, real4 c, uint iterations) {
+  real4 z = real4(p.x, p.y, p.z, R(0.0));
+  real4 dz = real4(R(1.0), R(0.0), R(0.0), R(0.0));
   bool escaped = false;
   for (uint i = 0u; i < iterations; ++i) {
-    dz = 2.0f * quat_mul(z, dz);
+    dz = R(2.0) * quat_mul(z, dz);
     z = quat_square(z) + c;
     if (dot(z, z) > julia_bailout * julia_bailout) {
       escaped = true;
       break;
     }
   }
-  if (!escaped) return 0.0f;
-  float r = length(z);
-  return 0.5f * r * log(r) / max(length(dz), 1.0e-20f);
+  if (!escaped) return R(0.0);
+  real r = length(z);
+  return R(0.5) * r * log(r) / max(length(dz), R(1.0e-20));
 }
 
 /// The Julia set intersected with the half-space dot(plane.xyz, p) <= plane.w (plane.xyz unit).
-PROCEDURAY_INLINE float julia_cut_distance(vec3 p, vec4 c, uint iterations, vec4 plane) {
-  float d_plane = dot(vec3(plane.x, plane.y, plane.z), p) - plane.w;
+PROCEDURAY_INLINE real julia_cut_distance(real3 p, real4 c, uint iterations, real4 plane) {
+  real d_plane = dot(real3(plane.x, plane.y, plane.z), p) - plane.w;
   return max(julia_distance(p, c, iterations), d_plane);
 }
 
 /// The animated constant: c(0) = (-0.2, 0.6, 0.2, 0.2), moving on a small loop around it.
-PROCEDURAY_INLINE vec4 julia_animated_c(float time) {
-  return vec4(-0.2f, 0.6f, 0.2f, 0.2f) +
-         0.1f * vec4(sin(0.9f * time), cos(0.7f * time) - 1.0f, sin(1.3f * time), 0.5f * sin(0.5f * time));
+PROCEDURAY_INLINE real4 julia_animated_c(real time) {
+  return real4(-R(0.2), R(0.6), R(0.2), R(0.2)) +
+         R(0.1) * real4(sin(R(0.9) * time), cos(R(0.7) * time) - R(1.0), sin(R(1.3) * time), R(0.5) * sin(R(0.5) * time));
 }
 
 #endif

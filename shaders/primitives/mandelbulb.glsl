@@ -15,35 +15,35 @@
 #include "../common/compat.glsl"
 
 /// Escape radius of the orbit.
-const float mandelbulb_bailout = 2.0f;
+PROCEDURAY_CONST real mandelbulb_bailout = R(2.0);
 
 /// Distance estimate to the power-8 Mandelbulb after `iterations` steps (0 inside).
-PROCEDURAY_INLINE float mandelbulb_distance(vec3 p, uint iterations) {
-  vec3 z = p;
-  float dr = 1.0f;
-  float r = length(z);
+PROCEDURAY_INLINE real mandelbulb_distance(real3 p, uint iterations) {
+  real3 z = p;
+  real dr = R(1.0);
+  real r = length(z);
   for (uint i = 0u; i < iterations && r <= mandelbulb_bailout; ++i) {
-    float r2 = r * r;
-    float r4 = r2 * r2;
-    dr = 8.0f * r4 * r2 * r * dr + 1.0f;
-    vec3 zn = vec3(0.0f);
-    if (r > 0.0f) {
-      float theta = 8.0f * acos(clamp(z.y / r, -1.0f, 1.0f));
-      float phi = (z.x == 0.0f && z.z == 0.0f) ? 0.0f : 8.0f * atan(z.x, z.z);
-      zn = (r4 * r4) * vec3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
+    real r2 = r * r;
+    real r4 = r2 * r2;
+    dr = R(8.0) * r4 * r2 * r * dr + R(1.0);
+    real3 zn = real3(R(0.0));
+    if (r > R(0.0)) {
+      real theta = R(8.0) * acos(clamp(z.y / r, -R(1.0), R(1.0)));
+      real phi = (z.x == R(0.0) && z.z == R(0.0)) ? R(0.0) : R(8.0) * atan(z.x, z.z);
+      zn = (r4 * r4) * real3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
     }
     z = zn + p;
     r = length(z);
   }
-  if (r <= mandelbulb_bailout) return 0.0f;
-  return 0.5f * r * log(r) / dr;
+  if (r <= mandelbulb_bailout) return R(0.0);
+  return R(0.5) * r * log(r) / dr;
 }
 
 /// Iteration count at `time`: starts at max_iterations and steps down by one twice a second,
 /// wrapping back to max_iterations after 1 (the report's animated Mandelbulb).
-PROCEDURAY_INLINE uint mandelbulb_animated_iterations(uint max_iterations, float time) {
+PROCEDURAY_INLINE uint mandelbulb_animated_iterations(uint max_iterations, real time) {
   uint n = max(max_iterations, 1u);
-  uint k = uint(min(max(time, 0.0f) * 2.0f, 1.0e9f));  // clamped: out-of-range float-to-uint is undefined
+  uint k = uint(min(max(time, R(0.0)) * R(2.0), R(1.0e9)));  // clamped: out-of-range float-to-uint is undefined
   return n - k % n;
 }
 

@@ -21,65 +21,65 @@
 #include "../common/ray.glsl"
 #include "../marching/sphere_trace.glsl"
 
-const uint metaball_count = 3u;
-const uint metaball_method_fixed = 0u;
-const uint metaball_method_lipschitz = 1u;
+PROCEDURAY_CONST uint metaball_count = 3u;
+PROCEDURAY_CONST uint metaball_method_fixed = 0u;
+PROCEDURAY_CONST uint metaball_method_lipschitz = 1u;
 /// Bisection iterations after the fixed march brackets the surface.
-const uint metaball_bisections = 10u;
+PROCEDURAY_CONST uint metaball_bisections = 10u;
 
 /// Source i at `time` seconds: each moves on its own slow path within |c| < 0.45.
-PROCEDURAY_INLINE vec3 metaball_centre(uint i, float time) {
-  if (i == 0u) return vec3(-0.3f + 0.15f * sin(1.1f * time), -0.25f, -0.1f);
-  if (i == 1u) return vec3(0.3f, -0.05f + 0.2f * cos(0.9f * time), 0.15f);
-  return vec3(0.2f * sin(0.7f * time + 1.0f), 0.3f, -0.15f * cos(1.3f * time));
+PROCEDURAY_INLINE real3 metaball_centre(uint i, real time) {
+  if (i == 0u) return real3(-R(0.3) + R(0.15) * sin(R(1.1) * time), -R(0.25), -R(0.1));
+  if (i == 1u) return real3(R(0.3), -R(0.05) + R(0.2) * cos(R(0.9) * time), R(0.15));
+  return real3(R(0.2) * sin(R(0.7) * time + R(1.0)), R(0.3), -R(0.15) * cos(R(1.3) * time));
 }
 
 /// The falloff of one source at x = distance / R; 1 at the centre, 0 from x = 1 on.
-PROCEDURAY_INLINE float metaball_falloff(float x) {
-  if (x >= 1.0f) return 0.0f;
-  float x3 = x * x * x;
-  return 1.0f - x3 * (x * (6.0f * x - 15.0f) + 10.0f);
+PROCEDURAY_INLINE real metaball_falloff(real x) {
+  if (x >= R(1.0)) return R(0.0);
+  real x3 = x * x * x;
+  return R(1.0) - x3 * (x * (R(6.0) * x - R(15.0)) + R(10.0));
 }
 
 /// F(p): the summed potential.
-PROCEDURAY_INLINE float metaball_field(vec3 p, float radius, float time) {
-  float f = 0.0f;
+PROCEDURAY_INLINE real metaball_field(real3 p, real radius, real time) {
+  real f = R(0.0);
   for (uint i = 0u; i < metaball_count; ++i) f += metaball_falloff(length(p - metaball_centre(i, time)) / radius);
   return f;
 }
 
 /// grad F(p), analytic: f'(x) / R * (p - c) / |p - c| = -30 x (1 - x)^2 / R^2 * (p - c), no division by |p - c|.
-PROCEDURAY_INLINE vec3 metaball_gradient(vec3 p, float radius, float time) {
-  vec3 g = vec3(0.0f);
+PROCEDURAY_INLINE real3 metaball_gradient(real3 p, real radius, real time) {
+  real3 g = real3(R(0.0));
   for (uint i = 0u; i < metaball_count; ++i) {
-    vec3 v = p - metaball_centre(i, time);
-    float x = length(v) / radius;
-    if (x < 1.0f) g += (-30.0f * x * (1.0f - x) * (1.0f - x) / (radius * radius)) * v;
+    real3 v = p - metaball_centre(i, time);
+    real x = length(v) / radius;
+    if (x < R(1.0)) g += (-R(30.0) * x * (R(1.0) - x) * (R(1.0) - x) / (radius * radius)) * v;
   }
   return g;
 }
 
 /// Lipschitz bound of F: each source's slope is at most 1.875 / R.
-PROCEDURAY_INLINE float metaball_lipschitz(float radius) { return float(metaball_count) * 1.875f / radius; }
+PROCEDURAY_INLINE real metaball_lipschitz(real radius) { return real(metaball_count) * R(1.875) / radius; }
 
 /// First crossing of F = threshold along o + s u (u unit) in [s_lo, s_hi]; m gives epsilon(s)
 /// and, for the Lipschitz method, max_steps; `steps` is the number of field evaluations.
-PROCEDURAY_INLINE bool metaballs_march(vec3 o, vec3 u, float s_lo, float s_hi, float radius, float threshold, float time,
-                                       uint method, uint fixed_steps, MarchSettings m, PROCEDURAY_OUT(float) s_hit,
-                                       PROCEDURAY_OUT(vec3) normal, PROCEDURAY_OUT(uint) steps) {
+PROCEDURAY_INLINE bool metaballs_march(real3 o, real3 u, real s_lo, real s_hi, real radius, real threshold, real time,
+                                       uint method, uint fixed_steps, MarchSettings m, PROCEDURAY_OUT(real) s_hit,
+                                       PROCEDURAY_OUT(real3) normal, PROCEDURAY_OUT(uint) steps) {
   s_hit = s_lo;
-  normal = vec3(0.0f, 1.0f, 0.0f);
+  normal = real3(R(0.0), R(1.0), R(0.0));
   steps = 0u;
-  if (!(radius > 0.0f) || !(s_hi >= s_lo)) return false;
+  if (!(radius > R(0.0)) || !(s_hi >= s_lo)) return false;
   bool found = false;
-  float start_value = metaball_field(o + s_lo * u, radius, time) - threshold;
+  real start_value = metaball_field(o + s_lo * u, radius, time) - threshold;
   steps = 1u;
-  bool start_inside = start_value > 0.0f;
+  bool start_inside = start_value > R(0.0);
   if (method == metaball_method_lipschitz) {
-    float lipschitz = metaball_lipschitz(radius);
-    float a = s_lo;  // last point on the start's side
-    float s = s_lo;
-    float v = start_value;
+    real lipschitz = metaball_lipschitz(radius);
+    real a = s_lo;  // last point on the start's side
+    real s = s_lo;
+    real v = start_value;
     for (uint i = 0u; i < m.max_steps; ++i) {
       // No surface within |v| / L of o + s u; below the threshold the march takes epsilon(s)
       // steps, so a crossing is bracketed by [a, s] and bisected as the fixed march does.
@@ -87,37 +87,37 @@ PROCEDURAY_INLINE bool metaballs_march(vec3 o, vec3 u, float s_lo, float s_hi, f
       if (s > s_hi) break;
       v = metaball_field(o + s * u, radius, time) - threshold;
       steps += 1u;
-      if ((v > 0.0f) != start_inside) {
+      if ((v > R(0.0)) != start_inside) {
         found = true;
         break;
       }
       a = s;
     }
     if (found) {
-      float b = s;
+      real b = s;
       for (uint k = 0u; k < metaball_bisections; ++k) {
-        float mid = 0.5f * (a + b);
-        float vm = metaball_field(o + mid * u, radius, time) - threshold;
+        real mid = R(0.5) * (a + b);
+        real vm = metaball_field(o + mid * u, radius, time) - threshold;
         steps += 1u;
-        if ((vm > 0.0f) != start_inside) b = mid;
+        if ((vm > R(0.0)) != start_inside) b = mid;
         else a = mid;
       }
       s_hit = b;
     }
   } else {
     uint n = max(fixed_steps, 1u);
-    float ds = (s_hi - s_lo) / float(n);
-    float a = s_lo;
+    real ds = (s_hi - s_lo) / real(n);
+    real a = s_lo;
     for (uint i = 1u; i <= n; ++i) {
-      float b = s_lo + float(i) * ds;
-      float v = metaball_field(o + b * u, radius, time) - threshold;
+      real b = s_lo + real(i) * ds;
+      real v = metaball_field(o + b * u, radius, time) - threshold;
       steps += 1u;
-      if ((v > 0.0f) != start_inside) {
+      if ((v > R(0.0)) != start_inside) {
         for (uint k = 0u; k < metaball_bisections; ++k) {  // keep a on the start's side, b across
-          float mid = 0.5f * (a + b);
-          float vm = metaball_field(o + mid * u, radius, time) - threshold;
+          real mid = R(0.5) * (a + b);
+          real vm = metaball_field(o + mid * u, radius, time) - threshold;
           steps += 1u;
-          if ((vm > 0.0f) != start_inside) b = mid;
+          if ((vm > R(0.0)) != start_inside) b = mid;
           else a = mid;
         }
         s_hit = b;

@@ -12,22 +12,22 @@
 
 #include "../common/compat.glsl"
 
-PROCEDURAY_INLINE bool ray_sphere(vec3 origin, vec3 direction, vec3 centre, float radius, PROCEDURAY_OUT(float) t_near,
-                                  PROCEDURAY_OUT(float) t_far) {
-  vec3 f = origin - centre;
-  float a = dot(direction, direction);
-  float b = dot(f, direction);
-  t_near = 0.0f;
-  t_far = 0.0f;
-  if (!(a > 0.0f)) return false;  // zero direction: no line, and b / a would be NaN
-  vec3 closest = f - (b / a) * direction;  // from the centre to the line's closest point
-  float disc = a * (radius * radius - dot(closest, closest));
-  if (disc < 0.0f) return false;
-  float q = -(b + (b >= 0.0f ? 1.0f : -1.0f) * sqrt(disc));
-  if (q == 0.0f) return true;  // tangent ray through the origin's foot: both roots are 0
-  float c = dot(f, f) - radius * radius;
-  float ta = c / q;
-  float tb = q / a;
+PROCEDURAY_INLINE bool ray_sphere(real3 origin, real3 direction, real3 centre, real radius, PROCEDURAY_OUT(real) t_near,
+                                  PROCEDURAY_OUT(real) t_far) {
+  real3 f = origin - centre;
+  real a = dot(direction, direction);
+  real b = dot(f, direction);
+  t_near = R(0.0);
+  t_far = R(0.0);
+  if (!(a > R(0.0))) return false;  // zero direction: no line, and b / a would be NaN
+  real3 closest = f - (b / a) * direction;  // from the centre to the line's closest point
+  real disc = a * (radius * radius - dot(closest, closest));
+  if (disc < R(0.0)) return false;
+  real q = -(b + (b >= R(0.0) ? R(1.0) : -R(1.0)) * sqrt(disc));
+  if (q == R(0.0)) return true;  // tangent ray through the origin's foot: both roots are 0
+  real c = dot(f, f) - radius * radius;
+  real ta = c / q;
+  real tb = q / a;
   t_near = min(ta, tb);
   t_far = max(ta, tb);
   return true;

@@ -14,28 +14,28 @@
 #include "../common/ray.glsl"
 #include "sphere.glsl"
 
-const uint spheres_count = 3u;
+PROCEDURAY_CONST uint spheres_count = 3u;
 
 /// Sphere i: xyz centre, w radius (before radius_scale).
-PROCEDURAY_INLINE vec4 spheres_centre_radius(uint i) {
-  if (i == 0u) return vec4(-0.3f, -0.3f, -0.3f, 0.6f);
-  if (i == 1u) return vec4(0.1f, 0.1f, 0.4f, 0.3f);
-  return vec4(0.35f, 0.35f, 0.0f, 0.15f);
+PROCEDURAY_INLINE real4 spheres_centre_radius(uint i) {
+  if (i == 0u) return real4(-R(0.3), -R(0.3), -R(0.3), R(0.6));
+  if (i == 1u) return real4(R(0.1), R(0.1), R(0.4), R(0.3));
+  return real4(R(0.35), R(0.35), R(0.0), R(0.15));
 }
 
 /// First valid point of one sphere's boundary (entry, else exit) in [t_lo, t_hi].
-PROCEDURAY_INLINE bool ray_sphere_first(vec3 o, vec3 d, vec3 centre, float radius, float t_lo, float t_hi, uint cull,
-                                        PROCEDURAY_OUT(float) t_hit, PROCEDURAY_OUT(vec3) normal) {
-  t_hit = 0.0f;
-  normal = vec3(0.0f, 1.0f, 0.0f);
-  float ta, tb;
-  if (!(radius > 0.0f) || !ray_sphere(o, d, centre, radius, ta, tb)) return false;
+PROCEDURAY_INLINE bool ray_sphere_first(real3 o, real3 d, real3 centre, real radius, real t_lo, real t_hi, uint cull,
+                                        PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
+  t_hit = R(0.0);
+  normal = real3(R(0.0), R(1.0), R(0.0));
+  real ta, tb;
+  if (!(radius > R(0.0)) || !ray_sphere(o, d, centre, radius, ta, tb)) return false;
   for (int k = 0; k < 2; ++k) {
-    float t = k == 0 ? ta : tb;
-    vec3 n = (o + t * d - centre) / radius;
+    real t = k == 0 ? ta : tb;
+    real3 n = (o + t * d - centre) / radius;
     if (hit_is_valid(t, t_lo, t_hi, d, n, cull)) {
       t_hit = t;
-      normal = safe_normalize(n, vec3(0.0f, 1.0f, 0.0f));
+      normal = safe_normalize(n, real3(R(0.0), R(1.0), R(0.0)));
       return true;
     }
   }
@@ -43,22 +43,22 @@ PROCEDURAY_INLINE bool ray_sphere_first(vec3 o, vec3 d, vec3 centre, float radiu
 }
 
 /// The nearest valid hit over the spheres, radii times radius_scale.
-PROCEDURAY_INLINE bool ray_spheres(vec3 o, vec3 d, float radius_scale, float t_lo, float t_hi, uint cull,
-                                   PROCEDURAY_OUT(float) t_hit, PROCEDURAY_OUT(vec3) normal) {
+PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, real radius_scale, real t_lo, real t_hi, uint cull,
+                                   PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
   bool found = false;
   t_hit = t_hi;
-  normal = vec3(0.0f, 1.0f, 0.0f);
+  normal = real3(R(0.0), R(1.0), R(0.0));
   for (uint i = 0u; i < spheres_count; ++i) {
-    vec4 s = spheres_centre_radius(i);
-    float t;
-    vec3 n;
-    if (ray_sphere_first(o, d, vec3(s.x, s.y, s.z), s.w * radius_scale, t_lo, t_hit, cull, t, n)) {
+    real4 s = spheres_centre_radius(i);
+    real t;
+    real3 n;
+    if (ray_sphere_first(o, d, real3(s.x, s.y, s.z), s.w * radius_scale, t_lo, t_hit, cull, t, n)) {
       found = true;
       t_hit = t;
       normal = n;
     }
   }
-  if (!found) t_hit = 0.0f;
+  if (!found) t_hit = R(0.0);
   return found;
 }
 

@@ -12,19 +12,19 @@
 #include "../common/compat.glsl"
 
 /// Diffuse plus specular reflection of one light; no ambient term.
-PROCEDURAY_INLINE vec3 phong(vec3 albedo, vec3 n, vec3 l, vec3 v, vec3 light_colour, float diffuse, float specular,
-                             float shininess) {
-  float n_dot_l = max(dot(n, l), 0.0f);
-  vec3 r = 2.0f * dot(n, l) * n - l;  // l mirrored about n
-  float spec = n_dot_l > 0.0f ? pow(max(dot(r, v), 0.0f), max(shininess, 1.0f)) : 0.0f;
-  return light_colour * (diffuse * n_dot_l * albedo + specular * spec * vec3(1.0f));
+PROCEDURAY_INLINE real3 phong(real3 albedo, real3 n, real3 l, real3 v, real3 light_colour, real diffuse, real specular,
+                             real shininess) {
+  real n_dot_l = max(dot(n, l), R(0.0));
+  real3 r = R(2.0) * dot(n, l) * n - l;  // l mirrored about n
+  real spec = n_dot_l > R(0.0) ? pow(max(dot(r, v), R(0.0)), max(shininess, R(1.0))) : R(0.0);
+  return light_colour * (diffuse * n_dot_l * albedo + specular * spec * real3(R(1.0)));
 }
 
 /// Schlick's Fresnel reflectance for normal-incidence reflectance f0 at cos_theta = dot(n, v).
-PROCEDURAY_INLINE float schlick_fresnel(float f0, float cos_theta) {
-  float m = clamp(1.0f - cos_theta, 0.0f, 1.0f);
-  float m2 = m * m;
-  return f0 + (1.0f - f0) * m2 * m2 * m;
+PROCEDURAY_INLINE real schlick_fresnel(real f0, real cos_theta) {
+  real m = clamp(R(1.0) - cos_theta, R(0.0), R(1.0));
+  real m2 = m * m;
+  return f0 + (R(1.0) - f0) * m2 * m2 * m;
 }
 
 #endif
