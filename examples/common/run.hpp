@@ -5,15 +5,22 @@
 //   auto run = examples::run_frames(renderer, o, [&](std::uint32_t f) { renderer.set(slot, constants(f)); });
 //   examples::print_run(run, o);
 //   examples::write_last(run, o);   // PNG, then its path
+//
+//   // or all of the above for a SceneTables type with renderer_options(cache), in one call:
+//   return examples::run_scene<MyScene>(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
+//                                       [](const examples::Options& o, std::uint32_t frame) { return constants; });
 #pragma once
 
 #include "cli.hpp"
 
 #include <proceduray/image/png.hpp>
+#include <proceduray/scene/sbt_printer.hpp>
+#include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/renderer.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <vector>
 
@@ -69,6 +76,33 @@ inline void print_run(const Run& run, const Options& o) {
 inline void write_last(const Run& run, const Options& o) {
   proceduray::write_png(o.out, o.width, o.height, run.last.rgba);
   std::printf("%s\n", std::filesystem::absolute(o.out).string().c_str());
+}
+
+/// A scene example's whole program: options, device, the renderer of Scene (a SceneTables with
+/// renderer_options(cache)), the build report, o.frames frames with `slot` set to constants(o, frame)
+/// before each (and before the warm-up), their medians, the SBT and the PNG. Returns the exit code:
+/// 1 on an exception (printed with the program's name) or a validation message, else 0.
+template <class Scene, class T, class Constants>
+int run_scene(int argc, char** argv, const char* program, Options defaults, proceduray::UniformSlot<T> slot,
+              Constants constants) {
+  const Options o = parse(argc, argv, program, defaults);
+  if (o.exit) return *o.exit;
+  try {
+    proceduray::check_writable(o.out);  // fail before the expensive part
+    proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
+    Scene scene;
+    proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), scene.renderer_options(o.cache));
+    renderer.set(slot, constants(o, 0u));
+    print_build(ctx, renderer);
+    const Run run = run_frames(renderer, o, [&](std::uint32_t f) { renderer.set(slot, constants(o, f)); });
+    print_run(run, o);
+    std::printf("%s", proceduray::format_sbt(scene.sbt()).c_str());
+    write_last(run, o);
+    return ctx.validation_messages().empty() ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", program, e.what());
+    return 1;
+  }
 }
 
 }  // namespace examples

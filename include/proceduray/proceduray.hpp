@@ -10,9 +10,15 @@
 #pragma once
 
 #include <proceduray/image/png.hpp>
+#include <proceduray/scene/aabb_glsl.hpp>
+#include <proceduray/scene/default_global_signature.hpp>
 #include <proceduray/scene/glsl_for.hpp>
+#include <proceduray/scene/object.hpp>
+#include <proceduray/scene/placement.hpp>
+#include <proceduray/scene/quad_mesh.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
+#include <proceduray/scene/scene_tables.hpp>
 #include <proceduray/scene/shader_table.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/shader.hpp>

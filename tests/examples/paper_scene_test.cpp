@@ -14,7 +14,7 @@ constexpr std::uint32_t height = 96;
 struct Paper {
   paper::PaperScene scene;
   vk::Renderer renderer;
-  explicit Paper(const vk::Context& ctx) : renderer(ctx, scene.build(ctx.limits()), paper::renderer_options()) {}
+  explicit Paper(const vk::Context& ctx) : renderer(ctx, scene.build(ctx.limits()), scene.renderer_options()) {}
 
   vk::Frame render(float time, std::uint32_t flags) {
     paper::SceneConstants c = paper::default_constants(width, height, time);

@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -28,15 +29,17 @@ vk::ShaderStage stage_of(const std::filesystem::path& file) {
   return vk::ShaderStage::intersection;
 }
 
-/// The scene's built table; a device's limits are not needed to derive declarations.
-const proceduray::ShaderBindingTable& paper_table() {
+/// The scene with its table built; a device's limits are not needed to derive declarations.
+const paper::PaperScene& paper_scene() {
   static paper::PaperScene scene;
-  static const proceduray::ShaderBindingTable& table = scene.build(proceduray::DeviceLimits{});
-  return table;
+  static const bool built = (scene.build(proceduray::DeviceLimits{}), true);
+  REQUIRE(built);
+  return scene;
 }
 
 std::string declarations(std::string_view file) {
-  return proceduray::glsl_for(paper_table(), stage_of(std::filesystem::path(file)), file) + paper::extra_declarations();
+  return proceduray::glsl_for(paper_scene().sbt(), stage_of(std::filesystem::path(file)), file) +
+         paper::extra_declarations + proceduray::glsl_aabb_consts(paper_scene().scene);
 }
 
 std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
@@ -48,7 +51,9 @@ std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
 }  // namespace
 
 TEST_CASE("every paper scene shader compiles with its generated declarations") {
-  for (std::string_view file : paper::shader_files) {
+  REQUIRE(paper_scene().sbt().plan().stages.size() == 8);  // raygen, 2 miss, 2 closest hit, 3 intersection
+  for (const proceduray::PlannedStage& stage : paper_scene().sbt().plan().stages) {
+    const std::string_view file = stage.shader;
     CAPTURE(file);
     std::vector<std::uint32_t> spirv;
     CHECK_NOTHROW(spirv = compile_paper_shader(file));
@@ -57,26 +62,33 @@ TEST_CASE("every paper scene shader compiles with its generated declarations") {
   }
 }
 
-TEST_CASE("paper shader files are all listed") {
+TEST_CASE("every paper shader file is a stage of the pipeline") {
+  const auto& stages = paper_scene().sbt().plan().stages;
   std::size_t on_disk = 0;
   for (const auto& entry : std::filesystem::directory_iterator(paper_shader_dir())) {
-    if (entry.path().extension() != ".glsl") ++on_disk;
+    if (entry.path().extension() == ".glsl") continue;  // included by the stages
+    ++on_disk;
+    const std::string name = entry.path().filename().string();
+    CAPTURE(name);
+    CHECK(std::any_of(stages.begin(), stages.end(), [&](const auto& s) { return s.shader == name; }));
   }
-  CHECK(on_disk == paper::shader_files.size());
+  CHECK(on_disk == stages.size());
 }
 
 
 TEST_CASE("paper types fit the pipeline limits") {
-  static_assert(paper::Interface::max_attribute_size <= proceduray::max_hit_attribute_size);
-  CHECK(paper::Interface::max_attribute_size == 16);
-  CHECK(paper::Interface::max_payload_size == sizeof(paper::RadiancePayload));
+  static_assert(sizeof(paper::ProceduralHit) <= proceduray::max_hit_attribute_size);
+  const proceduray::PipelinePlan& plan = paper_scene().sbt().plan();
+  CHECK(plan.max_attribute_size == 16);
+  CHECK(plan.max_payload_size == sizeof(paper::RadiancePayload));
   CHECK(sizeof(paper::RadiancePayload) == 28);  // colour, depth, object id, steps, weight
   CHECK(sizeof(paper::ShadowPayload) == 4);
-  CHECK(paper::Interface::max_root_arguments_size == 48);
+  CHECK(plan.max_record_data_size[2] == 48);  // a MaterialRecord per hit record
   CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 12 + 4 * 9);  // camera, three vec3+float rows, nine knobs
-  CHECK(paper::Interface::payload_location<paper::RadiancePayload>() == paper::radiance_ray);
-  CHECK(paper::Interface::payload_location<paper::ShadowPayload>() == paper::shadow_ray);
-  CHECK(paper::max_recursion_depth == paper::max_depth_limit + 1);
+  // Payload locations are ray indices: radiance 0, shadow 1 (the shaders' radiance_ray, shadow_ray).
+  CHECK(paper_scene().scene.ray_id<paper::RadiancePayload>("radiance").index() == 0);
+  CHECK(paper_scene().scene.ray_id<paper::ShadowPayload>("shadow").index() == 1);
+  CHECK(plan.max_recursion_depth == paper::max_depth_limit + 1);  // the deepest radiance hit traces a shadow ray
 }
 
 TEST_CASE("generated declarations carry the uniform block and no hand copies") {

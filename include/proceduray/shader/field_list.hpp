@@ -111,14 +111,18 @@ constexpr bool size_ok(const TypeOps& s) {
                 "members, add explicit padding members, or use the scalar rule");
 
 /// Registers struct Type for GLSL with layout rule Rule (scalar, std430, std140) and its members in order.
-#define PROCEDURAY_STRUCT(Type, Rule, ...)                                                                      \
+#define PROCEDURAY_STRUCT(Type, Rule, ...) \
+  PROCEDURAY_DETAIL_REGISTER(Type, Rule, PROCEDURAY_DETAIL_FIELD, PROCEDURAY_DETAIL_CHECK, __VA_ARGS__)
+
+/// The registration behind PROCEDURAY_STRUCT, with the per-member macros as parameters so that
+/// PROCEDURAY_DEFINE_STRUCT (define_struct.hpp) registers (type, name) pairs through the same checks.
+#define PROCEDURAY_DETAIL_REGISTER(Type, Rule, FIELD, CHECK, ...)                                              \
   struct ProcedurayFields_##Type;                                                                              \
   inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>);                       \
   struct ProcedurayFields_##Type {                                                                             \
     static constexpr ::std::string_view glsl_name = #Type;                                                     \
     static constexpr ::proceduray::LayoutRule rule = ::proceduray::LayoutRule::Rule;                           \
-    static constexpr ::proceduray::Field fields[] = {                                                          \
-        PROCEDURAY_DETAIL_FOR_EACH(PROCEDURAY_DETAIL_FIELD, Type, Rule, __VA_ARGS__)};                         \
+    static constexpr ::proceduray::Field fields[] = {PROCEDURAY_DETAIL_FOR_EACH(FIELD, Type, Rule, __VA_ARGS__)}; \
   };                                                                                                           \
   /* defined, so a registration inside an unnamed namespace is no unused-function warning */                   \
   inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>) { return {}; }         \
@@ -126,7 +130,7 @@ constexpr bool size_ok(const TypeOps& s) {
                 #Type ": a GPU-visible struct must be standard-layout and trivially copyable");                \
   static_assert(!::proceduray::is_glsl_reserved(#Type),                                                        \
                 #Type ": the struct's name is a reserved GLSL word; rename the struct");                       \
-  PROCEDURAY_DETAIL_FOR_EACH(PROCEDURAY_DETAIL_CHECK, Type, Rule, __VA_ARGS__)                                 \
+  PROCEDURAY_DETAIL_FOR_EACH(CHECK, Type, Rule, __VA_ARGS__)                                                   \
   static_assert(::proceduray::detail::size_ok(::proceduray::type_ops<Type>),                                   \
                 #Type ": sizeof differs from the " #Rule " struct size; list every member and add explicit "   \
                 "trailing padding members")

@@ -12,9 +12,11 @@
 
 #include <proceduray/shader/camera.hpp>
 #include <proceduray/shader/categories.hpp>
+#include <proceduray/shader/define_struct.hpp>
 #include <proceduray/shader/device_address.hpp>
 #include <proceduray/shader/field_list.hpp>
 #include <proceduray/shader/glsl_codegen.hpp>
+#include <proceduray/shader/glsl_consts.hpp>
 #include <proceduray/shader/glsl_keywords.hpp>
 #include <proceduray/shader/glsl_type.hpp>
 #include <proceduray/shader/layout.hpp>

@@ -1,0 +1,30 @@
+// A flat rectangle as a triangle mesh: the ground plane most scenes stand their objects on.
+//
+//   scene.add_geometry("ground", proceduray::GeometryDesc::triangles(proceduray::quad_xz({-12, -10}, {12, 10})));
+//
+// Why: every example spelled the same four corners and six indices, and a swapped pair of
+// indices flips the normal with no error. The two triangles lie at height y, span min..max in x
+// and z, and their right-hand-rule normal is +y (up), which closest-hit shaders can rely on.
+#pragma once
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/geometry.hpp"
+
+namespace proceduray {
+
+/// Two triangles at height `y` spanning `min`..`max` (x, z), normal +y; throws InvalidGeometryError
+/// unless min < max on both axes.
+inline TriangleMesh quad_xz(glm::vec2 min, glm::vec2 max, float y = 0.0f) {
+  if (!(min.x < max.x && min.y < max.y)) {
+    throw InvalidGeometryError("quad_xz: min (" + std::to_string(min.x) + ", " + std::to_string(min.y) +
+                               ") is not below max (" + std::to_string(max.x) + ", " + std::to_string(max.y) +
+                               ") on both axes; swap the corners (a flat or empty rectangle has no area)");
+  }
+  return {{{min.x, y, min.y}, {max.x, y, min.y}, {max.x, y, max.y}, {min.x, y, max.y}}, {0, 2, 1, 0, 3, 2}};
+}
+
+}  // namespace proceduray
