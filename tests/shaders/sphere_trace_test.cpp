@@ -1,5 +1,5 @@
 // Tests for shaders/marching/sphere_trace.glsl, compiled as C++: hits, misses, exhausted steps,
-// over-relaxation on a thin plate, tetrahedral normals.
+// over-relaxation on a thin plate (also at the range's end) and its fallback, tetrahedral normals.
 #include "shaders/glsl_cpp.hpp"
 
 #include <cmath>
@@ -80,6 +80,41 @@ TEST_CASE("over-relaxation does not tunnel through a thin plate") {
     CHECK(s == doctest::Approx(expected).epsilon(1e-3));
   }
   shape = 0;
+}
+
+TEST_CASE("over-relaxation finds a thin plate just before the end of the range") {
+  // Head-on from z = -2 with the range ending at s = 2: the plate's front is at s = 1.99. The
+  // first relaxed step (w * 1.99) leaves the range; a march that called that a miss would
+  // pass through the plate (a thin part near the AABB's exit), so it must retry the plain step.
+  shape = 1;
+  for (float w : {1.0f, 1.2f, 1.6f, 1.9f}) {
+    float s;
+    std::uint32_t steps;
+    CAPTURE(w);
+    REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 2.0f, settings(w), s, steps));
+    CHECK(s == doctest::Approx(1.99f).epsilon(1e-5));
+    CHECK(steps <= 3u);  // the relaxed step, then the plain step's end (a hit there)
+  }
+  // Beyond the range it stays a miss, relaxed or not.
+  float s;
+  std::uint32_t steps;
+  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.9f, settings(1.6f), s, steps));
+  shape = 0;
+}
+
+TEST_CASE("relaxed steps fall back once they stop overlapping and then march plainly") {
+  // Head-on at the unit sphere from z = -5: r = 4, the relaxed step of 6.4 lands past the
+  // sphere (z = 1.4, r = 0.4): 4 + 0.4 < 6.4, the spheres leave a gap, so the march goes back
+  // to s = 4 (the plain step's end) and hits there.
+  shape = 0;
+  float s;
+  std::uint32_t steps;
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.6f), s, steps));
+  CHECK(s == doctest::Approx(4.0f));
+  CHECK(steps == 3u);  // s = 0, s = 6.4 (rejected), s = 4
+  // w = 1 never falls back: two evaluations.
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f), s, steps));
+  CHECK(steps == 2u);
 }
 
 TEST_CASE("tetrahedral normal of the sphere is radial") {
