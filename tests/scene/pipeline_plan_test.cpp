@@ -98,3 +98,37 @@ TEST_CASE("pipeline_plan ray without miss shader gets a null miss record") {
   CHECK(std::all_of(buffer.begin() + static_cast<std::ptrdiff_t>(miss), buffer.begin() + static_cast<std::ptrdiff_t>(miss + 32),
                     [](std::byte b) { return b == std::byte{0}; }));
 }
+
+TEST_CASE("pipeline_plan gives an intersection shader one stage per any-hit it is paired with") {
+  Scene s;
+  const auto ray = s.add_ray<RayPayload>("ray", {.miss = "miss"});
+  const auto plain = s.add_hit_group<FractalAttributes>("plain", {.kind = HitGroupKind::procedural, .closest_hit = "hit",
+                                                               .intersection = "ball.rint"});
+  const auto also_plain = s.add_hit_group<FractalAttributes>("also_plain", {.kind = HitGroupKind::procedural,
+                                                                         .intersection = "ball.rint"});
+  const auto cut = s.add_hit_group<FractalAttributes>("cut", {.kind = HitGroupKind::procedural, .closest_hit = "hit",
+                                                           .any_hit = "cut.rahit", .intersection = "ball.rint"});
+  const auto g0 = s.add_geometry("g0", GeometryDesc::procedural({Aabb{}}));
+  const auto g1 = s.add_geometry("g1", GeometryDesc::procedural({Aabb{}}));
+  const auto g2 = s.add_geometry("g2", GeometryDesc::procedural({Aabb{}}));
+  ShaderTable t(s);
+  t.add_raygen("rgen");
+  t.add_hit(ray, plain, g0);
+  t.add_hit(ray, also_plain, g1);
+  t.add_hit(ray, cut, g2);
+  const ShaderBindingTable sbt = t.build(DeviceLimits{});
+  const PipelinePlan& plan = sbt.plan();
+  std::size_t intersections = 0;
+  for (const PlannedStage& stage : plan.stages) intersections += stage.stage == ShaderStage::intersection ? 1 : 0;
+  CHECK(intersections == 2);  // shared by the groups without any-hit, its own for the cut-out's
+  const auto group = [&](const char* name) {
+    for (const PlannedGroup& g : plan.groups)
+      if (g.name == name) return g;
+    FAIL("no group " << name);
+    return PlannedGroup{};
+  };
+  CHECK(group("plain").intersection == group("also_plain").intersection);
+  CHECK(group("plain").intersection != group("cut").intersection);
+  CHECK(plan.stages[group("cut").intersection].shader == "ball.rint");
+  CHECK(plan.stages[group("cut").any_hit].shader == "cut.rahit");
+}

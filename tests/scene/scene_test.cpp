@@ -168,3 +168,25 @@ TEST_CASE("scene add_geometry that throws leaves the scene unchanged") {
   CHECK(s.blas_of(f).shared);
   CHECK(s.blases().size() == 3);
 }
+
+TEST_CASE("scene geometries sharing a BLAS shares its update policy") {
+  Scene scene;
+  const TriangleMesh mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
+  GeometryDesc moving = GeometryDesc::triangles(mesh);
+  moving.blas = "shared";
+  moving.update = UpdatePolicy::DynamicTransform;
+  scene.add_geometry("moving", moving);
+  GeometryDesc still = GeometryDesc::triangles(mesh, {});
+  still.blas = "shared";
+  CHECK_THROWS_WITH_AS(scene.add_geometry("still", still),
+                       doctest::Contains("geometry \"still\" is Static but BLAS \"shared\" is DynamicTransform; "
+                                         "geometries sharing a BLAS share its instances and its builds"),
+                       InvalidGeometryError);
+  still.update = UpdatePolicy::DynamicTransform;
+  scene.add_geometry("still", still);
+  CHECK(scene.blases()[0].update == UpdatePolicy::DynamicTransform);
+  GeometryDesc bogus = GeometryDesc::triangles(mesh);
+  bogus.update = static_cast<UpdatePolicy>(7);
+  CHECK_THROWS_WITH_AS(scene.add_geometry("bogus", bogus), doctest::Contains("has update policy 7; use UpdatePolicy::Static"),
+                       InvalidGeometryError);
+}

@@ -1,7 +1,7 @@
 // A small scene for renderer tests: a triangle floor and two procedural balls (one BLAS,
 // two instances, a colour each from its own hit record), under a sky from a uniform.
 //
-//   RendererScene s;                                   // scene + entries + built table
+//   RendererScene s;                                   // scene + entries + built table (balls Static)
 //   proceduray::vk::Renderer r(ctx, s.table(ctx), s.options());
 //   r.set(renderer_scene::constants_slot, renderer_scene::constants(w, h, sky));
 #pragma once
@@ -63,7 +63,7 @@ inline void prepare(pr::vk::Renderer& renderer, std::uint32_t width, std::uint32
 /// The scene and its shader table, built for a context's limits.
 class RendererScene {
  public:
-  RendererScene() {
+  explicit RendererScene(pr::UpdatePolicy ball_update = pr::UpdatePolicy::Static) {
     m_scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
     m_scene.add_hit_group<BallHit>("ball", {.kind = pr::HitGroupKind::procedural, .closest_hit = "ball.rchit",
                                             .intersection = "ball.rint"});
@@ -72,7 +72,9 @@ class RendererScene {
     m_floor = m_scene.add_geometry("floor", pr::GeometryDesc::triangles(quad));
     std::vector<pr::InstanceTransform> balls;
     for (const glm::vec3& c : ball_centres) balls.push_back(pr::instance_transform(glm::translate(glm::mat4(1), c)));
-    m_ball = m_scene.add_geometry("ball", pr::GeometryDesc::procedural({pr::Aabb{}}, balls));
+    pr::GeometryDesc ball = pr::GeometryDesc::procedural({pr::Aabb{}}, balls);
+    ball.update = ball_update;
+    m_ball = m_scene.add_geometry("ball", ball);
     m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                                          {pr::BindingKind::storage_image, 1, 0, 1, "image"},
                                                          constants_slot, tints_slot}});

@@ -63,7 +63,7 @@ TEST_CASE("renderer uniform changes reach the next trace without rebuilding") {
 
 TEST_CASE("renderer set_transform refits the TLAS and the image follows") {
   TestContext t;
-  RendererScene s;
+  RendererScene s(UpdatePolicy::DynamicTransform);
   vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
   renderer_scene::prepare(renderer, width, height);
   const VkDeviceSize blas_before = renderer.blas_bytes();
@@ -71,14 +71,35 @@ TEST_CASE("renderer set_transform refits the TLAS and the image follows") {
   renderer.set_transform(s.ball(), 1, glm::translate(glm::mat4(1.0f), moved));
   const vk::Frame f = renderer.render(width, height);
   CHECK(f.tlas_refit);
+  CHECK(f.work == vk::FrameWork{.tlas_updates = 1});  // DynamicTransform: no BLAS work at all
   CHECK(near(pixel(f, where(moved)), bytes(renderer_scene::ball_colours[1])));
   CHECK_FALSE(near(pixel(f, where(renderer_scene::ball_centres[1])), bytes(renderer_scene::ball_colours[1])));
   CHECK(renderer.blas_bytes() == blas_before);
-  CHECK_FALSE(renderer.render(width, height).tlas_refit);  // nothing moved since
+  const vk::Frame still = renderer.render(width, height);
+  CHECK_FALSE(still.tlas_refit);  // nothing moved since
+  CHECK(still.work == vk::FrameWork{});
   CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 2, glm::mat4(1.0f)), doctest::Contains("no instance 2"),
                        SceneError);
   CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 0, glm::mat4(0.0f)), doctest::Contains("singular"),
                        std::invalid_argument);
+}
+
+TEST_CASE("renderer refuses to move or reshape a Static geometry") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 0, glm::mat4(1.0f)),
+                       doctest::Contains("geometry \"ball\" is Static, so its instances were built not to move; "
+                                         "declare it with update = UpdatePolicy::DynamicTransform"),
+                       std::invalid_argument);
+  const Aabb box{};
+  CHECK_THROWS_WITH_AS(renderer.set_aabbs(s.ball(), {&box, 1}),
+                       doctest::Contains("Renderer::set_aabbs: geometry \"ball\" is Static, so its BLAS was built not "
+                                         "to change; declare it with update = UpdatePolicy::DynamicGeometry"),
+                       std::invalid_argument);
+  const glm::vec3 moved[4] = {};
+  CHECK_THROWS_WITH_AS(renderer.set_vertices(s.scene().geometry_id("floor"), moved),
+                       doctest::Contains("Renderer::set_vertices: geometry \"floor\" is Static"), std::invalid_argument);
 }
 
 TEST_CASE("renderer renders are byte identical") {

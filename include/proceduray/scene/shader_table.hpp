@@ -32,6 +32,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -449,10 +450,13 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
   PipelinePlan& plan = out.m_plan;
   plan.max_recursion_depth = m_max_recursion_depth;
   plan.global_signature = m_global_signature;
-  std::map<std::pair<ShaderStage, std::string>, std::uint32_t> stage_of;
-  auto stage = [&](ShaderStage kind, const std::string& name) {
+  // A stage is shared by every group that names it, except that an intersection shader gets one
+  // stage per any-hit shader it is paired with: lavapipe (Mesa 25.0) binds the any-hit of the
+  // first group to an intersection stage for every group sharing it.
+  std::map<std::tuple<ShaderStage, std::string, std::string>, std::uint32_t> stage_of;
+  auto stage = [&](ShaderStage kind, const std::string& name, const std::string& paired = {}) {
     if (name.empty()) return unused_shader;
-    auto [it, inserted] = stage_of.try_emplace({kind, name}, static_cast<std::uint32_t>(plan.stages.size()));
+    auto [it, inserted] = stage_of.try_emplace({kind, name, paired}, static_cast<std::uint32_t>(plan.stages.size()));
     if (inserted) plan.stages.push_back(PlannedStage{kind, name});
     return it->second;
   };
@@ -499,7 +503,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
     g.type = hg.desc.kind == HitGroupKind::triangles ? GroupType::triangles_hit : GroupType::procedural_hit;
     g.closest_hit = stage(ShaderStage::closest_hit, hg.desc.closest_hit);
     g.any_hit = stage(ShaderStage::any_hit, hg.desc.any_hit);
-    g.intersection = stage(ShaderStage::intersection, hg.desc.intersection);
+    g.intersection = stage(ShaderStage::intersection, hg.desc.intersection, hg.desc.any_hit);
     g.name = s.hit_groups().name(h);
     g.hit_group = HitGroupId(h);
     group_of_hit_group[h] = static_cast<std::uint32_t>(plan.groups.size());

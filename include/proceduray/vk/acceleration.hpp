@@ -25,6 +25,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace proceduray::vk {
@@ -173,65 +174,51 @@ inline bool finite(float v) { return std::isfinite(v); }
 
 }  // namespace detail
 
-/// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i).
-inline AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
-                                        const BuildOptions& options = {}) {
+namespace detail {
+
+/// A BLAS's inputs on the device: boxes or vertices (and indices), described for a build.
+/// Host-visible, so a refit rewrites them in place.
+struct BlasInput {
+  Buffer data;     ///< VkAabbPositionsKHR, or vertices
+  Buffer indices;  ///< triangles only
+  std::vector<VkAccelerationStructureGeometryKHR> geometries;
+  std::vector<std::uint32_t> counts;  ///< primitives per geometry
+};
+
+/// Throws for an empty list, a geometry without boxes, or a box that is not one.
+inline void check_aabbs(std::span<const AabbGeometry> geometries, std::string_view operation) {
   if (geometries.empty()) {
-    throw std::invalid_argument("build_blas: no geometries given; pass at least one AabbGeometry");
+    throw std::invalid_argument(std::string(operation) + ": no geometries given; pass at least one AabbGeometry");
   }
-  std::size_t total = 0;
   for (std::size_t g = 0; g < geometries.size(); ++g) {
     if (geometries[g].boxes.empty()) {
-      throw std::invalid_argument("build_blas: geometry " + std::to_string(g) + " has no boxes; give it at least one AABB");
+      throw std::invalid_argument(std::string(operation) + ": geometry " + std::to_string(g) +
+                                  " has no boxes; give it at least one AABB");
     }
     for (std::size_t i = 0; i < geometries[g].boxes.size(); ++i) {
       const VkAabbPositionsKHR& b = geometries[g].boxes[i];
       const float v[] = {b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ};
       bool ok = b.minX <= b.maxX && b.minY <= b.maxY && b.minZ <= b.maxZ;
-      for (float x : v) ok = ok && detail::finite(x);
+      for (float x : v) ok = ok && finite(x);
       if (!ok) {
-        throw std::invalid_argument("build_blas: geometry " + std::to_string(g) + " box " + std::to_string(i) + " (" +
-                                    std::to_string(b.minX) + ", " + std::to_string(b.minY) + ", " +
-                                    std::to_string(b.minZ) + ") - (" + std::to_string(b.maxX) + ", " +
+        throw std::invalid_argument(std::string(operation) + ": geometry " + std::to_string(g) + " box " +
+                                    std::to_string(i) + " (" + std::to_string(b.minX) + ", " + std::to_string(b.minY) +
+                                    ", " + std::to_string(b.minZ) + ") - (" + std::to_string(b.maxX) + ", " +
                                     std::to_string(b.maxY) + ", " + std::to_string(b.maxZ) +
                                     ") is not a box; each min must be <= its max and all bounds finite");
       }
     }
-    total += geometries[g].boxes.size();
   }
-  Buffer boxes(ctx, total * sizeof(VkAabbPositionsKHR),
-               VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT);
-  std::vector<VkAccelerationStructureGeometryKHR> described;
-  std::vector<std::uint32_t> counts;
-  VkDeviceSize offset = 0;
-  for (const AabbGeometry& g : geometries) {
-    boxes.write(g.boxes, offset);
-    auto geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
-    geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
-    geometry.flags = g.opaque ? VK_GEOMETRY_OPAQUE_BIT_KHR : 0;
-    geometry.geometry.aabbs = make<VkAccelerationStructureGeometryAabbsDataKHR>(
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR);
-    geometry.geometry.aabbs.data.deviceAddress = boxes.address() + offset;
-    geometry.geometry.aabbs.stride = sizeof(VkAabbPositionsKHR);
-    described.push_back(geometry);
-    counts.push_back(static_cast<std::uint32_t>(g.boxes.size()));
-    offset += g.boxes.size_bytes();
-  }
-  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, described, counts,
-                                              detail::build_flags(options, true));
 }
 
-/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i).
-inline AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
-                                        const BuildOptions& options = {}) {
+/// Throws for an empty list, a bad triangle list or a non-finite vertex.
+inline void check_triangles(std::span<const TriangleGeometry> geometries, std::string_view operation) {
   if (geometries.empty()) {
-    throw std::invalid_argument("build_blas: no geometries given; pass at least one TriangleGeometry");
+    throw std::invalid_argument(std::string(operation) + ": no geometries given; pass at least one TriangleGeometry");
   }
-  std::size_t vertex_count = 0, index_count = 0;
   for (std::size_t g = 0; g < geometries.size(); ++g) {
     const TriangleGeometry& t = geometries[g];
-    const std::string which = "build_blas: triangle geometry " + std::to_string(g);
+    const std::string which = std::string(operation) + ": triangle geometry " + std::to_string(g);
     if (t.indices.empty() || t.indices.size() % 3 != 0) {
       throw std::invalid_argument(which + " has " + std::to_string(t.indices.size()) +
                                   " indices; a triangle list needs a non-zero multiple of 3");
@@ -243,23 +230,75 @@ inline AccelerationStructure build_blas(const Context& ctx, std::span<const Tria
       }
     }
     for (const glm::vec3& v : t.vertices) {
-      if (!detail::finite(v.x) || !detail::finite(v.y) || !detail::finite(v.z)) {
+      if (!finite(v.x) || !finite(v.y) || !finite(v.z)) {
         throw std::invalid_argument(which + " has a non-finite vertex; give finite positions");
       }
     }
+  }
+}
+
+/// Writes boxes into `input` (laid out by aabb_input for the same counts).
+inline void write_aabbs(BlasInput& input, std::span<const AabbGeometry> geometries) {
+  VkDeviceSize offset = 0;
+  for (const AabbGeometry& g : geometries) {
+    input.data.write(g.boxes, offset);
+    offset += g.boxes.size_bytes();
+  }
+}
+
+/// Writes vertices into `input` (laid out by triangle_input for the same counts).
+inline void write_vertices(BlasInput& input, std::span<const TriangleGeometry> geometries) {
+  VkDeviceSize offset = 0;
+  for (const TriangleGeometry& t : geometries) {
+    input.data.write(t.vertices, offset);
+    offset += t.vertices.size_bytes();
+  }
+}
+
+/// Checks, uploads and describes procedural geometries.
+inline BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation) {
+  check_aabbs(geometries, operation);
+  std::size_t total = 0;
+  for (const AabbGeometry& g : geometries) total += g.boxes.size();
+  BlasInput in;
+  in.data = Buffer(ctx, total * sizeof(VkAabbPositionsKHR),
+                   VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                       VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT);
+  write_aabbs(in, geometries);
+  VkDeviceSize offset = 0;
+  for (const AabbGeometry& g : geometries) {
+    auto geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+    geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+    geometry.flags = g.opaque ? VK_GEOMETRY_OPAQUE_BIT_KHR : 0;
+    geometry.geometry.aabbs = make<VkAccelerationStructureGeometryAabbsDataKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR);
+    geometry.geometry.aabbs.data.deviceAddress = in.data.address() + offset;
+    geometry.geometry.aabbs.stride = sizeof(VkAabbPositionsKHR);
+    in.geometries.push_back(geometry);
+    in.counts.push_back(static_cast<std::uint32_t>(g.boxes.size()));
+    offset += g.boxes.size_bytes();
+  }
+  return in;
+}
+
+/// Checks, uploads and describes triangle geometries.
+inline BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                std::string_view operation) {
+  check_triangles(geometries, operation);
+  std::size_t vertex_count = 0, index_count = 0;
+  for (const TriangleGeometry& t : geometries) {
     vertex_count += t.vertices.size();
     index_count += t.indices.size();
   }
-  constexpr VkBufferUsageFlags input = VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+  constexpr VkBufferUsageFlags usage = VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                                        VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-  Buffer vertices(ctx, vertex_count * sizeof(glm::vec3), input);
-  Buffer indices(ctx, index_count * sizeof(std::uint32_t), input);
-  std::vector<VkAccelerationStructureGeometryKHR> described;
-  std::vector<std::uint32_t> counts;
+  BlasInput in;
+  in.data = Buffer(ctx, vertex_count * sizeof(glm::vec3), usage);
+  in.indices = Buffer(ctx, index_count * sizeof(std::uint32_t), usage);
+  write_vertices(in, geometries);
   VkDeviceSize vertex_offset = 0, index_offset = 0;
   for (const TriangleGeometry& t : geometries) {
-    vertices.write(t.vertices, vertex_offset);
-    indices.write(t.indices, index_offset);
+    in.indices.write(t.indices, index_offset);
     auto geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
     geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
     geometry.flags = t.opaque ? VK_GEOMETRY_OPAQUE_BIT_KHR : 0;
@@ -267,18 +306,35 @@ inline AccelerationStructure build_blas(const Context& ctx, std::span<const Tria
     tri = make<VkAccelerationStructureGeometryTrianglesDataKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR);
     tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-    tri.vertexData.deviceAddress = vertices.address() + vertex_offset;
+    tri.vertexData.deviceAddress = in.data.address() + vertex_offset;
     tri.vertexStride = sizeof(glm::vec3);
     tri.maxVertex = static_cast<std::uint32_t>(t.vertices.size() - 1);
     tri.indexType = VK_INDEX_TYPE_UINT32;
-    tri.indexData.deviceAddress = indices.address() + index_offset;
-    described.push_back(geometry);
-    counts.push_back(static_cast<std::uint32_t>(t.indices.size() / 3));
+    tri.indexData.deviceAddress = in.indices.address() + index_offset;
+    in.geometries.push_back(geometry);
+    in.counts.push_back(static_cast<std::uint32_t>(t.indices.size() / 3));
     vertex_offset += t.vertices.size_bytes();
     index_offset += t.indices.size_bytes();
   }
-  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, described, counts,
-                                              detail::build_flags(options, true));
+  return in;
+}
+
+}  // namespace detail
+
+/// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i).
+inline AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
+                                        const BuildOptions& options = {}) {
+  const detail::BlasInput in = detail::aabb_input(ctx, geometries, "build_blas");
+  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, in.geometries,
+                                              in.counts, detail::build_flags(options, true));
+}
+
+/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i).
+inline AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                        const BuildOptions& options = {}) {
+  const detail::BlasInput in = detail::triangle_input(ctx, geometries, "build_blas");
+  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, in.geometries,
+                                              in.counts, detail::build_flags(options, true));
 }
 
 namespace detail {
@@ -356,6 +412,16 @@ class Tlas {
     }
     write(instances);
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
+  }
+  /// Rebuilds in place for instances whose BLASes were replaced (same count): records into `cmd`.
+  void record_build(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
+    if (instances.size() != m_count) {
+      throw std::invalid_argument("Tlas::record_build: " + std::to_string(instances.size()) +
+                                  " instances given, the TLAS has " + std::to_string(m_count) +
+                                  "; build a new Tlas to add or remove instances");
+    }
+    write(instances);
+    record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
   }
   /// Refits and waits.
   void update(const Context& ctx, std::span<const Instance> instances) {

@@ -5,12 +5,15 @@
 //                                                .pipeline_cache = "proceduray.cache"});
 //   renderer.set(constants_slot, constants);          // typed uniform, uploaded before the next trace
 //   renderer.set_storage(tints_slot, tints);          // typed storage buffer (an array)
-//   renderer.set_transform(pacman, 1, moved);         // TLAS refit before the next trace, no BLAS work
+//   renderer.set_transform(pacman, 1, moved);         // DynamicTransform: TLAS refit, no BLAS work
+//   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
+//   frame.work.blas_builds;                           // what the frame rebuilt: BLAS builds, refits, TLAS work
 //
-// From the table it makes: one BLAS per scene BLAS (triangles or AABBs, compacted), a
-// refittable TLAS whose instances carry the SBT offsets the scene assigned, descriptor sets
+// From the table it makes: one BLAS per scene BLAS (triangles or AABBs; compacted when Static,
+// kept refittable when DynamicGeometry), a TLAS whose instances carry the SBT offsets and masks
+// the scene assigned (refittable when any geometry is dynamic), descriptor sets
 // from the global signature (the acceleration-structure binding gets the TLAS, the storage
 // image binding the frame, uniform bindings the values given with set()), the pipeline from
 // the plan (shaders read from shader_dirs, compiled with the declarations glsl_for derives, the
@@ -25,6 +28,7 @@
 #include <proceduray/vk/descriptors.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
+#include <proceduray/vk/refittable_blas.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/trace.hpp>
@@ -59,6 +63,15 @@ struct BuildTimings {
   bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
 };
 
+/// Acceleration-structure work a frame did before its trace, as the update policies allowed.
+struct FrameWork {
+  std::uint32_t blas_builds = 0;   ///< DynamicGeometry BLASes rebuilt (topology changed)
+  std::uint32_t blas_refits = 0;   ///< DynamicGeometry BLASes refit in place
+  std::uint32_t tlas_builds = 0;   ///< TLAS rebuilt (a BLAS it references was rebuilt)
+  std::uint32_t tlas_updates = 0;  ///< TLAS refit (instances moved or a BLAS was refit)
+  friend bool operator==(const FrameWork&, const FrameWork&) = default;
+};
+
 /// One traced frame.
 struct Frame {
   std::uint32_t width = 0;
@@ -66,7 +79,8 @@ struct Frame {
   std::vector<std::uint8_t> rgba;  ///< width * height RGBA8 pixels, rows top to bottom; empty without readback
   double trace_ms = 0;  ///< GPU time between timestamps around vkCmdTraceRaysKHR (wall time if the queue has none)
   double host_ms = 0;   ///< host work before submit: uniform uploads, TLAS instance writes, command recording
-  bool tlas_refit = false;  ///< the frame refit the TLAS (a transform changed)
+  bool tlas_refit = false;  ///< the frame refit or rebuilt the TLAS (work.tlas_updates + work.tlas_builds > 0)
+  FrameWork work;           ///< acceleration-structure work done for this frame
 };
 
 /// Builds the device objects of a shader table and traces frames of it.
@@ -89,7 +103,15 @@ class Renderer {
     set_storage_bytes(slot.set, slot.binding, std::as_bytes(values), "Renderer::set_storage");
   }
   /// Moves instance `instance` of `geometry`; the TLAS is refit before the next trace (no BLAS work).
+  /// Throws for a Static geometry (declare it UpdatePolicy::DynamicTransform).
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world);
+  /// Replaces a DynamicGeometry procedural geometry's boxes: the same count refits its BLAS before
+  /// the next trace, another count rebuilds it. Throws for other policies, triangles or bad boxes.
+  void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes);
+  /// Replaces a DynamicGeometry triangle geometry's vertex positions (same count, same indices): BLAS refit.
+  void set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices);
+  /// Replaces a DynamicGeometry triangle geometry's mesh: refit when the indices are the same, else rebuild.
+  void set_mesh(GeometryId geometry, TriangleMesh mesh);
 
   /// Traces one width x height frame and, with `readback`, returns its pixels.
   Frame render(std::uint32_t width, std::uint32_t height, bool readback = true);
@@ -101,10 +123,24 @@ class Renderer {
   const Pipeline& pipeline() const noexcept { return *m_pipeline; }
   const SbtBuffer& sbt() const noexcept { return *m_sbt; }
   const Tlas& tlas() const noexcept { return m_tlas; }
-  /// Bytes of every BLAS after compaction.
+  /// Bytes of every BLAS (Static ones after compaction).
   VkDeviceSize blas_bytes() const noexcept;
 
  private:
+  /// One scene BLAS: a compacted Static one, or a refittable one with the data it was given.
+  struct BlasSlot {
+    AccelerationStructure fixed;
+    std::unique_ptr<RefittableBlas> dynamic;
+    std::vector<std::vector<VkAabbPositionsKHR>> boxes;  // DynamicGeometry procedural: per geometry
+    std::vector<TriangleMesh> meshes;                    // DynamicGeometry triangles: per geometry
+    bool changed = false;                                // set_* since the last frame
+    const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
+  };
+  const Blas& dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const;
+  /// Refits or rebuilds changed BLASes; refits are recorded into `cmd`, rebuilds done before.
+  void prepare_blases(FrameWork& work);
+  std::vector<AabbGeometry> aabb_geometries(std::uint32_t blas) const;
+  std::vector<TriangleGeometry> triangle_geometries(std::uint32_t blas) const;
   struct Uniform {
     std::uint32_t set = 0, binding = 0;
     std::vector<std::byte> value;
@@ -132,10 +168,11 @@ class Renderer {
   const proceduray::ShaderBindingTable* m_table;
   RendererOptions m_options;
   BuildTimings m_timings;
-  std::vector<AccelerationStructure> m_blases;
+  std::vector<BlasSlot> m_blases;  // index = scene BLAS; never reallocated (instances point into it)
   std::vector<Instance> m_instances;
   Tlas m_tlas;
   bool m_transforms_dirty = false;
+  bool m_tlas_rebuild = false;  // a BLAS was rebuilt: its instances reference a new structure
   std::vector<std::unique_ptr<DescriptorSet>> m_sets;  // index = set number
   std::vector<Uniform> m_uniforms;
   std::vector<Storage> m_storage;
@@ -169,26 +206,35 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::ShaderBindingTab
 
 inline void Renderer::build_acceleration_structures() {
   const Scene& scene = m_table->scene();
-  for (const Blas& blas : scene.blases()) {
+  m_blases.resize(scene.blases().size());
+  bool any_dynamic = false;
+  for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
+    const Blas& blas = scene.blases()[b];
+    BlasSlot& slot = m_blases[b];
+    any_dynamic = any_dynamic || blas.update != UpdatePolicy::Static;
+    const bool refittable = blas.update == UpdatePolicy::DynamicGeometry;
+    for (GeometryId id : blas.geometries) {
+      const GeometryDesc& desc = scene.geometry(id).desc;
+      if (blas.kind == GeometryKind::procedural) {
+        auto& list = slot.boxes.emplace_back();
+        for (const Aabb& a : desc.aabbs) list.push_back({a.min.x, a.min.y, a.min.z, a.max.x, a.max.y, a.max.z});
+      } else {
+        slot.meshes.push_back(desc.mesh);
+      }
+    }
     if (blas.kind == GeometryKind::procedural) {
-      std::vector<std::vector<VkAabbPositionsKHR>> boxes;
-      std::vector<AabbGeometry> geometries;
-      for (GeometryId id : blas.geometries) {
-        const GeometryDesc& desc = scene.geometry(id).desc;
-        auto& list = boxes.emplace_back();
-        for (const Aabb& b : desc.aabbs) list.push_back({b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z});
-      }
-      for (std::size_t g = 0; g < boxes.size(); ++g) {
-        geometries.push_back({boxes[g], scene.geometry(blas.geometries[g]).desc.opaque});
-      }
-      m_blases.push_back(build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), m_options.blas));
+      const auto geometries = aabb_geometries(b);
+      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(geometries));
+      else slot.fixed = build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), m_options.blas);
     } else {
-      std::vector<TriangleGeometry> geometries;
-      for (GeometryId id : blas.geometries) {
-        const GeometryDesc& desc = scene.geometry(id).desc;
-        geometries.push_back({desc.mesh.vertices, desc.mesh.indices, desc.opaque});
-      }
-      m_blases.push_back(build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), m_options.blas));
+      const auto geometries = triangle_geometries(b);
+      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
+      else slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), m_options.blas);
+    }
+    // Static data lives in the scene; only dynamic geometry needs the renderer's own copy.
+    if (!refittable) {
+      slot.boxes.clear();
+      slot.meshes.clear();
     }
   }
   const auto instances = m_table->instances();
@@ -197,10 +243,32 @@ inline void Renderer::build_acceleration_structures() {
     glm::mat4 m(1.0f);
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];  // InstanceTransform holds the rows of the 3x4 matrix
-    m_instances.push_back({.blas = &m_blases[instances[k].blas], .transform = m, .custom_index = k,
-                           .sbt_offset = instances[k].sbt_offset});
+    m_instances.push_back({.blas = &m_blases[instances[k].blas].get(), .transform = m, .custom_index = k,
+                           .sbt_offset = instances[k].sbt_offset, .mask = instances[k].mask});
   }
-  m_tlas = Tlas(*m_ctx, m_instances, {.allow_update = true});
+  // Only a scene that changes pays for a refittable TLAS.
+  m_tlas = Tlas(*m_ctx, m_instances, {.allow_update = any_dynamic});
+}
+
+inline std::vector<AabbGeometry> Renderer::aabb_geometries(std::uint32_t b) const {
+  const Scene& scene = m_table->scene();
+  const Blas& blas = scene.blases()[b];
+  std::vector<AabbGeometry> out;
+  for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
+    out.push_back({m_blases[b].boxes[g], scene.geometry(blas.geometries[g]).desc.opaque});
+  }
+  return out;
+}
+
+inline std::vector<TriangleGeometry> Renderer::triangle_geometries(std::uint32_t b) const {
+  const Scene& scene = m_table->scene();
+  const Blas& blas = scene.blases()[b];
+  std::vector<TriangleGeometry> out;
+  for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
+    const TriangleMesh& mesh = m_blases[b].meshes[g];
+    out.push_back({mesh.vertices, mesh.indices, scene.geometry(blas.geometries[g]).desc.opaque});
+  }
+  return out;
 }
 
 inline void Renderer::build_descriptor_sets() {
@@ -314,12 +382,112 @@ inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding
 
 inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
   const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_transform");
+  const Scene& scene = m_table->scene();
+  if (scene.blas_of(geometry).update == UpdatePolicy::Static) {
+    throw std::invalid_argument("Renderer::set_transform: geometry \"" + scene.geometries().name(geometry.index()) +
+                                "\" is Static, so its instances were built not to move; declare it with "
+                                "update = UpdatePolicy::DynamicTransform");
+  }
   Instance moved = m_instances[k];
   moved.transform = object_to_world;
   VkAccelerationStructureInstanceKHR packed{};
   detail::pack_instances({&moved, 1}, {&packed, 1});  // throws for a non-finite or singular transform
   m_instances[k] = moved;
   m_transforms_dirty = true;
+}
+
+inline const Blas& Renderer::dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const {
+  const Scene& scene = m_table->scene();
+  const Geometry& g = scene.geometry(geometry);
+  const Blas& blas = scene.blases()[g.blas];
+  const std::string name = scene.geometries().name(geometry.index());
+  if (blas.update != UpdatePolicy::DynamicGeometry) {
+    throw std::invalid_argument(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.update) +
+                                ", so its BLAS was built not to change; declare it with "
+                                "update = UpdatePolicy::DynamicGeometry");
+  }
+  if (blas.kind != kind) {
+    throw std::invalid_argument(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.kind) +
+                                (kind == GeometryKind::procedural ? "; change its vertices with set_vertices or set_mesh"
+                                                                  : "; change its boxes with set_aabbs"));
+  }
+  return blas;
+}
+
+inline void Renderer::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes) {
+  constexpr const char* op = "Renderer::set_aabbs";
+  dynamic_geometry(geometry, GeometryKind::procedural, op);
+  const Geometry& g = m_table->scene().geometry(geometry);
+  const std::string where = std::string(op) + ": geometry \"" + m_table->scene().geometries().name(geometry.index()) + "\"";
+  if (boxes.empty()) throw InvalidGeometryError(where + " given no boxes; give it at least one AABB");
+  std::vector<VkAabbPositionsKHR> list;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    validate(boxes[i], where + " AABB " + std::to_string(i));
+    const Aabb& a = boxes[i];
+    list.push_back({a.min.x, a.min.y, a.min.z, a.max.x, a.max.y, a.max.z});
+  }
+  BlasSlot& slot = m_blases[g.blas];
+  slot.boxes[g.geometry_index] = std::move(list);
+  slot.changed = true;
+}
+
+inline void Renderer::set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices) {
+  constexpr const char* op = "Renderer::set_vertices";
+  dynamic_geometry(geometry, GeometryKind::triangles, op);
+  const Geometry& g = m_table->scene().geometry(geometry);
+  TriangleMesh mesh = m_blases[g.blas].meshes[g.geometry_index];
+  if (vertices.size() != mesh.vertices.size()) {
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + m_table->scene().geometries().name(geometry.index()) +
+                               "\" has " + std::to_string(mesh.vertices.size()) + " vertices, " +
+                               std::to_string(vertices.size()) + " given; new positions keep the count: "
+                               "call set_mesh to change the topology");
+  }
+  mesh.vertices.assign(vertices.begin(), vertices.end());
+  set_mesh(geometry, std::move(mesh));
+}
+
+inline void Renderer::set_mesh(GeometryId geometry, TriangleMesh mesh) {
+  constexpr const char* op = "Renderer::set_mesh";
+  dynamic_geometry(geometry, GeometryKind::triangles, op);
+  const Scene& scene = m_table->scene();
+  GeometryDesc check = GeometryDesc::triangles(mesh, {});
+  validate(check, scene.geometries().name(geometry.index()), op);  // throws InvalidGeometryError naming the geometry
+  const Geometry& g = scene.geometry(geometry);
+  BlasSlot& slot = m_blases[g.blas];
+  slot.meshes[g.geometry_index] = std::move(mesh);
+  slot.changed = true;
+}
+
+inline void Renderer::prepare_blases(FrameWork& work) {
+  const Scene& scene = m_table->scene();
+  for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
+    BlasSlot& slot = m_blases[b];
+    if (!slot.changed) continue;
+    slot.changed = false;
+    const bool procedural = scene.blases()[b].kind == GeometryKind::procedural;
+    const auto boxes = procedural ? aabb_geometries(b) : std::vector<AabbGeometry>{};
+    const auto meshes = procedural ? std::vector<TriangleGeometry>{} : triangle_geometries(b);
+    const bool refit = procedural ? slot.dynamic->same_topology(std::span<const AabbGeometry>(boxes))
+                                  : slot.dynamic->same_topology(std::span<const TriangleGeometry>(meshes));
+    if (refit) {
+      m_ctx->submit([&](VkCommandBuffer cmd) {
+        if (procedural) slot.dynamic->record_refit(*m_ctx, cmd, std::span<const AabbGeometry>(boxes));
+        else slot.dynamic->record_refit(*m_ctx, cmd, std::span<const TriangleGeometry>(meshes));
+      });
+      ++work.blas_refits;
+      m_transforms_dirty = true;  // the TLAS holds the old bounds: refit it
+    } else {
+      // A new structure (the old one is freed whole, handle before memory); its instances point at it.
+      slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes))
+                                : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes));
+      const auto instances = m_table->instances();
+      for (std::size_t k = 0; k < instances.size(); ++k) {
+        if (instances[k].blas == b) m_instances[k].blas = &slot.dynamic->structure();
+      }
+      ++work.blas_builds;
+      m_tlas_rebuild = true;
+    }
+  }
 }
 
 inline void Renderer::prepare_image(std::uint32_t width, std::uint32_t height) {
@@ -343,7 +511,11 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
     }
   }
   prepare_image(width, height);
-  Frame frame{width, height, {}, 0, 0, m_transforms_dirty};
+  Frame frame{width, height, {}, 0, 0, false, {}};
+  prepare_blases(frame.work);
+  if (m_tlas_rebuild) ++frame.work.tlas_builds;
+  else if (m_transforms_dirty) ++frame.work.tlas_updates;
+  frame.tlas_refit = frame.work.tlas_builds + frame.work.tlas_updates > 0;
   const auto host_start = Clock::now();
   for (Uniform& u : m_uniforms) {
     if (u.dirty) u.buffer->write(std::span<const std::byte>(u.value));
@@ -352,8 +524,10 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   double recorded_ms = 0;
   const auto wall_start = Clock::now();
   m_ctx->submit([&](VkCommandBuffer cmd) {
-    if (m_transforms_dirty) m_tlas.record_update(*m_ctx, cmd, m_instances);
+    if (m_tlas_rebuild) m_tlas.record_build(*m_ctx, cmd, m_instances);
+    else if (m_transforms_dirty) m_tlas.record_update(*m_ctx, cmd, m_instances);
     m_transforms_dirty = false;
+    m_tlas_rebuild = false;
     std::vector<VkDescriptorSet> sets;
     for (const auto& s : m_sets) sets.push_back(s->get());
     if (m_queries) vkCmdResetQueryPool(cmd, m_queries.get(), 0, 2);
@@ -390,7 +564,7 @@ inline double Renderer::warm_up() {
 
 inline VkDeviceSize Renderer::blas_bytes() const noexcept {
   VkDeviceSize total = 0;
-  for (const auto& b : m_blases) total += b.size();
+  for (const auto& b : m_blases) total += b.get().size();
   return total;
 }
 

@@ -1,0 +1,138 @@
+// A bottom-level structure that stays refittable: its inputs and scratch are kept, so new
+// boxes or vertices with the same topology update it in place (no new memory, same device
+// address, so TLAS instances keep pointing at it).
+//
+//   proceduray::vk::RefittableBlas blas(ctx, std::span<const proceduray::vk::AabbGeometry>(geometries));
+//   boxes[0].maxY = 2.0f;                                        // same number of boxes
+//   if (blas.same_topology(geometries))
+//     ctx.submit([&](VkCommandBuffer cmd) { blas.record_refit(ctx, cmd, geometries); });
+//   else
+//     blas = proceduray::vk::RefittableBlas(ctx, geometries);   // rebuild: a new address
+//
+// A refit is cheap but keeps the old tree's shape: after large motion, rebuilding traces faster.
+// It is never compacted (compaction drops the update ability).
+#pragma once
+
+#include <proceduray/vk/acceleration.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// A BLAS built with ALLOW_UPDATE, with its inputs and scratch kept for refits.
+class RefittableBlas {
+ public:
+  RefittableBlas() = default;
+  /// Builds over procedural geometries and waits; throws for bad boxes.
+  RefittableBlas(const Context& ctx, std::span<const AabbGeometry> geometries, bool fast_trace = true)
+      : m_input(detail::aabb_input(ctx, geometries, "RefittableBlas")) {
+    build(ctx, fast_trace);
+  }
+  /// Builds over triangle geometries and waits; throws for a bad mesh.
+  RefittableBlas(const Context& ctx, std::span<const TriangleGeometry> geometries, bool fast_trace = true)
+      : m_input(detail::triangle_input(ctx, geometries, "RefittableBlas")) {
+    for (const TriangleGeometry& t : geometries) {
+      m_indices.insert(m_indices.end(), t.indices.begin(), t.indices.end());
+      m_vertex_counts.push_back(static_cast<std::uint32_t>(t.vertices.size()));
+    }
+    build(ctx, fast_trace);
+  }
+
+  const AccelerationStructure& structure() const noexcept { return m_structure; }
+
+  /// True when `geometries` have this BLAS's box counts, so a refit can take them.
+  bool same_topology(std::span<const AabbGeometry> geometries) const {
+    if (!m_vertex_counts.empty() || geometries.size() != m_input.counts.size()) return false;
+    for (std::size_t g = 0; g < geometries.size(); ++g) {
+      if (geometries[g].boxes.size() != m_input.counts[g]) return false;
+    }
+    return true;
+  }
+  /// True when `geometries` have this BLAS's vertex counts and the very same indices.
+  bool same_topology(std::span<const TriangleGeometry> geometries) const {
+    if (geometries.size() != m_vertex_counts.size()) return false;
+    std::size_t at = 0;
+    for (std::size_t g = 0; g < geometries.size(); ++g) {
+      const TriangleGeometry& t = geometries[g];
+      if (t.vertices.size() != m_vertex_counts[g] || at + t.indices.size() > m_indices.size()) return false;
+      if (!std::equal(t.indices.begin(), t.indices.end(), m_indices.begin() + static_cast<std::ptrdiff_t>(at))) return false;
+      at += t.indices.size();
+    }
+    return at == m_indices.size();
+  }
+
+  /// Writes new boxes and records the refit into `cmd`, with a barrier for the TLAS build and
+  /// traces after it. Throws when the topology differs: build a new RefittableBlas for that.
+  void record_refit(const Context& ctx, VkCommandBuffer cmd, std::span<const AabbGeometry> geometries) {
+    detail::check_aabbs(geometries, "RefittableBlas::record_refit");
+    if (!same_topology(geometries)) throw topology_error();
+    detail::write_aabbs(m_input, geometries);
+    record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
+  }
+  /// The same for new vertex positions (indices unchanged).
+  void record_refit(const Context& ctx, VkCommandBuffer cmd, std::span<const TriangleGeometry> geometries) {
+    detail::check_triangles(geometries, "RefittableBlas::record_refit");
+    if (!same_topology(geometries)) throw topology_error();
+    detail::write_vertices(m_input, geometries);
+    record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
+  }
+
+ private:
+  static std::invalid_argument topology_error() {
+    return std::invalid_argument("RefittableBlas::record_refit: the geometry has other primitive counts or indices "
+                                 "than the BLAS was built with; a refit keeps the topology: build a new "
+                                 "RefittableBlas instead");
+  }
+  VkAccelerationStructureBuildGeometryInfoKHR info(VkBuildAccelerationStructureModeKHR mode) const {
+    auto build = make<VkAccelerationStructureBuildGeometryInfoKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+    build.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+    build.flags = m_flags;
+    build.mode = mode;
+    build.geometryCount = static_cast<std::uint32_t>(m_input.geometries.size());
+    build.pGeometries = m_input.geometries.data();
+    return build;
+  }
+  void build(const Context& ctx, bool fast_trace) {
+    m_flags = detail::build_flags({.compact = false, .allow_update = true, .fast_trace = fast_trace}, false);
+    auto build = info(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
+    auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
+    ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &build,
+                                                    m_input.counts.data(), &sizes);
+    m_structure = AccelerationStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, sizes.accelerationStructureSize);
+    m_scratch = detail::Scratch(ctx, std::max(sizes.buildScratchSize, sizes.updateScratchSize));
+    ctx.submit([&](VkCommandBuffer cmd) { record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR); });
+  }
+  void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
+    auto build = info(mode);
+    build.srcAccelerationStructure = mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? m_structure.get()
+                                                                                            : VK_NULL_HANDLE;
+    build.dstAccelerationStructure = m_structure.get();
+    build.scratchData.deviceAddress = m_scratch.address;
+    std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(m_input.counts.size());
+    for (std::size_t i = 0; i < ranges.size(); ++i) ranges[i].primitiveCount = m_input.counts[i];
+    const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = ranges.data();
+    ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
+    // The TLAS build that follows reads this structure, and so do the traces.
+    auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+    barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                         VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                         0, 1, &barrier, 0, nullptr, 0, nullptr);
+  }
+
+  detail::BlasInput m_input;
+  AccelerationStructure m_structure;
+  detail::Scratch m_scratch;
+  VkBuildAccelerationStructureFlagsKHR m_flags = 0;
+  std::vector<std::uint32_t> m_indices;        // triangles: every index, for topology checks
+  std::vector<std::uint32_t> m_vertex_counts;  // triangles: per geometry
+};
+
+}  // namespace proceduray::vk
