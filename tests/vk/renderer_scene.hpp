@@ -63,13 +63,16 @@ inline void prepare(pr::vk::Renderer& renderer, std::uint32_t width, std::uint32
 /// The scene and its shader table, built for a context's limits.
 class RendererScene {
  public:
-  explicit RendererScene(pr::UpdatePolicy ball_update = pr::UpdatePolicy::Static) {
+  explicit RendererScene(pr::UpdatePolicy ball_update = pr::UpdatePolicy::Static,
+                         pr::UpdatePolicy floor_update = pr::UpdatePolicy::Static) {
     m_scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
     m_scene.add_hit_group<BallHit>("ball", {.kind = pr::HitGroupKind::procedural, .closest_hit = "ball.rchit",
                                             .intersection = "ball.rint"});
     m_scene.add_hit_group("floor", {.kind = pr::HitGroupKind::triangles, .closest_hit = "floor.rchit"});
     pr::TriangleMesh quad{{{-6, -1, -6}, {6, -1, -6}, {6, -1, 6}, {-6, -1, 6}}, {0, 2, 1, 0, 3, 2}};
-    m_floor = m_scene.add_geometry("floor", pr::GeometryDesc::triangles(quad));
+    pr::GeometryDesc floor = pr::GeometryDesc::triangles(quad);
+    floor.update = floor_update;
+    m_floor = m_scene.add_geometry("floor", floor);
     std::vector<pr::InstanceTransform> balls;
     for (const glm::vec3& c : ball_centres) balls.push_back(pr::instance_transform(glm::translate(glm::mat4(1), c)));
     pr::GeometryDesc ball = pr::GeometryDesc::procedural({pr::Aabb{}}, balls);

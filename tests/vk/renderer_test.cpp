@@ -84,6 +84,42 @@ TEST_CASE("renderer set_transform refits the TLAS and the image follows") {
                        std::invalid_argument);
 }
 
+TEST_CASE("renderer DynamicGeometry triangles: new vertices refit and a new mesh rebuilds") {
+  TestContext t;
+  RendererScene s(UpdatePolicy::Static, UpdatePolicy::DynamicGeometry);
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  renderer_scene::prepare(renderer, width, height);
+  const GeometryId floor = s.scene().geometry_id("floor");
+  const glm::ivec2 front_left = where({-2.0f, -1.0f, 2.5f});
+  const glm::ivec2 front_right = where({2.0f, -1.0f, 2.5f});
+  const glm::ivec4 grey = bytes(renderer_scene::floor_colour);
+  const vk::Frame first = renderer.render(width, height);
+  CHECK(near(pixel(first, front_left), grey));
+  CHECK(first.work == vk::FrameWork{});
+  // The same quad shrunk to x in [-6, 0]: the right half of the view loses its floor.
+  const glm::vec3 half[] = {{-6, -1, -6}, {0, -1, -6}, {0, -1, 6}, {-6, -1, 6}};
+  renderer.set_vertices(floor, half);
+  const vk::Frame refit = renderer.render(width, height);
+  CHECK(refit.work == vk::FrameWork{.blas_refits = 1, .tlas_updates = 1});
+  CHECK(near(pixel(refit, front_left), grey));
+  CHECK_FALSE(near(pixel(refit, front_right), grey));
+  // One triangle of the full quad: other indices, so the BLAS is rebuilt and the TLAS with it.
+  renderer.set_mesh(floor, {{{-6, -1, -6}, {6, -1, -6}, {6, -1, 6}, {-6, -1, 6}}, {0, 2, 1}});
+  const vk::Frame rebuilt = renderer.render(width, height);
+  CHECK(rebuilt.work == vk::FrameWork{.blas_builds = 1, .tlas_builds = 1});
+  CHECK(near(pixel(rebuilt, where({2.2f, -1.0f, 1.5f})), grey));  // the triangle's half (x > z)
+  CHECK_FALSE(near(pixel(rebuilt, front_left), grey));  // the missing triangle
+  CHECK(renderer.render(width, height).work == vk::FrameWork{});
+  const glm::vec3 three[3] = {};
+  CHECK_THROWS_WITH_AS(renderer.set_vertices(floor, three),
+                       doctest::Contains("has 4 vertices, 3 given; new positions keep the count: call set_mesh"),
+                       InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(renderer.set_mesh(floor, {{{0, 0, 0}}, {0, 1, 2}}), doctest::Contains("index 1 is 1 but there are 1 vertices"),
+                       InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(renderer.set_aabbs(floor, {}), doctest::Contains("is triangles; change its vertices with set_vertices"),
+                       std::invalid_argument);
+}
+
 TEST_CASE("renderer refuses to move or reshape a Static geometry") {
   TestContext t;
   RendererScene s;
