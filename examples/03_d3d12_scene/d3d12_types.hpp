@@ -37,8 +37,14 @@ namespace pr = proceduray;
 
 /// SceneConstants::flags bits: shadows, reflections, and the debug view (r = object id,
 /// g and b = marching steps of the primary hit (low and high byte), a = 0 where any value was
-/// NaN or infinite, else 255).
-inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_debug = 4u;
+/// NaN or infinite, else 255). flag_count_misses, with flag_debug alone (no shadows or
+/// reflections): a radiance ray whose intersection function marched and missed still reports,
+/// at t = gl_RayTmaxEXT with hit kind counted_miss_kind, so that its steps reach the debug view
+/// (g, b) while r stays sky_id. Nothing behind t_max is hidden, but a later miss replaces an
+/// earlier one: meant for one primitive alone (Layout::isolated, the benchmark).
+inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_debug = 4u, flag_count_misses = 8u;
+/// gl_HitKindEXT of the reports flag_count_misses adds (real hits report 0).
+inline constexpr std::uint32_t counted_miss_kind = 1u;
 /// Radiance segments at most (primary + one reflection), and the recursion that allows (+ shadow).
 inline constexpr std::uint32_t max_depth_limit = 2, max_recursion_depth = max_depth_limit + 1;
 /// Metaball marches (SceneConstants::metaball_method), as in shaders/primitives/metaballs.glsl.
@@ -76,9 +82,11 @@ struct SceneConstants {
   std::uint32_t metaball_steps;   ///< fixed steps across the box; default 128 (the sample's)
   std::uint32_t flags;        ///< flag_* bits; default shadows | reflections
   std::uint32_t max_depth;    ///< radiance segments, primary included; <= max_depth_limit
+  float over_relaxation;      ///< sphere tracing's w in [1, 2) (Keinert et al.); default 1 = plain
 };
 PROCEDURAY_STRUCT(SceneConstants, scalar, camera, light_position, ambient, light_colour, time, sky_colour, max_steps,
-                  epsilon, footprint_scale, step_scale, metaball_method, metaball_steps, flags, max_depth);
+                  epsilon, footprint_scale, step_scale, metaball_method, metaball_steps, flags, max_depth,
+                  over_relaxation);
 
 /// The radiance ray's payload (location 0).
 struct RadiancePayload {
@@ -249,13 +257,14 @@ inline pr::Camera isolated_camera(PrimitiveKind k, std::uint32_t width, std::uin
 inline SceneConstants default_constants(const pr::Camera& camera, float time) {
   const glm::vec3 eye(camera.eye);
   return {camera, eye + glm::vec3(-6.0f, 9.0f, 2.0f), 0.2f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-          512, 1e-4f, 0.5f, 1.0f, metaball_fixed, 128, flag_shadows | flag_reflections, max_depth_limit};
+          512, 1e-4f, 0.5f, 1.0f, metaball_fixed, 128, flag_shadows | flag_reflections, max_depth_limit, 1.0f};
 }
 
 /// The C++ constants above that the shaders need, as GLSL consts.
 inline std::string extra_declarations() {
   return pr::glsl_const("flag_shadows", flag_shadows) + pr::glsl_const("flag_reflections", flag_reflections) +
-         pr::glsl_const("flag_debug", flag_debug) + pr::glsl_const("max_depth_limit", max_depth_limit);
+         pr::glsl_const("flag_debug", flag_debug) + pr::glsl_const("flag_count_misses", flag_count_misses) +
+         pr::glsl_const("counted_miss_kind", counted_miss_kind) + pr::glsl_const("max_depth_limit", max_depth_limit);
 }
 
 }  // namespace d3d12

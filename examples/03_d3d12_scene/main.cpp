@@ -2,12 +2,16 @@
 // ground and a grid of analytic, volumetric and signed-distance primitives, radiance and shadow
 // rays, animated over --frames with no acceleration-structure work. Prints timings and the SBT.
 //   --gallery PATH  also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)
-//   --bench         per primitive alone at --size: trace ms (median of 5), coverage, mean steps
+//   --bench         per primitive alone at --size: trace ms (median of 5), coverage, and mean
+//                   marching steps (distance or field evaluations) over the rays that hit, over
+//                   all rays that entered the primitive's AABB (hits and misses), and per pixel
+//   --relax W       sphere tracing's over-relaxation w in [1, 2) (default 1: plain)
 #include "../common/run.hpp"
 #include "d3d12_scene.hpp"
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -16,36 +20,55 @@ namespace {
 
 using examples::median;
 
-/// One benchmark row: median trace ms of 5 frames, then a debug frame for coverage and steps.
+/// One benchmark row: median trace ms of 5 frames, then a debug frame that counts misses too
+/// (flag_count_misses) for coverage and steps. A ray entered the AABB when it hit or marched:
+/// every marching intersection takes at least one evaluation (analytic ones take none, so
+/// their AABB column is empty).
 void bench_row(proceduray::vk::Renderer& renderer, const std::string& name, d3d12::SceneConstants c, std::uint32_t w,
                std::uint32_t h, std::uint32_t id) {
   renderer.set(d3d12::constants_slot, c);
   std::vector<double> ms;
   for (int f = 0; f < 5; ++f) ms.push_back(renderer.render(w, h, false).trace_ms);
-  c.flags = d3d12::flag_debug;
+  c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
   renderer.set(d3d12::constants_slot, c);
   const proceduray::vk::Frame debug = renderer.render(w, h);
-  std::size_t hits = 0;
-  double steps = 0;
+  std::size_t hits = 0, entered = 0;
+  double hit_steps = 0, all_steps = 0;
   for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
-    if (debug.rgba[i * 4] != id) continue;
-    ++hits;
-    steps += debug.rgba[i * 4 + 1] + 256.0 * debug.rgba[i * 4 + 2];
+    const double steps = debug.rgba[i * 4 + 1] + 256.0 * debug.rgba[i * 4 + 2];
+    const bool hit = debug.rgba[i * 4] == id;
+    hits += hit;
+    entered += hit || steps > 0;
+    hit_steps += hit ? steps : 0.0;
+    all_steps += steps;
   }
-  std::printf("%-16s %10.2f %8.1f%% %22.1f\n", name.c_str(), median(ms), 100.0 * double(hits) / (double(w) * h),
-              hits ? steps / double(hits) : 0.0);
+  const double pixels = double(w) * h;
+  if (all_steps == 0) {  // analytic: no marching, and no way to tell AABB rays from the rest
+    std::printf("%-16s %10.2f %8.1f%% %9s %10.1f %10s %10.2f\n", name.c_str(), median(ms), 100.0 * double(hits) / pixels,
+                "-", 0.0, "0", 0.0);
+    return;
+  }
+  std::printf("%-16s %10.2f %8.1f%% %8.1f%% %10.1f %10.1f %10.2f\n", name.c_str(), median(ms), 100.0 * double(hits) / pixels,
+              100.0 * double(entered) / pixels, hits ? hit_steps / double(hits) : 0.0,
+              entered ? all_steps / double(entered) : 0.0, all_steps / pixels);
 }
 
 /// Renders each primitive alone (Layout::isolated): the gallery tiles and the benchmark rows.
-void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, const char* gallery, bool bench) {
+void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, const char* gallery, bool bench,
+              float relax) {
   d3d12::D3d12Scene scene(d3d12::default_primitives(), d3d12::Layout::isolated);
   proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), d3d12::renderer_options(o.cache));
   const std::uint32_t w = o.width, h = o.height, columns = 5, rows = 2;
   std::vector<std::uint8_t> tiles(std::size_t(w) * columns * h * rows * 4);
-  if (bench) std::printf("%-16s %10s %9s %22s\n", "primitive", "trace ms", "coverage", "mean steps (hit rays)");
+  if (bench) {
+    std::printf("over-relaxation w = %.2f\n", double(relax));
+    std::printf("%-16s %10s %9s %9s %10s %10s %10s\n", "primitive", "trace ms", "coverage", "in AABB", "steps/hit",
+                "steps/ray", "steps/px");
+  }
   for (std::uint32_t k = 0; k < d3d12::primitive_count; ++k) {
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
     d3d12::SceneConstants c = d3d12::default_constants(d3d12::isolated_camera(kind, w, h), 0.0f);
+    c.over_relaxation = relax;
     renderer.set(d3d12::constants_slot, c);
     if (k == 0) renderer.warm_up();
     const proceduray::vk::Frame frame = renderer.render(w, h);
@@ -73,11 +96,17 @@ int main(int argc, char** argv) {
   // This example's own options, taken out before the shared ones are parsed.
   const char* gallery = nullptr;
   bool bench = false;
+  float relax = 1.0f;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--gallery") == 0 && i + 1 < argc) gallery = argv[++i];
     else if (std::strcmp(argv[i], "--bench") == 0) bench = true;
+    else if (std::strcmp(argv[i], "--relax") == 0 && i + 1 < argc) relax = std::strtof(argv[++i], nullptr);
     else rest.push_back(argv[i]);
+  }
+  if (!(relax >= 1.0f && relax < 2.0f)) {
+    std::fprintf(stderr, "03_d3d12_scene: --relax takes w in [1, 2) (1: plain sphere tracing)\n");
+    return 2;
   }
   examples::Options o = examples::parse(static_cast<int>(rest.size()), rest.data(), "03_d3d12_scene",
                                         {.width = 1024, .height = 768, .frames = 1});
@@ -88,18 +117,23 @@ int main(int argc, char** argv) {
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
     if (gallery || bench) {
       std::printf("device: %s\n", ctx.name().c_str());
-      isolated(ctx, o, gallery, bench);
+      isolated(ctx, o, gallery, bench, relax);
       return ctx.validation_messages().empty() ? 0 : 1;
     }
     d3d12::D3d12Scene scene;
     const proceduray::ShaderBindingTable& sbt = scene.build(ctx.limits());
     proceduray::vk::Renderer renderer(ctx, sbt, d3d12::renderer_options(o.cache));
     const proceduray::Camera camera = d3d12::sample_camera(o.width, o.height);
-    renderer.set(d3d12::constants_slot, d3d12::default_constants(camera, 0.0f));
+    auto constants = [&](float time) {
+      d3d12::SceneConstants c = d3d12::default_constants(camera, time);
+      c.over_relaxation = relax;
+      return c;
+    };
+    renderer.set(d3d12::constants_slot, constants(0.0f));
     examples::print_build(ctx, renderer);
     // Only the uniform time changes: no TLAS refit, no BLAS work (the run reports "TLAS refit: no").
     const examples::Run run = examples::run_frames(renderer, o, [&](std::uint32_t f) {
-      renderer.set(d3d12::constants_slot, d3d12::default_constants(camera, 0.1f * static_cast<float>(f)));
+      renderer.set(d3d12::constants_slot, constants(0.1f * static_cast<float>(f)));
     });
     examples::print_run(run, o);
     std::printf("%s", proceduray::format_sbt(sbt).c_str());

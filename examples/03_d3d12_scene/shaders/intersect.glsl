@@ -2,7 +2,9 @@
 // (= object) space with the knobs from `constants`, reported when valid for this ray
 // (t in [gl_RayTminEXT, gl_RayTmaxEXT], cull flags honoured: the sample's IsAValidHit).
 // Marching runs along the unit object-space direction: the world epsilon is divided by the
-// instance's scale; the footprint term is an angle and needs none.
+// instance's scale; the footprint term is an angle and needs none. constants.over_relaxation is
+// the sphere tracer's w (1 = plain). With flag_count_misses a radiance ray that marched and
+// missed reports at t_max with counted_miss_kind, carrying its steps (see d3d12_types.hpp).
 #ifndef D3D12_INTERSECT_GLSL
 #define D3D12_INTERSECT_GLSL
 
@@ -17,13 +19,22 @@ void intersect_record_primitive() {
   float len = max(length(d), 1.0e-30);
   float world_per_object = max(length(gl_WorldRayDirectionEXT) / len, 1.0e-20);
   MarchSettings m = MarchSettings(constants.max_steps, constants.epsilon / world_per_object,
-                                  constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale, 1.0);
+                                  constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale,
+                                  constants.over_relaxation);
   float t;
   vec3 n;
   float steps;
   if (!d3d12_intersect(record.kind, record.params, record.spin, constants.time, o, d, gl_RayTminEXT, gl_RayTmaxEXT,
-                       cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps))
+                       cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps)) {
+    // Shadow rays skip closest-hit shaders and must not be occluded: they never report.
+    if ((constants.flags & flag_count_misses) != 0u && steps > 0.0 &&
+        (gl_IncomingRayFlagsEXT & gl_RayFlagsSkipClosestHitShaderEXT) == 0u) {
+      hit.normal = vec3(0.0, 1.0, 0.0);
+      hit.steps = steps;
+      reportIntersectionEXT(gl_RayTmaxEXT, counted_miss_kind);
+    }
     return;
+  }
   hit.normal = n;
   hit.steps = steps;
   reportIntersectionEXT(t, 0u);
