@@ -126,7 +126,7 @@ TEST_CASE("double instantiation of the shared GLSL computes in double") {
   }
 }
 
-TEST_CASE("far and small spheres: the Haines form in float stays at the double answer") {
+TEST_CASE("far and small spheres - the Haines form in float stays at the double answer") {
   // Distances 10 to 1e6 radii, radius 1 and 1e-3 (a small sphere is a far one in its own
   // units); at each, 16 rays with impact parameters 0 to 0.9 r. The reference is the double
   // instantiation on the same float inputs, so the error is the float method's alone.
@@ -170,7 +170,7 @@ TEST_CASE("far and small spheres: the Haines form in float stays at the double a
   }
 }
 
-TEST_CASE("near-tangent rays: the Haines form in float classifies as double does") {
+TEST_CASE("near-tangent rays - the Haines form in float classifies as double does") {
   // Impact parameter r (1 -+ delta) at 10 to 1e5 radii. Where the double reference's ray passes
   // the silhouette by more than the float spacing of the distance can resolve (16 D 2^-24),
   // the float answer must agree with it; the textbook form loses many of them.
