@@ -2,8 +2,9 @@
 //
 //   #include <proceduray/proceduray.hpp>
 //   proceduray::vk::Context ctx;                       // GPU if present, else lavapipe
-//   auto blas = proceduray::vk::build_blas(ctx, ...);  // AABBs of procedural primitives
-//   ...                                                // see examples/01_hello_sphere
+//   MyScene scene;                                     // a proceduray::SceneTables: rays, objects, entries
+//   proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), options);   // examples/02_paper_scene
+//   auto blas = proceduray::vk::build_blas(ctx, ...);  // or the thin layer alone: examples/01_hello_sphere
 //
 // Layers: scene/ (pure, no Vulkan) and shader/ (pure) under vk/ (the thin backend), and
 // image/ for output. Each header also compiles on its own.
