@@ -97,9 +97,10 @@ inline constexpr pr::Placement mandelbulb_placement{{1.25f, 1.02f, 0.0f}, 0.95f}
 inline constexpr glm::vec2 plane_min{-12.0f, -10.0f}, plane_max{12.0f, 10.0f};
 
 /// Materials (hit record data) of each object.
-inline constexpr MaterialRecord plane_material{{0.85f, 0.85f, 0.85f}, 0.15f, {0.3f, 0.3f, 0.35f}, 1.0f, 0.9f, 0.1f, 20.0f, plane_id};
+inline constexpr MaterialRecord plane_material{{0.85f, 0.85f, 0.85f}, 0.15f, {0.3f, 0.3f, 0.35f}, 1.0f, 0.9f, 0.1f, 20.0f,
+                                               plane_id};
 inline const std::vector<MaterialRecord> pacman_materials{{{1.0f, 0.8f, 0.1f}, 0.1f, {}, 0.0f, 0.9f, 0.5f, 40.0f, pacman0_id},
-                                                         {{0.2f, 0.6f, 1.0f}, 0.1f, {}, 0.0f, 0.9f, 0.5f, 40.0f, pacman1_id}};
+                                                          {{0.2f, 0.6f, 1.0f}, 0.1f, {}, 0.0f, 0.9f, 0.5f, 40.0f, pacman1_id}};
 inline constexpr MaterialRecord julia_material{{0.9f, 0.3f, 0.25f}, 0.2f, {}, 0.0f, 0.9f, 0.6f, 60.0f, julia_id};
 inline constexpr MaterialRecord mandelbulb_material{{0.35f, 0.85f, 0.45f}, 0.2f, {}, 0.0f, 0.9f, 0.6f, 60.0f, mandelbulb_id};
 
@@ -111,6 +112,7 @@ inline SceneConstants default_constants(std::uint32_t width, std::uint32_t heigh
 }
 
 /// The C++ constants the shaders use beyond what the scene derives (glsl_for, glsl_aabb_consts).
-inline const std::string extra_declarations = PROCEDURAY_GLSL_CONSTS(flag_shadows, flag_reflections, flag_object_ids, max_depth_limit);
+inline const std::string extra_declarations =
+    PROCEDURAY_GLSL_CONSTS(flag_shadows, flag_reflections, flag_object_ids, max_depth_limit);
 
 }  // namespace paper

@@ -9,7 +9,8 @@ TEST_CASE("aabb glsl declares each procedural geometry's box under its id") {
   Scene scene;
   scene.add_geometry("julia", GeometryDesc::procedural({{glm::vec3(-1.5f), glm::vec3(1.5f)}}));
   scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}));
-  scene.add_geometry("pac-man", GeometryDesc::procedural({{glm::vec3(-1.0f, -0.25f, -1.0f), glm::vec3(1.0f, 0.75f, 1.0f)}}));
+  const Aabb pacman{glm::vec3(-1.0f, -0.25f, -1.0f), glm::vec3(1.0f, 0.75f, 1.0f)};
+  scene.add_geometry("pac-man", GeometryDesc::procedural({pacman}));
   CHECK(glsl_aabb_consts(scene) == "const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);\n"
                                    "const vec3 julia_aabb_max = vec3(1.5, 1.5, 1.5);\n"
                                    "const vec3 pac_man_aabb_min = vec3(-1.0, -0.25, -1.0);\n"
@@ -18,7 +19,8 @@ TEST_CASE("aabb glsl declares each procedural geometry's box under its id") {
 
 TEST_CASE("aabb glsl declares arrays for a geometry of several boxes") {
   Scene scene;
-  scene.add_geometry("balls", GeometryDesc::procedural({{glm::vec3(0.0f), glm::vec3(1.0f)}, {glm::vec3(2.0f), glm::vec3(3.5f)}}));
+  const Aabb first{glm::vec3(0.0f), glm::vec3(1.0f)}, second{glm::vec3(2.0f), glm::vec3(3.5f)};
+  scene.add_geometry("balls", GeometryDesc::procedural({first, second}));
   CHECK(glsl_aabb_consts(scene) == "const uint balls_aabb_count = 2u;\n"
                                    "const vec3 balls_aabb_min[2] = vec3[](vec3(0.0, 0.0, 0.0), vec3(2.0, 2.0, 2.0));\n"
                                    "const vec3 balls_aabb_max[2] = vec3[](vec3(1.0, 1.0, 1.0), vec3(3.5, 3.5, 3.5));\n");

@@ -33,6 +33,9 @@ struct Rays {
   Rays() { table.add_raygen("raygen.rgen"); }
 };
 
+/// A one-triangle floor.
+TriangleMesh triangle() { return {{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}; }
+
 std::vector<InstanceTransform> at_x(std::initializer_list<float> xs) {
   std::vector<InstanceTransform> out;
   for (float x : xs) out.push_back(instance_transform(glm::translate(glm::mat4(1.0f), {x, 0.0f, 0.0f})));
@@ -72,10 +75,12 @@ TEST_CASE("add_object registers what the hand-written hit groups geometry and en
   const GeometryId hs = by_hand.scene.add_geometry("spheres", spheres_desc(by_hand).geometry);
   by_hand.scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
   by_hand.scene.add_hit_group("floor_shadow", {.kind = HitGroupKind::triangles});
-  const GeometryId hf = by_hand.scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}));
+  const GeometryId hf = by_hand.scene.add_geometry("floor", GeometryDesc::triangles(triangle()));
+  const HitGroupId spheres = by_hand.scene.hit_group_id("spheres");
+  const HitGroupId spheres_shadow = by_hand.scene.hit_group_id("spheres_shadow");
   for (std::uint32_t i = 0; i < 2; ++i) {
-    by_hand.table.add_hit(by_hand.radiance, by_hand.scene.hit_group_id("spheres"), by_hand.material, i ? blue : red, hs, i);
-    by_hand.table.add_hit(by_hand.shadow, by_hand.scene.hit_group_id("spheres_shadow"), by_hand.material, i ? blue : red, hs, i);
+    by_hand.table.add_hit(by_hand.radiance, spheres, by_hand.material, i ? blue : red, hs, i);
+    by_hand.table.add_hit(by_hand.shadow, spheres_shadow, by_hand.material, i ? blue : red, hs, i);
   }
   by_hand.table.add_hit(by_hand.radiance, by_hand.scene.hit_group_id("floor"), by_hand.material, grey, hf);
   by_hand.table.add_hit(by_hand.shadow, by_hand.scene.hit_group_id("floor_shadow"), by_hand.material, grey, hf);
@@ -84,7 +89,7 @@ TEST_CASE("add_object registers what the hand-written hit groups geometry and en
   const GeometryId os = add_object<Hit>(objects.scene, objects.table, "spheres", spheres_desc(objects), objects.material,
                                         {red, blue});
   const GeometryId of = add_object(objects.scene, objects.table, "floor",
-                                   {.geometry = GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}),
+                                   {.geometry = GeometryDesc::triangles(triangle()),
                                     .closest_hit = {{objects.radiance, "floor.rchit"}}},
                                    objects.material, {grey});
   CHECK(os == hs);
@@ -106,16 +111,18 @@ TEST_CASE("add_object registers what the hand-written hit groups geometry and en
 TEST_CASE("add_object with one record binds it to every instance and without one binds no data") {
   Rays r;
   add_object<Hit>(r.scene, r.table, "spheres", spheres_desc(r), r.material, {Material{{}, 7}});
-  add_object<Hit>(r.scene, r.table, "bare", {.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "bare.rint"});
+  add_object<Hit>(r.scene, r.table, "bare",
+                  {.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "bare.rint"});
   const ShaderBindingTable sbt = r.table.build(test::lavapipe_limits);
-  CHECK(describe(r.scene, sbt) == std::vector<std::string>{"spheres radiance spheres * 7", "spheres_shadow shadow spheres * 7",
-                                                           "bare radiance bare * -", "bare_shadow shadow bare * -"});
+  CHECK(describe(r.scene, sbt) == std::vector<std::string>{"spheres radiance spheres * 7",
+                                                           "spheres_shadow shadow spheres * 7", "bare radiance bare * -",
+                                                           "bare_shadow shadow bare * -"});
   CHECK(r.scene.hit_group("bare").desc.closest_hit.empty());
 }
 
 TEST_CASE("add_object any-hit shaders go to the listed ray only") {
   Rays r;
-  add_object(r.scene, r.table, "leaves", {.geometry = GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}),
+  add_object(r.scene, r.table, "leaves", {.geometry = GeometryDesc::triangles(triangle()),
                                           .any_hit = {{r.shadow, "alpha.rahit"}}});
   CHECK(r.scene.hit_group("leaves").desc.any_hit.empty());
   CHECK(r.scene.hit_group("leaves_shadow").desc.any_hit == "alpha.rahit");
@@ -142,7 +149,7 @@ TEST_CASE("add_object rejects a bad object before changing the scene or the tabl
                        doctest::Contains("geometry \"spheres\" already exists"), DuplicateIdError);
   unchanged();
   // Attributes on triangles.
-  const ObjectDesc floor{.geometry = GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}})};
+  const ObjectDesc floor{.geometry = GeometryDesc::triangles(triangle())};
   CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "floor", floor, r.material, {m}),
                        doctest::Contains("call add_object<void>"), HitGroupKindError);
   unchanged();
@@ -183,7 +190,7 @@ TEST_CASE("add_object rejects a bad object before changing the scene or the tabl
 TEST_CASE("add_object needs the rays first") {
   Scene scene;
   ShaderTable table(scene);
-  CHECK_THROWS_WITH_AS(add_object(scene, table, "early", {.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "x.rint"}),
-                       doctest::Contains("register the rays first"), SceneError);
+  const ObjectDesc early{.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "x.rint"};
+  CHECK_THROWS_WITH_AS(add_object(scene, table, "early", early), doctest::Contains("register the rays first"), SceneError);
   CHECK(scene.geometries().size() == 0);
 }

@@ -44,6 +44,7 @@ TEST_CASE("transforms keeps the placements order") {
 TEST_CASE("a zero scale placement is rejected by the geometry naming the instance") {
   Scene scene;
   const Placement flat{.scale = 0.0f};
-  CHECK_THROWS_WITH_AS(scene.add_geometry("flat", GeometryDesc::procedural({Aabb{}}, {Placement{}.transform(), flat.transform()})),
+  const GeometryDesc desc = GeometryDesc::procedural({Aabb{}}, transforms(std::array{Placement{}, flat}));
+  CHECK_THROWS_WITH_AS(scene.add_geometry("flat", desc),
                        doctest::Contains("geometry \"flat\" instance 1 transform is singular"), InvalidGeometryError);
 }

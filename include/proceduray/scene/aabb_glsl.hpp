@@ -5,7 +5,7 @@
 //   std::string glsl = proceduray::glsl_aabb_consts(scene);
 //   // const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);
 //   // const vec3 julia_aabb_max = vec3(1.5, 1.5, 1.5);
-//   // a geometry of n > 1 boxes:  const uint <id>_aabb_count = n;  const vec3 <id>_aabb_min[n] = vec3[](...);  (and max)
+//   // a geometry of n > 1 boxes: const uint <id>_aabb_count = n; const vec3 <id>_aabb_min[n] = vec3[](...); max too
 //
 // Why: the boxes are already in the scene; writing them again as GLSL constants by hand is a second
 // copy that drifts (a shader clipping to a smaller box than the BLAS's cuts the object, a larger one

@@ -147,13 +147,16 @@ GeometryId add_object(Scene& scene, ShaderTable& table, std::string id, ObjectDe
                      "all instances, or one per instance (or call add_object without a signature)");
   }
   scene.local_signatures().check_index(signature.index(), "add_object: object \"" + id + "\" signature");
-  const auto [geometry, groups] = detail::register_object<Attributes>(scene, table, id, std::move(desc), records.size());
+  const auto [geometry, groups] =
+      detail::register_object<Attributes>(scene, table, id, std::move(desc), records.size());
   for (std::uint32_t r = 0; r < groups.size(); ++r) {
     if (records.size() == 1) {
       table.add_hit(RayId<>(r), groups[r], signature, records[0], geometry);
       continue;
     }
-    for (std::uint32_t i = 0; i < records.size(); ++i) table.add_hit(RayId<>(r), groups[r], signature, records[i], geometry, i);
+    for (std::uint32_t i = 0; i < records.size(); ++i) {
+      table.add_hit(RayId<>(r), groups[r], signature, records[i], geometry, i);
+    }
   }
   return geometry;
 }

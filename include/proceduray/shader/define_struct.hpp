@@ -50,7 +50,8 @@
 #define PROCEDURAY_DETAIL_DECLARE_bad(T, m)                                                                    \
   static_assert(false, #T ": member " #m " is not (type, name): write each member as (type, name), and give " \
                           "a type with a comma an alias first (using Weights = std::array<float, 4>;)");
-#define PROCEDURAY_DETAIL_DECLARE(T, R, I, m) PROCEDURAY_DETAIL_CAT(PROCEDURAY_DETAIL_DECLARE_, PROCEDURAY_DETAIL_MEMBER_KIND(m))(T, m)
+#define PROCEDURAY_DETAIL_DECLARE(T, R, I, m) \
+  PROCEDURAY_DETAIL_CAT(PROCEDURAY_DETAIL_DECLARE_, PROCEDURAY_DETAIL_MEMBER_KIND(m))(T, m)
 #define PROCEDURAY_DETAIL_WITH_NAME(F, T, R, I, name) F(T, R, I, name)
 #define PROCEDURAY_DETAIL_PAIR_FIELD_pair(T, R, I, m) \
   PROCEDURAY_DETAIL_WITH_NAME(PROCEDURAY_DETAIL_FIELD, T, R, I, PROCEDURAY_DETAIL_PAIR_NAME m)
