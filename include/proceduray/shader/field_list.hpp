@@ -12,7 +12,8 @@
 // declaration order (at most 32). It static_asserts, with messages naming struct, member and rule:
 // every member type has a GLSL equivalent, nested structs are registered, no name is a GLSL reserved
 // word, each C++ offset (and the layout inside each member) equals the rule's, and sizeof equals the
-// rule's struct size. The GLSL struct name is the C++ name.
+// rule's struct size. The GLSL struct name is the C++ name. PROCEDURAY_DEFINE_STRUCT
+// (define_struct.hpp) declares the struct and registers it in one go, naming each member once.
 #pragma once
 
 #include <proceduray/shader/glsl_keywords.hpp>
