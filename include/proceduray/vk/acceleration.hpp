@@ -343,12 +343,13 @@ namespace detail {
 inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed) {
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance& in = instances[i];
-    const std::string which = "build_tlas: instance " + std::to_string(i);
+    // Built only on failure: a refit packs every instance every frame.
+    auto which = [i] { return "build_tlas: instance " + std::to_string(i); };
     if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
-      throw std::invalid_argument(which + " has no BLAS; set Instance::blas to a built structure");
+      throw std::invalid_argument(which() + " has no BLAS; set Instance::blas to a built structure");
     }
     if (in.custom_index >= (1u << 24) || in.sbt_offset >= (1u << 24)) {
-      throw std::invalid_argument(which + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
+      throw std::invalid_argument(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
                                   std::to_string(in.sbt_offset) + " does not fit in 24 bits");
     }
     const glm::mat4& m = in.transform;
@@ -356,7 +357,7 @@ inline void pack_instances(std::span<const Instance> instances, std::span<VkAcce
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) is_finite = is_finite && finite(m[c][r]);
     if (!is_finite || std::abs(glm::determinant(glm::mat3(m))) < 1e-30f) {
-      throw std::invalid_argument(which + " transform is " + (is_finite ? "singular" : "not finite") +
+      throw std::invalid_argument(which() + " transform is " + (is_finite ? "singular" : "not finite") +
                                   "; give every instance an invertible, finite object-to-world matrix");
     }
     VkAccelerationStructureInstanceKHR& out = packed[i];

@@ -421,8 +421,9 @@ inline void Renderer::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes
   const std::string where = std::string(op) + ": geometry \"" + m_table->scene().geometries().name(geometry.index()) + "\"";
   if (boxes.empty()) throw InvalidGeometryError(where + " given no boxes; give it at least one AABB");
   std::vector<VkAabbPositionsKHR> list;
+  list.reserve(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    validate(boxes[i], where + " AABB " + std::to_string(i));
+    if (!proceduray::detail::valid_box(boxes[i])) validate(boxes[i], where + " AABB " + std::to_string(i));  // throws
     const Aabb& a = boxes[i];
     list.push_back({a.min.x, a.min.y, a.min.z, a.max.x, a.max.y, a.max.z});
   }
