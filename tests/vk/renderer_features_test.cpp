@@ -2,6 +2,7 @@
 // instance masks, update policies and the work each frame reports, any-hit cut-outs with
 // ignore/terminate paths, shadow rays that skip closest hits, and a callable shader.
 #include "features_scene.hpp"
+#include "frame_pixels.hpp"
 #include "test_context.hpp"
 
 #include <functional>
@@ -15,18 +16,10 @@ namespace {
 constexpr std::uint32_t width = 160;
 constexpr std::uint32_t height = 120;
 
-glm::ivec3 pixel(const vk::Frame& f, glm::ivec2 p) {
-  REQUIRE(p.x >= 0);
-  REQUIRE(p.y >= 0);
-  REQUIRE(p.x < static_cast<int>(f.width));
-  REQUIRE(p.y < static_cast<int>(f.height));
-  const std::size_t i = (std::size_t(p.y) * f.width + std::size_t(p.x)) * 4;
-  return {f.rgba[i], f.rgba[i + 1], f.rgba[i + 2]};
-}
-glm::ivec3 bytes(glm::vec3 c) { return glm::ivec3(glm::round(glm::clamp(c, 0.0f, 1.0f) * 255.0f)); }
-bool near(glm::ivec3 a, glm::ivec3 b, int tolerance = 2) {
-  return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::ivec3(tolerance)));
-}
+glm::ivec3 pixel(const vk::Frame& f, glm::ivec2 p) { return frame_pixels::rgb(f, p); }
+/// Colours compared as RGB: the scene's RGBA constants convert to their first three channels.
+glm::ivec3 bytes(glm::vec3 c) { return frame_pixels::bytes(c); }
+using frame_pixels::near;
 glm::ivec2 where(glm::vec3 p) { return project(features_scene::constants(width, height).camera, p, width, height); }
 
 /// Pixels whose colour is within 2 levels of `c`.

@@ -1,4 +1,5 @@
 // vk/renderer.hpp: a scene table made into device objects and traced, checked by pixels.
+#include "frame_pixels.hpp"
 #include "renderer_scene.hpp"
 #include "test_context.hpp"
 
@@ -14,18 +15,9 @@ namespace {
 constexpr std::uint32_t width = 96;
 constexpr std::uint32_t height = 64;
 
-glm::ivec4 pixel(const vk::Frame& f, glm::ivec2 p) {
-  REQUIRE(p.x >= 0);
-  REQUIRE(p.y >= 0);
-  REQUIRE(p.x < static_cast<int>(f.width));
-  REQUIRE(p.y < static_cast<int>(f.height));
-  const std::size_t i = (std::size_t(p.y) * f.width + std::size_t(p.x)) * 4;
-  return {f.rgba[i], f.rgba[i + 1], f.rgba[i + 2], f.rgba[i + 3]};
-}
-
-glm::ivec4 bytes(glm::vec4 c) { return glm::ivec4(glm::round(c * 255.0f)); }
-
-bool near(glm::ivec4 a, glm::ivec4 b) { return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::ivec4(1))); }
+glm::ivec4 pixel(const vk::Frame& f, glm::ivec2 p) { return frame_pixels::rgba(f, p); }
+using frame_pixels::bytes;
+bool near(glm::ivec4 a, glm::ivec4 b) { return frame_pixels::near(a, b, 1); }
 
 glm::ivec2 where(glm::vec3 p) { return project(renderer_scene::constants(width, height).camera, p, width, height); }
 
