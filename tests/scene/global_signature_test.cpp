@@ -2,6 +2,11 @@
 
 #include <doctest/doctest.h>
 
+#include "proceduray/scene/uniform_slot.hpp"
+#include "proceduray/shader/field_list.hpp"
+
+#include <glm/glm.hpp>
+
 using namespace proceduray;
 
 TEST_CASE("global_signature validate rejects duplicate bindings and odd push constants") {
@@ -20,4 +25,29 @@ TEST_CASE("global_signature validate rejects duplicate bindings and odd push con
   GlobalSignatureDesc zero{.bindings = {{.count = 0}}};
   CHECK_THROWS_WITH_AS(validate(zero, "G", "op"), doctest::Contains("count 0"), SceneError);
   CHECK(std::string(to_string(BindingKind::storage_image)) == "storage_image");
+}
+
+namespace global_signature_test {
+struct Knobs {
+  glm::vec4 tint;
+  float exposure;
+  std::uint32_t frame;
+  glm::vec2 pad;
+};
+PROCEDURAY_STRUCT(Knobs, scalar, tint, exposure, frame, pad);
+}  // namespace global_signature_test
+
+TEST_CASE("global_signature typed push constants set the size and exclude an untyped size") {
+  using global_signature_test::Knobs;
+  constexpr PushConstantSlot<Knobs> knobs{.name = "knobs"};
+  GlobalSignatureDesc desc{.push_constants = knobs};
+  CHECK(desc.push_bytes() == sizeof(Knobs));
+  CHECK(desc.push_constants.name == "knobs");
+  CHECK(desc.push_constants.type == &type_ops<Knobs>);
+  CHECK_NOTHROW(validate(desc, "G", "op"));
+  desc.push_constant_size = 16;
+  CHECK_THROWS_WITH_AS(validate(desc, "G", "op"),
+                       doctest::Contains("declares push_constant_size 16 and typed push constants (Knobs); declare one"),
+                       SceneError);
+  CHECK(GlobalSignatureDesc{.push_constant_size = 8}.push_bytes() == 8);
 }

@@ -145,3 +145,33 @@ TEST_CASE("glsl_for names a shader used with two record types") {
                        doctest::Contains("shader \"ball.rint\" is used with two record data types, Material and Other"),
                        SceneError);
 }
+
+namespace glsl_for_test {
+struct Knobs {
+  glm::vec4 tint;
+  float exposure;
+};
+PROCEDURAY_STRUCT(Knobs, scalar, tint, exposure);
+}  // namespace glsl_for_test
+
+TEST_CASE("glsl_for declares a named push constant block in every stage") {
+  Scene scene;
+  constexpr PushConstantSlot<Knobs> knobs{.name = "knobs"};
+  auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
+  auto group = scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
+  scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 1, 2}}));
+  auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}},
+                                                      .push_constants = knobs});
+  ShaderTable table(scene);
+  table.add_raygen("main.rgen");
+  table.set_global_signature(global);
+  table.set_default_hit(light, group);
+  const ShaderBindingTable sbt = table.build(DeviceLimits{});
+  for (const auto& [stage, shader] : {std::pair{ShaderStage::raygen, "main.rgen"}, std::pair{ShaderStage::miss, "sky.rmiss"},
+                                      std::pair{ShaderStage::closest_hit, "floor.rchit"}}) {
+    const std::string glsl = glsl_for(sbt, stage, shader);
+    CHECK(has(glsl, "struct Knobs {"));
+    CHECK(has(glsl, "layout(push_constant, scalar) uniform KnobsPush {"));
+    CHECK(has(glsl, "} knobs;"));
+  }
+}

@@ -6,6 +6,10 @@
 //       {.kind = proceduray::BindingKind::storage_image, .binding = 1},
 //       {.kind = proceduray::BindingKind::uniform_buffer, .binding = 2}},
 //     .push_constant_size = 16});
+//
+// Typed push constants (declared in GLSL by glsl_for, written with Renderer::set_push):
+//   constexpr proceduray::PushConstantSlot<Frame> frame{.name = "frame"};   // uniform_slot.hpp
+//   scene.add_global_signature("Global", {.bindings = {...}, .push_constants = frame});
 #pragma once
 
 #include <algorithm>
@@ -37,10 +41,21 @@ struct Binding {
   const TypeOps* type = nullptr;                   ///< a uniform or storage buffer's contents (UniformSlot sets it)
 };
 
+/// A typed push constant block: its type and the GLSL name it is declared under (PushConstantSlot makes it).
+struct PushConstantBlock {
+  const TypeOps* type = nullptr;  ///< the block's contents; null: none
+  std::string name;               ///< GLSL instance name glsl_for declares it under; empty: declared by hand
+};
+
 /// What the user declares for a global signature.
 struct GlobalSignatureDesc {
   std::vector<Binding> bindings;         ///< descriptor bindings; none by default
-  std::uint32_t push_constant_size = 0;  ///< bytes of push constants, a multiple of 4; 0 = none
+  std::uint32_t push_constant_size = 0;  ///< bytes of untyped push constants, a multiple of 4; 0 = none
+  PushConstantBlock push_constants{};    ///< typed push constants instead (PushConstantSlot); default none
+  /// Bytes of push constants the pipeline declares, typed or not.
+  std::uint32_t push_bytes() const {
+    return push_constants.type != nullptr ? static_cast<std::uint32_t>(push_constants.type->cpp_size) : push_constant_size;
+  }
 };
 
 /// A registered global signature.
@@ -48,7 +63,8 @@ struct GlobalSignature {
   GlobalSignatureDesc desc;  ///< as declared
 };
 
-/// Throws SceneError for a (set, binding) used twice, a zero count or a push constant size not a multiple of 4.
+/// Throws SceneError for a (set, binding) used twice, a zero count, a push constant size not a multiple of 4,
+/// or both typed and untyped push constants.
 inline void validate(const GlobalSignatureDesc& desc, std::string_view id, std::string_view operation) {
   const std::string where = std::string(operation) + ": global signature \"" + std::string(id) + "\"";
   for (std::size_t i = 0; i < desc.bindings.size(); ++i) {
@@ -63,8 +79,13 @@ inline void validate(const GlobalSignatureDesc& desc, std::string_view id, std::
       }
     }
   }
-  if (desc.push_constant_size % 4 != 0) {
-    throw SceneError(where + " push_constant_size " + std::to_string(desc.push_constant_size) +
+  if (desc.push_constants.type != nullptr && desc.push_constant_size != 0) {
+    throw SceneError(where + " declares push_constant_size " + std::to_string(desc.push_constant_size) +
+                     " and typed push constants (" + std::string(desc.push_constants.type->glsl_name) +
+                     "); declare one: the typed block sets the size");
+  }
+  if (desc.push_bytes() % 4 != 0) {
+    throw SceneError(where + " push_constant_size " + std::to_string(desc.push_bytes()) +
                      " is not a multiple of 4; pad the push constant block");
   }
 }

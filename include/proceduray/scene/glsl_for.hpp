@@ -8,7 +8,8 @@
 //                 `const uint <ray>_ray`, `<ray>_flags` and `<ray>_mask` (its RayDesc), and
 //                 `ray_count`; `layer_<name>` per layer; `<id>_callable` per callable; each
 //                 named binding of the global signature (acceleration structure, rgba8 storage
-//                 image, typed uniform, or a readonly storage buffer of T[] read as `<name>.data[i]`)
+//                 image, typed uniform, or a readonly storage buffer of T[] read as `<name>.data[i]`),
+//                 and its named push constant block (`<name>.member`)
 //   raygen        `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index,
 //                 and `callableDataEXT <Data> <id>_call` per callable, at location = its index
 //   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of,
@@ -110,9 +111,12 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
   for (std::uint32_t c = 0; c < callables; ++c) add_root(scene.callable(CallableId<>(c)).data_glsl);
   const std::vector<Binding>* bindings = nullptr;
   if (plan.global_signature.valid()) bindings = &scene.global_signature(plan.global_signature).desc.bindings;
+  const PushConstantBlock* push = nullptr;
+  if (plan.global_signature.valid()) push = &scene.global_signature(plan.global_signature).desc.push_constants;
   if (bindings != nullptr) {
     for (const Binding& b : *bindings) add_root(b.type);
   }
+  if (push != nullptr) add_root(push->type);
   std::string out = glsl_declarations(std::span<const TypeOps* const>(roots), true);
 
   for (std::uint32_t r = 0; r < rays; ++r) {
@@ -134,6 +138,11 @@ inline std::string glsl_for(const ShaderBindingTable& table, ShaderStage stage, 
     for (const Binding& b : *bindings) {
       if (!b.name.empty()) out += detail::binding_glsl(b);
     }
+  }
+  if (push != nullptr && push->type != nullptr && !push->name.empty()) {
+    out += "layout(push_constant, " + std::string(to_string(push->type->rule)) + ") uniform " +
+           std::string(push->type->glsl_name) + "Push {\n" + detail::member_lines(*push->type) + "} " +
+           detail::glsl_identifier(push->name) + ";\n";
   }
 
   auto payload = [&](std::uint32_t r, bool incoming, std::string_view name) {

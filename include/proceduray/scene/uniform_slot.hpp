@@ -8,6 +8,10 @@
 //
 //   constexpr proceduray::StorageSlot<Tint> tints{.binding = 3, .name = "tints"};
 //   renderer.set_storage(tints, std::span<const Tint>(per_instance));  // GLSL: tints.data[i]
+//
+//   constexpr proceduray::PushConstantSlot<FrameKnobs> knobs{.name = "knobs"};
+//   scene.add_global_signature("global", {.bindings = {...}, .push_constants = knobs});
+//   renderer.set_push(knobs, value);  // recorded with the next trace; GLSL: knobs.member
 #pragma once
 
 #include <proceduray/scene/global_signature.hpp>
@@ -39,6 +43,16 @@ struct StorageSlot {
 
   /// The binding as the global signature declares it.
   operator Binding() const { return {BindingKind::storage_buffer, binding, set, 1, name, &type_ops<T>}; }
+};
+
+/// Push constants holding one T (GLSL: `name.member`), T registered with the shader layer. Cheaper
+/// than a uniform for a few bytes that change every frame: no buffer, recorded with the trace.
+template <RegisteredStruct T>
+struct PushConstantSlot {
+  using type = T;
+  const char* name = "";  ///< GLSL instance name glsl_for declares it under; empty: declared by hand
+  /// The block as the global signature declares it.
+  operator PushConstantBlock() const { return {&type_ops<T>, name}; }
 };
 
 }  // namespace proceduray

@@ -5,6 +5,7 @@
 //                                                .pipeline_cache = "proceduray.cache"});
 //   renderer.set(constants_slot, constants);          // typed uniform, uploaded before the next trace
 //   renderer.set_storage(tints_slot, tints);          // typed storage buffer (an array)
+//   renderer.set_push(knobs_slot, knobs);             // typed push constants, recorded with the next trace
 //   renderer.set_transform(pacman, 1, moved);         // DynamicTransform: TLAS refit, no BLAS work
 //   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
@@ -102,6 +103,12 @@ class Renderer {
   void set_storage(StorageSlot<T> slot, std::span<const std::type_identity_t<T>> values) {
     set_storage_bytes(slot.set, slot.binding, std::as_bytes(values), "Renderer::set_storage");
   }
+  /// Sets the push constants, recorded with the next trace. Other types do not compile; a slot of
+  /// another type than the global signature's throws.
+  template <class T>
+  void set_push(PushConstantSlot<T> slot, const std::type_identity_t<T>& value) {
+    set_push_bytes(slot, &type_ops<T>, std::as_bytes(std::span<const T>(&value, 1)));
+  }
   /// Moves instance `instance` of `geometry`; the TLAS is refit before the next trace (no BLAS work).
   /// Throws for a Static geometry (declare it UpdatePolicy::DynamicTransform).
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world);
@@ -152,6 +159,8 @@ class Renderer {
     std::unique_ptr<Buffer> buffer;
   };
   void set_storage_bytes(std::uint32_t set, std::uint32_t binding, std::span<const std::byte> bytes, const char* operation);
+  void set_push_bytes(PushConstantBlock slot, const TypeOps* type, std::span<const std::byte> bytes);
+  const PushConstantBlock* push_block() const;
   Uniform& uniform(std::uint32_t set, std::uint32_t binding, std::size_t size, const char* operation);
   void build_acceleration_structures();
   void build_descriptor_sets();
@@ -177,6 +186,7 @@ class Renderer {
   std::vector<Uniform> m_uniforms;
   std::vector<Storage> m_storage;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_image_bindings;  // (set, binding) of storage images
+  std::vector<std::byte> m_push;  // push constant bytes, once set_push gave them
   std::unique_ptr<Pipeline> m_pipeline;
   std::unique_ptr<SbtBuffer> m_sbt;
   std::unique_ptr<StorageImage> m_image;
@@ -315,6 +325,15 @@ inline std::string Renderer::find_shader(const std::string& name) const {
 inline void Renderer::build_pipeline() {
   const PipelinePlan& plan = m_table->plan();
   PipelineDesc desc;
+  if (plan.global_signature.valid()) {  // checked before compiling: a size error is the clearer one
+    const std::uint32_t bytes = m_table->scene().global_signature(plan.global_signature).desc.push_bytes();
+    const std::uint32_t limit = m_ctx->properties().limits.maxPushConstantsSize;
+    if (bytes > limit) {
+      throw std::invalid_argument("Renderer: the global signature declares " + std::to_string(bytes) +
+                                  " bytes of push constants, " + m_ctx->name() + " allows " + std::to_string(limit) +
+                                  " (maxPushConstantsSize; every device allows 128); move the rest to a uniform");
+    }
+  }
   auto start = Clock::now();
   for (const PlannedStage& stage : plan.stages) {
     const std::string path = find_shader(stage.shader);
@@ -332,7 +351,7 @@ inline void Renderer::build_pipeline() {
   }
   for (const auto& set : m_sets) desc.set_layouts.push_back(set->layout());
   if (plan.global_signature.valid()) {
-    desc.push_constant_size = m_table->scene().global_signature(plan.global_signature).desc.push_constant_size;
+    desc.push_constant_size = m_table->scene().global_signature(plan.global_signature).desc.push_bytes();
   }
   desc.max_recursion_depth = plan.max_recursion_depth;
   PipelineCache cache(*m_ctx, m_options.pipeline_cache);
@@ -378,6 +397,27 @@ inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding
   throw std::invalid_argument(std::string(operation) + ": set " + std::to_string(set) + " binding " +
                               std::to_string(binding) + " is not a storage buffer of the global signature; "
                               "declare it there (a StorageSlot converts to its Binding)");
+}
+
+inline const PushConstantBlock* Renderer::push_block() const {
+  const PipelinePlan& plan = m_table->plan();
+  if (!plan.global_signature.valid()) return nullptr;
+  return &m_table->scene().global_signature(plan.global_signature).desc.push_constants;
+}
+
+inline void Renderer::set_push_bytes(PushConstantBlock slot, const TypeOps* type, std::span<const std::byte> bytes) {
+  const PushConstantBlock* block = push_block();
+  if (block == nullptr || block->type == nullptr) {
+    throw std::invalid_argument(std::string("Renderer::set_push: the global signature declares no typed push constants (") +
+                                std::to_string(m_pipeline->push_constant_size()) + " untyped bytes); declare them with "
+                                "GlobalSignatureDesc::push_constants = a PushConstantSlot<" + std::string(type->glsl_name) + ">");
+  }
+  if (block->type != type || block->name != slot.name) {
+    throw std::invalid_argument("Renderer::set_push: the slot holds " + std::string(type->glsl_name) + " \"" + slot.name +
+                                "\" but the global signature declares " + std::string(block->type->glsl_name) + " \"" +
+                                block->name + "\"; pass the slot the signature was declared with");
+  }
+  m_push.assign(bytes.begin(), bytes.end());
 }
 
 inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
@@ -511,6 +551,15 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
                              std::to_string(s.binding) + " was never given data; call set_storage(slot, values) first");
     }
   }
+  if (m_pipeline->push_constant_size() != m_push.size()) {
+    const PushConstantBlock* block = push_block();
+    throw std::logic_error(
+        "Renderer::render: the global signature declares " + std::to_string(m_pipeline->push_constant_size()) +
+        " bytes of push constants but " +
+        (block != nullptr && block->type != nullptr
+             ? std::string("they were never given a value; call set_push(slot, value) first")
+             : std::string("they are untyped, so the renderer cannot fill them; declare them with a PushConstantSlot<T>")));
+  }
   prepare_image(width, height);
   Frame frame{width, height, {}, 0, 0, false, {}};
   prepare_blases(frame.work);
@@ -538,7 +587,7 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
         if (queries != VK_NULL_HANDLE) vkCmdWriteTimestamp(c, stage, queries, query);
       };
     };
-    record_trace(*m_ctx, cmd, *m_pipeline, sets, *m_sbt, width, height, {},
+    record_trace(*m_ctx, cmd, *m_pipeline, sets, *m_sbt, width, height, m_push,
                  std::function<void(VkCommandBuffer)>(stamp(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0)),
                  std::function<void(VkCommandBuffer)>(stamp(VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 1)));
     recorded_ms = ms_since(host_start);

@@ -11,5 +11,9 @@ PROCEDURAY_STRUCT(Constants, scalar, sky);
 }  // namespace demo
 
 constexpr proceduray::UniformSlot<demo::Constants> constants{.binding = 2, .name = "constants"};
+constexpr proceduray::PushConstantSlot<demo::Constants> pushed{.name = "pushed"};
 
-void write(proceduray::vk::Renderer& renderer) { renderer.set(constants, demo::Constants{}); }
+void write(proceduray::vk::Renderer& renderer) {
+  renderer.set(constants, demo::Constants{});
+  renderer.set_push(pushed, demo::Constants{});  // the control of push_wrong_type too
+}
