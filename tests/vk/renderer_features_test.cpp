@@ -91,6 +91,22 @@ TEST_CASE("features masks hide exactly the masked instances and shadow-less obje
   CHECK(changed_blue == changed);
 }
 
+TEST_CASE("features set_mask changes what rays see with a TLAS rebuild and no BLAS work") {
+  Rendered r;
+  const glm::vec3 blue = features_scene::colours[1], green = features_scene::colours[2];
+  CHECK(count(r.frame(), blue) == 0);
+  r.renderer.set_mask(r.scene.ball(1), 0, all_layers);  // B joins the primary rays' layer
+  r.renderer.set_mask(r.scene.ball(2), 0, 0);           // C leaves every layer
+  const vk::Frame f = r.frame();
+  CHECK(f.work == vk::FrameWork{.tlas_builds = 1});
+  CHECK(count(f, blue) > 100);
+  CHECK(count(f, green) == 0);
+  CHECK(near(pixel(f, where(shadow_point(2))), bytes(tinted)));  // C still casts no shadow
+  r.renderer.set_mask(r.scene.ball(1), 0, all_layers);  // unchanged: no work
+  CHECK(r.frame().work == vk::FrameWork{});
+  CHECK_THROWS_WITH_AS(r.renderer.set_mask(r.scene.ball(1), 1, 0), doctest::Contains("no instance 1"), SceneError);
+}
+
 TEST_CASE("features any-hit cut-out shows the background through its holes and its shadow has holes") {
   Rendered cut;
   Rendered solid({.cutout_opaque = true});
@@ -163,6 +179,22 @@ TEST_CASE("features DynamicTransform moves instances with TLAS refits and no BLA
     CHECK(near(pixel(f, where(centre)), bytes(red)));
     CHECK(centroid(f, red).y < before.y - 2.0f * static_cast<float>(step));  // up the screen as it rises
   }
+  CHECK(r.frame().work == vk::FrameWork{});
+  // All instances of a geometry at once: one refit; a bad matrix or count moves nothing.
+  const glm::vec3 high = features_scene::centres[0] + glm::vec3(0.0f, 2.0f, 0.0f);
+  const glm::mat4 one[] = {glm::scale(glm::translate(glm::mat4(1.0f), high), glm::vec3(features_scene::radius))};
+  r.renderer.set_transforms(r.scene.ball(0), one);
+  const vk::Frame all = r.frame();
+  CHECK(all.work == vk::FrameWork{.tlas_updates = 1});
+  CHECK(near(pixel(all, where(high)), bytes(red)));
+  const glm::mat4 singular[] = {glm::mat4(0.0f)};
+  CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(0), singular), doctest::Contains("singular"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(0), {}),
+                       doctest::Contains("has 1 instances, 0 transforms given; give one per instance"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(2), one), doctest::Contains("geometry \"c\" is Static"),
+                       std::invalid_argument);
   CHECK(r.frame().work == vk::FrameWork{});
 }
 

@@ -5,7 +5,7 @@
 // Four scenes, each traced at N x N (default 32, so the trace does not hide the structure work)
 // without readback for `frames` frames after a warm-up:
 //   Static                 `instances` one-box instances and one geometry of `boxes` boxes; nothing changes
-//   DynamicTransform       the same, every instance moved every frame (set_transform: TLAS refit)
+//   DynamicTransform       the same, every instance moved every frame (set_transforms: TLAS refit)
 //   DynamicGeometry refit  the boxes geometry given new boxes every frame, same count (BLAS refit)
 //   DynamicGeometry build  the same with the count alternating (BLAS and TLAS rebuild)
 // Shaders: tools/bench/shaders (PROCEDURAY_BENCH_SHADER_DIR overrides the built-in path).
@@ -106,7 +106,7 @@ void run(const pr::vk::Context& ctx, Case which, std::uint32_t size, std::size_t
       next = boxes_at(which == Case::rebuild && f % 2 == 1 ? boxes - 1 : boxes, 0.001f * static_cast<float>(f));
     }
     const auto start = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < moved.size(); ++i) renderer.set_transform(many, static_cast<std::uint32_t>(i), moved[i]);
+    if (!moved.empty()) renderer.set_transforms(many, moved);  // every instance in one call
     if (!next.empty()) renderer.set_aabbs(big, next);
     const pr::vk::Frame frame = renderer.render(size, size, false);
     frame_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());

@@ -340,26 +340,32 @@ inline AccelerationStructure build_blas(const Context& ctx, std::span<const Tria
 namespace detail {
 
 /// Packs instances into Vulkan's layout; throws for bad input, naming the instance.
+/// Throws for an instance Vulkan cannot take: no BLAS, indices past 24 bits, a non-finite or singular transform.
+inline void check_instance(const Instance& in, std::size_t i) {
+  // Built only on failure: a refit checks every instance every frame.
+  auto which = [i] { return "build_tlas: instance " + std::to_string(i); };
+  if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
+    throw std::invalid_argument(which() + " has no BLAS; set Instance::blas to a built structure");
+  }
+  if (in.custom_index >= (1u << 24) || in.sbt_offset >= (1u << 24)) {
+    throw std::invalid_argument(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
+                                std::to_string(in.sbt_offset) + " does not fit in 24 bits");
+  }
+  const glm::mat4& m = in.transform;
+  bool is_finite = true;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) is_finite = is_finite && finite(m[c][r]);
+  if (!is_finite || std::abs(glm::determinant(glm::mat3(m))) < 1e-30f) {
+    throw std::invalid_argument(which() + " transform is " + (is_finite ? "singular" : "not finite") +
+                                "; give every instance an invertible, finite object-to-world matrix");
+  }
+}
+
 inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed) {
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance& in = instances[i];
-    // Built only on failure: a refit packs every instance every frame.
-    auto which = [i] { return "build_tlas: instance " + std::to_string(i); };
-    if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
-      throw std::invalid_argument(which() + " has no BLAS; set Instance::blas to a built structure");
-    }
-    if (in.custom_index >= (1u << 24) || in.sbt_offset >= (1u << 24)) {
-      throw std::invalid_argument(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
-                                  std::to_string(in.sbt_offset) + " does not fit in 24 bits");
-    }
+    check_instance(in, i);
     const glm::mat4& m = in.transform;
-    bool is_finite = true;
-    for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) is_finite = is_finite && finite(m[c][r]);
-    if (!is_finite || std::abs(glm::determinant(glm::mat3(m))) < 1e-30f) {
-      throw std::invalid_argument(which() + " transform is " + (is_finite ? "singular" : "not finite") +
-                                  "; give every instance an invertible, finite object-to-world matrix");
-    }
     VkAccelerationStructureInstanceKHR& out = packed[i];
     out = {};
     for (int r = 0; r < 3; ++r)

@@ -112,6 +112,12 @@ class Renderer {
   /// Moves instance `instance` of `geometry`; the TLAS is refit before the next trace (no BLAS work).
   /// Throws for a Static geometry (declare it UpdatePolicy::DynamicTransform).
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world);
+  /// Moves every instance of `geometry` (one matrix per instance, in instance order): one TLAS
+  /// refit for all of them. Throws like set_transform, or for a count that is not the instance count.
+  void set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world);
+  /// Changes the instance mask (Layers bits) of one instance, any policy: the TLAS is rebuilt
+  /// before the next trace (a mask is not a motion, so no refit is involved).
+  void set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask);
   /// Replaces a DynamicGeometry procedural geometry's boxes: the same count refits its BLAS before
   /// the next trace, another count rebuilds it. Throws for other policies, triangles or bad boxes.
   void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes);
@@ -144,6 +150,7 @@ class Renderer {
     const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
   };
   const Blas& dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const;
+  void check_movable(GeometryId geometry, const char* operation) const;
   /// Refits or rebuilds changed BLASes; refits are recorded into `cmd`, rebuilds done before.
   void prepare_blases(FrameWork& work);
   std::vector<AabbGeometry> aabb_geometries(std::uint32_t blas) const;
@@ -420,18 +427,50 @@ inline void Renderer::set_push_bytes(PushConstantBlock slot, const TypeOps* type
   m_push.assign(bytes.begin(), bytes.end());
 }
 
-inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
-  const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_transform");
+inline void Renderer::check_movable(GeometryId geometry, const char* operation) const {
   const Scene& scene = m_table->scene();
   if (scene.blas_of(geometry).update == UpdatePolicy::Static) {
-    throw std::invalid_argument("Renderer::set_transform: geometry \"" + scene.geometries().name(geometry.index()) +
+    throw std::invalid_argument(std::string(operation) + ": geometry \"" + scene.geometries().name(geometry.index()) +
                                 "\" is Static, so its instances were built not to move; declare it with "
                                 "update = UpdatePolicy::DynamicTransform");
   }
+}
+
+inline void Renderer::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world) {
+  constexpr const char* op = "Renderer::set_transforms";
+  const Scene& scene = m_table->scene();
+  check_movable(geometry, op);
+  const std::size_t count = scene.blas_of(geometry).instances.size();
+  if (object_to_world.size() != count) {
+    throw std::invalid_argument(std::string(op) + ": geometry \"" + scene.geometries().name(geometry.index()) + "\" has " +
+                                std::to_string(count) + " instances, " + std::to_string(object_to_world.size()) +
+                                " transforms given; give one per instance");
+  }
+  // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
+  // matrix leaves every instance where it was.
+  const std::uint32_t first = m_table->tlas_index(geometry, 0, op);
+  for (std::size_t i = 0; i < count; ++i) {
+    Instance probe = m_instances[first + i];
+    probe.transform = object_to_world[i];
+    detail::check_instance(probe, first + i);  // throws for a non-finite or singular transform
+  }
+  for (std::size_t i = 0; i < count; ++i) m_instances[first + i].transform = object_to_world[i];
+  m_transforms_dirty = true;
+}
+
+inline void Renderer::set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask) {
+  const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_mask");
+  if (m_instances[k].mask == mask) return;
+  m_instances[k].mask = mask;
+  m_tlas_rebuild = true;
+}
+
+inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
+  const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_transform");
+  check_movable(geometry, "Renderer::set_transform");
   Instance moved = m_instances[k];
   moved.transform = object_to_world;
-  VkAccelerationStructureInstanceKHR packed{};
-  detail::pack_instances({&moved, 1}, {&packed, 1});  // throws for a non-finite or singular transform
+  detail::check_instance(moved, k);  // throws for a non-finite or singular transform
   m_instances[k] = moved;
   m_transforms_dirty = true;
 }
