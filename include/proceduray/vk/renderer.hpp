@@ -79,7 +79,7 @@ struct Frame {
   std::uint32_t height = 0;
   std::vector<std::uint8_t> rgba;  ///< width * height RGBA8 pixels, rows top to bottom; empty without readback
   double trace_ms = 0;  ///< GPU time between timestamps around vkCmdTraceRaysKHR (wall time if the queue has none)
-  double host_ms = 0;   ///< host work before submit: uniform uploads, TLAS instance writes, command recording
+  double host_ms = 0;   ///< host work before submit: uniform uploads, BLAS input and TLAS instance writes, recording
   bool tlas_refit = false;  ///< the frame refit or rebuilt the TLAS (work.tlas_updates + work.tlas_builds > 0)
   FrameWork work;           ///< acceleration-structure work done for this frame
 };
@@ -151,8 +151,10 @@ class Renderer {
   };
   const Blas& dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const;
   void check_movable(GeometryId geometry, const char* operation) const;
-  /// Refits or rebuilds changed BLASes; refits are recorded into `cmd`, rebuilds done before.
-  void prepare_blases(FrameWork& work);
+  /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit,
+  /// which the frame's command buffer records before the TLAS work and the trace.
+  std::vector<std::uint32_t> prepare_blases(FrameWork& work);
+  void record_refit(VkCommandBuffer cmd, std::uint32_t blas);
   std::vector<AabbGeometry> aabb_geometries(std::uint32_t blas) const;
   std::vector<TriangleGeometry> triangle_geometries(std::uint32_t blas) const;
   struct Uniform {
@@ -538,8 +540,18 @@ inline void Renderer::set_mesh(GeometryId geometry, TriangleMesh mesh) {
   slot.changed = true;
 }
 
-inline void Renderer::prepare_blases(FrameWork& work) {
+inline void Renderer::record_refit(VkCommandBuffer cmd, std::uint32_t b) {
+  RefittableBlas& blas = *m_blases[b].dynamic;
+  if (m_table->scene().blases()[b].kind == GeometryKind::procedural) {
+    blas.record_refit(*m_ctx, cmd, std::span<const AabbGeometry>(aabb_geometries(b)));
+  } else {
+    blas.record_refit(*m_ctx, cmd, std::span<const TriangleGeometry>(triangle_geometries(b)));
+  }
+}
+
+inline std::vector<std::uint32_t> Renderer::prepare_blases(FrameWork& work) {
   const Scene& scene = m_table->scene();
+  std::vector<std::uint32_t> refits;
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
     BlasSlot& slot = m_blases[b];
     if (!slot.changed) continue;
@@ -550,10 +562,7 @@ inline void Renderer::prepare_blases(FrameWork& work) {
     const bool refit = procedural ? slot.dynamic->same_topology(std::span<const AabbGeometry>(boxes))
                                   : slot.dynamic->same_topology(std::span<const TriangleGeometry>(meshes));
     if (refit) {
-      m_ctx->submit([&](VkCommandBuffer cmd) {
-        if (procedural) slot.dynamic->record_refit(*m_ctx, cmd, std::span<const AabbGeometry>(boxes));
-        else slot.dynamic->record_refit(*m_ctx, cmd, std::span<const TriangleGeometry>(meshes));
-      });
+      refits.push_back(b);
       ++work.blas_refits;
       m_transforms_dirty = true;  // the TLAS holds the old bounds: refit it
     } else {
@@ -568,6 +577,7 @@ inline void Renderer::prepare_blases(FrameWork& work) {
       m_tlas_rebuild = true;
     }
   }
+  return refits;
 }
 
 inline void Renderer::prepare_image(std::uint32_t width, std::uint32_t height) {
@@ -601,7 +611,7 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   }
   prepare_image(width, height);
   Frame frame{width, height, {}, 0, 0, false, {}};
-  prepare_blases(frame.work);
+  const std::vector<std::uint32_t> refits = prepare_blases(frame.work);
   if (m_tlas_rebuild) ++frame.work.tlas_builds;
   else if (m_transforms_dirty) ++frame.work.tlas_updates;
   frame.tlas_refit = frame.work.tlas_builds + frame.work.tlas_updates > 0;
@@ -613,6 +623,7 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   double recorded_ms = 0;
   const auto wall_start = Clock::now();
   m_ctx->submit([&](VkCommandBuffer cmd) {
+    for (std::uint32_t b : refits) record_refit(cmd, b);  // each ends with a barrier for the TLAS build
     if (m_tlas_rebuild) m_tlas.record_build(*m_ctx, cmd, m_instances);
     else if (m_transforms_dirty) m_tlas.record_update(*m_ctx, cmd, m_instances);
     m_transforms_dirty = false;
