@@ -1,6 +1,6 @@
 // Benchmark (not a test): what each update policy costs per frame, on the renderer.
 //
-//   bench_update_policies [--device cpu|gpu|auto] [--size N] [instances=10000] [boxes=100000] [frames=21]
+//   bench_update_policies [--device cpu|gpu|auto] [--size N] [--scatter] [instances=10000] [boxes=100000] [frames=21]
 //
 // Four scenes, each traced at N x N (default 32, so the trace does not hide the structure work)
 // without readback for `frames` frames after a warm-up:
@@ -8,6 +8,8 @@
 //   DynamicTransform       the same, every instance moved every frame (set_transforms: TLAS refit)
 //   DynamicGeometry refit  the boxes geometry given new boxes every frame, same count (BLAS refit)
 //   DynamicGeometry build  the same with the count alternating (BLAS and TLAS rebuild)
+// --scatter gives the boxes new random places every frame instead of a small shift: the refit
+// then keeps a tree that no longer fits them, and its trace time shows what that costs.
 // Shaders: tools/bench/shaders (PROCEDURAY_BENCH_SHADER_DIR overrides the built-in path).
 // Prints the median frame time (the set_* calls and render(), wall clock), the median trace
 // time (GPU timestamps), the median of their difference (host work, structure builds and
@@ -44,8 +46,8 @@ const char* names[] = {"Static", "DynamicTransform", "DynamicGeometry refit", "D
 
 /// `count` small boxes at the same random places every call, moved `shift` along z: small motion,
 /// the case a refit is for (random new places would leave a refit tree that traces slowly).
-std::vector<pr::Aabb> boxes_at(std::size_t count, float shift) {
-  std::mt19937 rng(7);
+std::vector<pr::Aabb> boxes_at(std::size_t count, float shift, unsigned seed = 7) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<float> at(-0.95f, 0.95f);
   std::vector<pr::Aabb> out(count);
   for (pr::Aabb& b : out) {
@@ -69,7 +71,7 @@ double median(std::vector<double> v) {
 }
 
 void run(const pr::vk::Context& ctx, Case which, std::uint32_t size, std::size_t instances, std::size_t boxes,
-         int frames) {
+         int frames, bool scatter) {
   pr::Scene scene;
   const auto primary = scene.add_ray<bench::Colour>("primary", {.miss = "bench.rmiss"});
   const auto group = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
@@ -103,7 +105,8 @@ void run(const pr::vk::Context& ctx, Case which, std::uint32_t size, std::size_t
     if (which == Case::moving) {
       for (std::size_t i = 0; i < instances; ++i) moved.push_back(place(i, instances, 0.3f * static_cast<float>(f)));
     } else if (which == Case::refit || which == Case::rebuild) {
-      next = boxes_at(which == Case::rebuild && f % 2 == 1 ? boxes - 1 : boxes, 0.001f * static_cast<float>(f));
+      next = boxes_at(which == Case::rebuild && f % 2 == 1 ? boxes - 1 : boxes, 0.001f * static_cast<float>(f),
+                      scatter ? 7u + static_cast<unsigned>(f) : 7u);
     }
     const auto start = std::chrono::steady_clock::now();
     if (!moved.empty()) renderer.set_transforms(many, moved);  // every instance in one call
@@ -125,12 +128,15 @@ int main(int argc, char** argv) {
   pr::vk::DevicePreference device = pr::vk::DevicePreference::automatic;
   std::vector<std::size_t> numbers;
   std::uint32_t size = 32;
+  bool scatter = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--device" && i + 1 < argc) {
       const std::string v = argv[++i];
       device = v == "gpu" ? pr::vk::DevicePreference::gpu : v == "cpu" ? pr::vk::DevicePreference::cpu
                                                                         : pr::vk::DevicePreference::automatic;
+    } else if (arg == "--scatter") {
+      scatter = true;
     } else if (arg == "--size" && i + 1 < argc) {
       size = static_cast<std::uint32_t>(std::strtoul(argv[++i], nullptr, 10));
     } else {
@@ -146,10 +152,10 @@ int main(int argc, char** argv) {
   }
   try {
     pr::vk::Context ctx({.device = device});
-    std::printf("device: %s; %zu instances, a geometry of %zu boxes, median of %d frames at %ux%u\n",
-                ctx.name().c_str(), instances, boxes, frames, size, size);
+    std::printf("device: %s; %zu instances, a geometry of %zu boxes%s, median of %d frames at %ux%u\n",
+                ctx.name().c_str(), instances, boxes, scatter ? " scattered anew each frame" : "", frames, size, size);
     std::printf("%-22s %10s %10s %10s   %s\n", "policy", "frame ms", "trace ms", "other ms", "work in the last frame");
-    for (Case c : {Case::fixed, Case::moving, Case::refit, Case::rebuild}) run(ctx, c, size, instances, boxes, frames);
+    for (Case c : {Case::fixed, Case::moving, Case::refit, Case::rebuild}) run(ctx, c, size, instances, boxes, frames, scatter);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_update_policies: %s\n", e.what());
     return 1;
