@@ -237,23 +237,25 @@ inline void Renderer::build_acceleration_structures() {
       if (blas.kind == GeometryKind::procedural) {
         auto& list = slot.boxes.emplace_back();
         for (const Aabb& a : desc.aabbs) list.push_back({a.min.x, a.min.y, a.min.z, a.max.x, a.max.y, a.max.z});
-      } else {
-        slot.meshes.push_back(desc.mesh);
+      } else if (refittable) {
+        slot.meshes.push_back(desc.mesh);  // the renderer's own copy: set_vertices and set_mesh change it
       }
     }
     if (blas.kind == GeometryKind::procedural) {
       const auto geometries = aabb_geometries(b);
       if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(geometries));
       else slot.fixed = build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), m_options.blas);
-    } else {
+      if (!refittable) slot.boxes.clear();  // the scene keeps Static boxes
+    } else if (refittable) {
       const auto geometries = triangle_geometries(b);
-      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
-      else slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), m_options.blas);
-    }
-    // Static data lives in the scene; only dynamic geometry needs the renderer's own copy.
-    if (!refittable) {
-      slot.boxes.clear();
-      slot.meshes.clear();
+      slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
+    } else {
+      std::vector<TriangleGeometry> geometries;  // straight from the scene: a Static mesh is not copied
+      for (GeometryId id : blas.geometries) {
+        const GeometryDesc& desc = scene.geometry(id).desc;
+        geometries.push_back({desc.mesh.vertices, desc.mesh.indices, desc.opaque});
+      }
+      slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), m_options.blas);
     }
   }
   const auto instances = m_table->instances();
