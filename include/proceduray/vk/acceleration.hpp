@@ -144,6 +144,15 @@ inline AccelerationStructure compact(const Context& ctx, const AccelerationStruc
   return result;
 }
 
+/// Makes a recorded build's writes visible to `readers` (later builds that reference it, traces).
+inline void after_build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags readers) {
+  auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, readers, 0, 1, &barrier, 0, nullptr,
+                       0, nullptr);
+}
+
 /// Sizes the structure, creates it and a scratch buffer, builds it and waits; compacts when the flags allow.
 inline AccelerationStructure build_acceleration_structure(const Context& ctx, VkAccelerationStructureTypeKHR type,
                                                           std::span<const VkAccelerationStructureGeometryKHR> geometries,
@@ -464,12 +473,7 @@ class Tlas {
     VkAccelerationStructureBuildRangeInfoKHR range{m_count, 0, 0, 0};
     const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = &range;
     ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
-    // The build writes the structure; traces that follow read it.
-    auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-    barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                         VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    detail::after_build_barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);  // traces read it
   }
 
   std::uint32_t m_count = 0;

@@ -119,12 +119,8 @@ class RefittableBlas {
     const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = ranges.data();
     ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
     // The TLAS build that follows reads this structure, and so do the traces.
-    auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-    barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                         VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                         0, 1, &barrier, 0, nullptr, 0, nullptr);
+    detail::after_build_barrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                         VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
   }
 
   detail::BlasInput m_input;
