@@ -1,7 +1,7 @@
 // The report's figure 3 scene, host side: rays, objects (geometry, hit groups, records), the table.
 //
 //   paper::PaperScene scene;
-//   proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), scene.renderer_options());
+//   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
 //
 // SBT: 2 ray types (radiance 0, shadow 1), so each geometry takes 2 hit records per instance
 // block; the Pac-men get one block each (their own materials), the rest share theirs.
@@ -16,23 +16,23 @@ namespace paper {
 
 inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
-/// The scene, its entries and (after build(limits)) its shader binding table.
-struct PaperScene : pr::SceneTables {
+/// The scene: its entities and entries.
+struct PaperScene : pr::Scene {
   PaperScene() {
-    const auto radiance = scene.add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
-    scene.add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
-    const auto material = scene.add_local_signature<MaterialRecord>("material");
+    const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
+    add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
+    const auto material = add_local_signature<MaterialRecord>("material");
     set_global_signature(pr::default_global_signature({constants_slot}));
-    table.add_raygen("raygen.rgen");
-    table.set_max_recursion_depth(max_depth_limit + 1);  // the deepest radiance hit still traces a shadow ray
-    add_object("plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
-                         .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
+    add_raygen("raygen.rgen");
+    set_max_recursion_depth(max_depth_limit + 1);  // the deepest radiance hit still traces a shadow ray
+    pr::add_object(*this, "plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
+                                    .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
     // Each marched object: its own intersection shader for both rays, shade.rchit for radiance.
     const auto procedural = [&](const std::string& id, pr::Aabb box, const std::vector<pr::Placement>& at,
                                 const std::vector<MaterialRecord>& materials) {
-      add_object<ProceduralHit>(id, {.geometry = pr::GeometryDesc::procedural({box}, pr::transforms(at)),
-                                     .intersection = id + ".rint", .closest_hit = {{radiance, "shade.rchit"}}},
-                                material, materials);
+      pr::add_object<ProceduralHit>(*this, id, {.geometry = pr::GeometryDesc::procedural({box}, pr::transforms(at)),
+                                                .intersection = id + ".rint", .closest_hit = {{radiance, "shade.rchit"}}},
+                                    material, materials);
     };
     procedural("pacman", pacman_aabb, pacman_placements, pacman_materials);
     procedural("julia", julia_aabb, {julia_placement}, {julia_material});
@@ -42,7 +42,7 @@ struct PaperScene : pr::SceneTables {
   /// Shaders from this example's folder, with the flags and the AABBs after the derived declarations.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
     return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-            .extra_declarations = extra_declarations + pr::glsl_aabb_consts(scene), .pipeline_cache = std::move(cache)};
+            .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this), .pipeline_cache = std::move(cache)};
   }
 };
 

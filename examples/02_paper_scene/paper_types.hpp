@@ -2,7 +2,7 @@
 // scene's fixed numbers (AABBs, placements, materials, default knobs).
 //
 //   paper::SceneConstants constants = paper::default_constants(1024, 768, time);   // binding 2
-//   // each shader compiles with glsl_for(table, stage, name) + paper::extra_declarations
+//   // each shader compiles with glsl_for(plan, stage, name) + paper::extra_declarations
 //   //                         + proceduray::glsl_aabb_consts(scene) (pacman_aabb_min, ...)
 //
 // Conventions the shaders in shaders/ (next to this file) rely on:

@@ -2,7 +2,7 @@
 // geometry per primitive, three procedural hit groups, radiance and shadow rays.
 //
 //   d3d12::D3d12Scene scene;                                  // the sample's grid on the ground
-//   proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), d3d12::renderer_options());
+//   proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options());
 //   renderer.set(d3d12::constants_slot, d3d12::default_constants(d3d12::sample_camera(w, h), time));
 //
 // Hit-group table: 2 ray types, so 2 records per geometry (11 geometries: 22 records, the
@@ -20,7 +20,6 @@
 
 #include <proceduray/proceduray.hpp>
 
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -28,73 +27,56 @@ namespace d3d12 {
 
 inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
-class D3d12Scene {
+/// The sample's scene: a proceduray::Scene with its entities and entries, and its primitives.
+class D3d12Scene : public pr::Scene {
  public:
   /// The given primitives (each validated: throws PrimitiveError) placed by `layout`; the
   /// ground only with Layout::sample.
   explicit D3d12Scene(std::span<const Primitive> primitives, Layout layout = Layout::sample) {
     for (const Primitive& p : primitives) validate(p);
     m_primitives.assign(primitives.begin(), primitives.end());
-    m_radiance = m_scene.add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
-    m_shadow = m_scene.add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
-    m_record = m_scene.add_local_signature<PrimitiveRecord>("primitive");
+    m_radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
+    m_shadow = add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
+    m_record = add_local_signature<PrimitiveRecord>("primitive");
+    add_raygen("raygen.rgen");
+    set_max_recursion_depth(max_recursion_depth);
+    set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                       {pr::BindingKind::storage_image, 1, 0, 1, "image"}, constants_slot}});
     if (layout == Layout::sample) {
-      m_scene.add_hit_group("plane", {.kind = pr::HitGroupKind::triangles, .closest_hit = "plane.rchit"});
-      m_scene.add_hit_group("plane_shadow", {.kind = pr::HitGroupKind::triangles});
+      add_hit_group("plane", {.kind = pr::HitGroupKind::triangles, .closest_hit = "plane.rchit"});
+      add_hit_group("plane_shadow", {.kind = pr::HitGroupKind::triangles});
       const float h = plane_half;
       const pr::TriangleMesh quad{{{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}}, {0, 2, 1, 0, 3, 2}};
-      m_plane = m_scene.add_geometry("ground", pr::GeometryDesc::triangles(quad));
+      bind("plane", add_geometry("ground", pr::GeometryDesc::triangles(quad)), plane_record);
     }
     for (const std::string group : {"analytic", "volumetric", "signed_distance"}) {
-      m_scene.add_hit_group<ProceduralHit>(group, {.kind = pr::HitGroupKind::procedural, .closest_hit = "shade.rchit",
-                                                   .intersection = group + ".rint"});
-      m_scene.add_hit_group<ProceduralHit>(group + "_shadow",
-                                           {.kind = pr::HitGroupKind::procedural, .intersection = group + ".rint"});
+      add_hit_group<ProceduralHit>(group, {.kind = pr::HitGroupKind::procedural, .closest_hit = "shade.rchit",
+                                           .intersection = group + ".rint"});
+      add_hit_group<ProceduralHit>(group + "_shadow", {.kind = pr::HitGroupKind::procedural, .intersection = group + ".rint"});
     }
     const pr::Aabb local{glm::vec3(-1.0f), glm::vec3(1.0f)};
     for (const Primitive& p : m_primitives) {
       const glm::mat4 m = glm::translate(glm::mat4(1.0f), placement(p.kind, layout));
-      m_geometries.push_back(m_scene.add_geometry(std::string(primitive_names[p.kind]),
-                                                  pr::GeometryDesc::procedural({local}, {pr::instance_transform(m)})));
+      const pr::GeometryId g = add_geometry(std::string(primitive_names[p.kind]),
+                                            pr::GeometryDesc::procedural({local}, {pr::instance_transform(m)}));
+      bind(std::string(hit_group_of(p.kind)), g, record_of(p));
     }
-    m_scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
-                                                         {pr::BindingKind::storage_image, 1, 0, 1, "image"},
-                                                         constants_slot}});
   }
   D3d12Scene() : D3d12Scene(default_primitives()) {}
 
-  /// The shader table (raygen, both rays' records per geometry) built for a device's limits.
-  const pr::ShaderBindingTable& build(const pr::DeviceLimits& limits) {
-    m_table.emplace(m_scene);
-    m_table->add_raygen("raygen.rgen");
-    m_table->set_global_signature(m_scene.global_signature_id("global"));
-    m_table->set_max_recursion_depth(max_recursion_depth);
-    if (m_plane) bind("plane", *m_plane, plane_record);
-    for (std::size_t i = 0; i < m_primitives.size(); ++i) {
-      bind(std::string(hit_group_of(m_primitives[i].kind)), m_geometries[i], record_of(m_primitives[i]));
-    }
-    m_sbt.emplace(m_table->build(limits));
-    return *m_sbt;
-  }
-
-  const pr::Scene& scene() const { return m_scene; }
   std::span<const Primitive> primitives() const { return m_primitives; }
 
  private:
+  /// Both rays' records for geometry `g`: group `group` for radiance, `<group>_shadow` for shadow.
   void bind(const std::string& group, pr::GeometryId g, const PrimitiveRecord& r) {
-    m_table->add_hit(m_radiance, m_scene.hit_group_id(group), m_record, r, g);
-    m_table->add_hit(m_shadow, m_scene.hit_group_id(group + "_shadow"), m_record, r, g);
+    add_hit(m_radiance, hit_group_id(group), m_record, r, g);
+    add_hit(m_shadow, hit_group_id(group + "_shadow"), m_record, r, g);
   }
 
   std::vector<Primitive> m_primitives;
-  pr::Scene m_scene;
   pr::RayId<RadiancePayload> m_radiance;
   pr::RayId<ShadowPayload> m_shadow;
   pr::LocalSignatureId<PrimitiveRecord> m_record;
-  std::optional<pr::GeometryId> m_plane;
-  std::vector<pr::GeometryId> m_geometries;
-  std::optional<pr::ShaderTable> m_table;
-  std::optional<pr::ShaderBindingTable> m_sbt;
 };
 
 /// Shaders from this example's folder, with the scene's constants after the derived declarations.

@@ -1,4 +1,4 @@
-// The D3D12 procedural-geometry sample's scene through Scene + ShaderTable + Renderer: the
+// The D3D12 procedural-geometry sample's scene through Scene + Renderer: the
 // ground and a grid of analytic, volumetric and signed-distance primitives, radiance and shadow
 // rays, animated over --frames with no acceleration-structure work. Prints timings and the SBT.
 //   --gallery PATH  also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)
@@ -57,7 +57,7 @@ void bench_row(proceduray::vk::Renderer& renderer, const std::string& name, d3d1
 void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, const char* gallery, bool bench,
               float relax) {
   d3d12::D3d12Scene scene(d3d12::default_primitives(), d3d12::Layout::isolated);
-  proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), d3d12::renderer_options(o.cache));
+  proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options(o.cache));
   const std::uint32_t w = o.width, h = o.height, columns = 5, rows = 2;
   std::vector<std::uint8_t> tiles(std::size_t(w) * columns * h * rows * 4);
   if (bench) {
@@ -121,8 +121,7 @@ int main(int argc, char** argv) {
       return ctx.validation_messages().empty() ? 0 : 1;
     }
     d3d12::D3d12Scene scene;
-    const proceduray::ShaderBindingTable& sbt = scene.build(ctx.limits());
-    proceduray::vk::Renderer renderer(ctx, sbt, d3d12::renderer_options(o.cache));
+    proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options(o.cache));
     const proceduray::Camera camera = d3d12::sample_camera(o.width, o.height);
     auto constants = [&](float time) {
       d3d12::SceneConstants c = d3d12::default_constants(camera, time);
@@ -136,7 +135,7 @@ int main(int argc, char** argv) {
       renderer.set(d3d12::constants_slot, constants(0.1f * static_cast<float>(f)));
     });
     examples::print_run(run, o);
-    std::printf("%s", proceduray::format_sbt(sbt).c_str());
+    std::printf("%s", proceduray::format_sbt(renderer.plan(), renderer.sbt().layout()).c_str());
     examples::write_last(run, o);
     return ctx.validation_messages().empty() ? 0 : 1;
   } catch (const std::exception& e) {

@@ -6,7 +6,7 @@
 //   examples::print_run(run, o);
 //   examples::write_last(run, o);   // PNG, then its path
 //
-//   // or all of the above for a SceneTables type with renderer_options(cache), in one call:
+//   // or all of the above for a proceduray::Scene type with renderer_options(cache), in one call:
 //   return examples::run_scene<MyScene>(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
 //                                       [](const examples::Options& o, std::uint32_t frame) { return constants; });
 #pragma once
@@ -78,7 +78,7 @@ inline void write_last(const Run& run, const Options& o) {
   std::printf("%s\n", std::filesystem::absolute(o.out).string().c_str());
 }
 
-/// A scene example's whole program: options, device, the renderer of Scene (a SceneTables with
+/// A scene example's whole program: options, device, the renderer of Scene (a proceduray::Scene with
 /// renderer_options(cache)), the build report, o.frames frames with `slot` set to constants(o, frame)
 /// before each (and before the warm-up), their medians, the SBT and the PNG. Returns the exit code:
 /// 1 on an exception (printed with the program's name) or a validation message, else 0.
@@ -91,12 +91,12 @@ int run_scene(int argc, char** argv, const char* program, Options defaults, proc
     proceduray::check_writable(o.out);  // fail before the expensive part
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
     Scene scene;
-    proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), scene.renderer_options(o.cache));
+    proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options(o.cache));
     renderer.set(slot, constants(o, 0u));
     print_build(ctx, renderer);
     const Run run = run_frames(renderer, o, [&](std::uint32_t f) { renderer.set(slot, constants(o, f)); });
     print_run(run, o);
-    std::printf("%s", proceduray::format_sbt(scene.sbt()).c_str());
+    std::printf("%s", proceduray::format_sbt(renderer.plan(), renderer.sbt().layout()).c_str());
     write_last(run, o);
     return ctx.validation_messages().empty() ? 0 : 1;
   } catch (const std::exception& e) {

@@ -2,14 +2,15 @@
 //
 //   #include <proceduray/proceduray.hpp>
 //   proceduray::vk::Context ctx;                       // GPU if present, else lavapipe
-//   MyScene scene;                                     // a proceduray::SceneTables: rays, objects, entries
-//   proceduray::vk::Renderer renderer(ctx, scene.build(ctx.limits()), options);   // examples/02_paper_scene
+//   proceduray::Scene scene = make_scene();            // rays, objects, entries: examples/02_paper_scene
+//   proceduray::vk::Renderer renderer(ctx, scene, options);   // compiles the scene, builds it on the device
 //   auto blas = proceduray::vk::build_blas(ctx, ...);  // or the thin layer alone: examples/01_hello_sphere
 //
 // Layers: scene/ (pure, no Vulkan) and shader/ (pure) under vk/ (the thin backend), and
 // image/ for output. Each header also compiles on its own.
 #pragma once
 
+#include <proceduray/error.hpp>
 #include <proceduray/image/png.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>
@@ -19,8 +20,7 @@
 #include <proceduray/scene/quad_mesh.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
-#include <proceduray/scene/scene_tables.hpp>
-#include <proceduray/scene/shader_table.hpp>
+#include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/shader.hpp>
 #include <proceduray/vk/acceleration.hpp>

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "proceduray/scene/shader_table.hpp"
+#include "proceduray/scene/compile.hpp"
 #include "proceduray/shader/field_list.hpp"
 
 namespace {
@@ -63,18 +63,18 @@ int main(int argc, char** argv) {
                                      proceduray::GeometryDesc::procedural({proceduray::Aabb{}}, std::move(transforms))));
   }
   const auto t1 = clock::now();
-  proceduray::ShaderTable table(scene);
-  table.reserve(std::size_t{instances} + geometries + 1, std::size_t{instances} * sizeof(InstanceArgs));
-  table.add_raygen("raygen.rgen");
+  scene.reserve_entries(std::size_t{instances} + geometries + 1, std::size_t{instances} * sizeof(InstanceArgs));
+  scene.add_raygen("raygen.rgen");
   for (std::uint32_t g = 0; g < geometries; ++g) {
-    table.add_hit(shadow, shadow_group, ids[g]);
+    scene.add_hit(shadow, shadow_group, ids[g]);
     for (std::uint32_t i = 0; i < per_geometry; ++i) {
-      table.add_hit(radiance, group, signature, InstanceArgs{g * per_geometry + i, g, 1.0f, 0.0f}, ids[g], i);
+      scene.add_hit(radiance, group, signature, InstanceArgs{g * per_geometry + i, g, 1.0f, 0.0f}, ids[g], i);
     }
   }
   const auto t2 = clock::now();
-  const proceduray::ShaderBindingTable sbt = table.build({.sbt = {.handle_size = 32, .handle_alignment = 16,
-                                                                  .base_alignment = 32, .max_stride = 16384}});
+  const proceduray::Plan sbt = proceduray::compile(scene);
+  const proceduray::SbtLayout layout =
+      sbt.layout({.sbt = {.handle_size = 32, .handle_alignment = 16, .base_alignment = 32, .max_stride = 16384}});
   const auto t3 = clock::now();
   std::uint64_t checksum = 0;
   for (std::uint32_t g = 0; g < geometries; ++g) {
@@ -86,8 +86,8 @@ int main(int argc, char** argv) {
   const auto t4 = clock::now();
   std::printf("instances %u (geometries %u x %u), hit records %zu, SBT %llu bytes, TLAS instances %zu\n",
               geometries * per_geometry, geometries, per_geometry, sbt.records(proceduray::SbtRegionKind::hit).size(),
-              static_cast<unsigned long long>(sbt.layout().size), sbt.instances().size());
-  std::printf("registry %.1f ms, entries %.1f ms, build %.1f ms, resolve x%u %.1f ms, total %.1f ms\n", ms(t0, t1),
+              static_cast<unsigned long long>(layout.size), sbt.instances().size());
+  std::printf("registry %.1f ms, entries %.1f ms, compile + layout %.1f ms, resolve x%u %.1f ms, total %.1f ms\n", ms(t0, t1),
               ms(t1, t2), ms(t2, t3), 2 * geometries * per_geometry, ms(t3, t4), ms(t0, t4));
   std::printf("peak memory %.1f MiB (%.1f MiB above start; %.1f bytes per instance); checksum %llu\n",
               static_cast<double>(peak_kib()) / 1024.0, static_cast<double>(peak_kib() - base_kib) / 1024.0,

@@ -84,15 +84,12 @@ void run(const pr::vk::Context& ctx, Case which, std::uint32_t size, std::size_t
   pr::GeometryDesc cloud = pr::GeometryDesc::procedural(boxes_at(boxes, 0.0f));
   if (which == Case::refit || which == Case::rebuild) cloud.update = pr::UpdatePolicy::DynamicGeometry;
   const pr::GeometryId big = scene.add_geometry("boxes", cloud);
-  scene.add_global_signature("global", {.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
-                                                     {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
-  pr::ShaderTable table(scene);
-  table.add_raygen("bench.rgen");
-  table.set_global_signature(scene.global_signature_id("global"));
-  table.set_default_hit(primary, group);
-  const pr::ShaderBindingTable sbt = table.build(ctx.limits());
+  scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                            {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
+  scene.add_raygen("bench.rgen");
+  scene.set_default_hit(primary, group);
   const char* dir = std::getenv("PROCEDURAY_BENCH_SHADER_DIR");  // for binaries carried to another machine
-  pr::vk::Renderer renderer(ctx, sbt, {.shader_dirs = {dir != nullptr ? dir : PROCEDURAY_BENCH_SHADER_DIR}});
+  pr::vk::Renderer renderer(ctx, scene, {.shader_dirs = {dir != nullptr ? dir : PROCEDURAY_BENCH_SHADER_DIR}});
   renderer.warm_up();
   renderer.render(size, size, false);
 

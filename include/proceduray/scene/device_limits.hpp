@@ -1,9 +1,9 @@
-// The device limits a scene is checked against when its shader table is built: the SBT
+// The device limits a compiled scene is checked against when its SBT is laid out: the SBT
 // properties plus ray-tracing and acceleration-structure limits.
 //
 //   proceduray::DeviceLimits limits{.sbt = {.handle_size = 32, .handle_alignment = 16,
 //                                           .base_alignment = 32, .max_stride = 16384}};
-//   auto sbt = table.build(limits);   // throws DeviceLimitError when the scene does not fit
+//   auto layout = compile(scene).layout(limits);   // throws DeviceLimitError when the scene does not fit
 //
 // Fill it from VkPhysicalDeviceRayTracingPipelinePropertiesKHR and
 // VkPhysicalDeviceAccelerationStructurePropertiesKHR; the defaults are the smallest values
@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "proceduray/scene/sbt_layout.hpp"
 
@@ -26,6 +27,7 @@ struct DeviceLimits {
   std::uint32_t max_ray_hit_attribute_size = 32;      ///< maxRayHitAttributeSize (bytes)
   std::uint64_t max_geometry_count = 16'777'215;      ///< maxGeometryCount: geometries per BLAS
   std::uint64_t max_instance_count = 16'777'215;      ///< maxInstanceCount: instances in the TLAS
+  std::string device;                                 ///< the device's name, for messages; empty: unnamed
 };
 
 }  // namespace proceduray

@@ -39,12 +39,14 @@ struct Binding {
   std::uint32_t count = 1;                         ///< array size; default 1
   std::string name;                                ///< GLSL name to declare it under (glsl_for); empty: not declared
   const TypeOps* type = nullptr;                   ///< a uniform or storage buffer's contents (UniformSlot sets it)
+  friend bool operator==(const Binding&, const Binding&) = default;
 };
 
 /// A typed push constant block: its type and the GLSL name it is declared under (PushConstantSlot makes it).
 struct PushConstantBlock {
   const TypeOps* type = nullptr;  ///< the block's contents; null: none
   std::string name;               ///< GLSL instance name glsl_for declares it under; empty: declared by hand
+  friend bool operator==(const PushConstantBlock&, const PushConstantBlock&) = default;
 };
 
 /// What the user declares for a global signature.
@@ -56,6 +58,7 @@ struct GlobalSignatureDesc {
   std::uint32_t push_bytes() const {
     return push_constants.type != nullptr ? static_cast<std::uint32_t>(push_constants.type->cpp_size) : push_constant_size;
   }
+  friend bool operator==(const GlobalSignatureDesc&, const GlobalSignatureDesc&) = default;
 };
 
 /// A registered global signature.

@@ -5,7 +5,7 @@
 //   auto radiance = scene.add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
 //   auto shadow   = scene.add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});   // rays first
 //   auto material = scene.add_local_signature<Material>("material");
-//   proceduray::add_object<SphereHit>(scene, table, "spheres",
+//   proceduray::add_object<SphereHit>(scene, "spheres",
 //       {.geometry = proceduray::GeometryDesc::procedural({box}, {left, right}),
 //        .intersection = "sphere.rint",                        // every ray type's intersection
 //        .closest_hit = {{radiance, "shade.rchit"}}},          // the shadow ray runs none
@@ -14,7 +14,7 @@
 // registers hit groups "spheres" (ray 0) and "spheres_shadow" (every other ray: "<id>_<ray>"),
 // geometry "spheres", and one entry per (ray, record). The hit groups' kind follows the geometry's
 // (procedural with AABBs, triangles with a mesh). Every check comes before the first change, so a
-// throw leaves the scene and the table as they were.
+// throw leaves the scene as it was.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +30,6 @@
 #include "proceduray/scene/ids.hpp"
 #include "proceduray/scene/scene.hpp"
 #include "proceduray/scene/shader_data.hpp"
-#include "proceduray/scene/shader_table.hpp"
 
 namespace proceduray {
 
@@ -76,21 +75,16 @@ inline std::string shader_of(const Scene& scene, const std::vector<RayShader>& l
 /// Instances of the object's BLAS: its own, or those of the shared BLAS it joins.
 inline std::size_t object_instances(const Scene& scene, const GeometryDesc& g) {
   if (!g.instances.empty() || g.blas.empty()) return g.instances.size();
-  for (const Blas& b : scene.blases()) {
-    if (b.shared && b.name == g.blas) return b.instances.size();
-  }
-  return 0;
+  const Blas* shared = scene.find_shared_blas(g.blas);
+  return shared != nullptr ? shared->instances.size() : 0;
 }
 
 /// Registers the object's geometry, then its hit groups (checked first: they cannot throw then); returns the
 /// geometry and each ray's group.
 template <class Attributes>
-std::pair<GeometryId, std::vector<HitGroupId>> register_object(Scene& scene, const ShaderTable& table, std::string id,
-                                                                ObjectDesc desc, std::size_t records) {
+std::pair<GeometryId, std::vector<HitGroupId>> register_object(Scene& scene, std::string id, ObjectDesc desc,
+                                                                std::size_t records) {
   const std::string where = "add_object: object \"" + id + "\"";
-  if (&table.scene() != &scene) {
-    throw SceneError(where + ": the shader table belongs to another scene; pass the table made for this scene");
-  }
   const std::uint32_t rays = scene.rays().size();
   if (rays == 0) {
     throw SceneError(where + " comes before any ray type; register the rays first (Scene::add_ray), "
@@ -140,22 +134,22 @@ std::pair<GeometryId, std::vector<HitGroupId>> register_object(Scene& scene, con
 /// instance) under `signature`; Attributes is what its intersection shader reports (void for
 /// triangles). Throws SceneError and its subclasses, naming the object, before changing anything.
 template <class Attributes = void, RecordData Args>
-GeometryId add_object(Scene& scene, ShaderTable& table, std::string id, ObjectDesc desc,
-                      LocalSignatureId<Args> signature, std::type_identity_t<std::vector<Args>> records) {
+GeometryId add_object(Scene& scene, std::string id, ObjectDesc desc, LocalSignatureId<Args> signature,
+                      std::type_identity_t<std::vector<Args>> records) {
   if (records.empty()) {
     throw SceneError("add_object: object \"" + id + "\" has a local signature but no record; give one record for "
                      "all instances, or one per instance (or call add_object without a signature)");
   }
   scene.local_signatures().check_index(signature.index(), "add_object: object \"" + id + "\" signature");
   const auto [geometry, groups] =
-      detail::register_object<Attributes>(scene, table, id, std::move(desc), records.size());
+      detail::register_object<Attributes>(scene, id, std::move(desc), records.size());
   for (std::uint32_t r = 0; r < groups.size(); ++r) {
     if (records.size() == 1) {
-      table.add_hit(RayId<>(r), groups[r], signature, records[0], geometry);
+      scene.add_hit(RayId<>(r), groups[r], signature, records[0], geometry);
       continue;
     }
     for (std::uint32_t i = 0; i < records.size(); ++i) {
-      table.add_hit(RayId<>(r), groups[r], signature, records[i], geometry, i);
+      scene.add_hit(RayId<>(r), groups[r], signature, records[i], geometry, i);
     }
   }
   return geometry;
@@ -163,9 +157,9 @@ GeometryId add_object(Scene& scene, ShaderTable& table, std::string id, ObjectDe
 
 /// Registers an object whose hit records carry no data.
 template <class Attributes = void>
-GeometryId add_object(Scene& scene, ShaderTable& table, std::string id, ObjectDesc desc) {
-  const auto [geometry, groups] = detail::register_object<Attributes>(scene, table, std::move(id), std::move(desc), 0);
-  for (std::uint32_t r = 0; r < groups.size(); ++r) table.add_hit(RayId<>(r), groups[r], geometry);
+GeometryId add_object(Scene& scene, std::string id, ObjectDesc desc) {
+  const auto [geometry, groups] = detail::register_object<Attributes>(scene, std::move(id), std::move(desc), 0);
+  for (std::uint32_t r = 0; r < groups.size(); ++r) scene.add_hit(RayId<>(r), groups[r], geometry);
   return geometry;
 }
 

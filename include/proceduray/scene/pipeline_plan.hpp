@@ -1,12 +1,13 @@
-// The pipeline plan: what a ray-tracing pipeline needs, derived only from a built shader
-// table: the shader stages and groups records actually reference, the recursion depth the
-// scene declares, and the largest payload, hit attributes and record data.
+// The pipeline plan: what a ray-tracing pipeline needs, derived by compile(scene): the shader
+// stages and groups records actually reference (each stage with its GLSL declarations), the
+// recursion depth the scene declares, and the largest payload, hit attributes and record data
+// of what the records use.
 //
-//   const proceduray::PipelinePlan& plan = sbt.plan();
-//   for (const auto& stage : plan.stages)  { /* compile stage.shader as stage.stage */ }
-//   for (const auto& group : plan.groups)  { /* VkRayTracingShaderGroupCreateInfoKHR; indices into stages */ }
-//   // maxPipelineRayRecursionDepth = plan.max_recursion_depth;
-//   // group handles, fetched in plan.groups order, go to ShaderBindingTable::write.
+//   const proceduray::PipelinePlan& pipeline = proceduray::compile(scene).pipeline();
+//   for (const auto& stage : pipeline.stages) { /* compile stage.shader as stage.stage, after stage.declarations */ }
+//   for (const auto& group : pipeline.groups) { /* VkRayTracingShaderGroupCreateInfoKHR; indices into stages */ }
+//   // maxPipelineRayRecursionDepth = pipeline.max_recursion_depth;
+//   // group handles, fetched in pipeline.groups order, go to Plan::write.
 #pragma once
 
 #include <array>
@@ -26,6 +27,8 @@ inline constexpr std::uint32_t unused_shader = 0xFFFF'FFFFu;
 struct PlannedStage {
   ShaderStage stage = ShaderStage::raygen;  ///< its stage
   std::string shader;                       ///< the name the scene used
+  std::string declarations;                 ///< its GLSL declarations (glsl_for.hpp)
+  friend bool operator==(const PlannedStage&, const PlannedStage&) = default;
 };
 
 /// VkRayTracingShaderGroupTypeKHR, without Vulkan.
@@ -40,18 +43,22 @@ struct PlannedGroup {
   std::uint32_t intersection = unused_shader; ///< intersection stage
   std::string name;                           ///< shader name (general) or hit group id
   HitGroupId hit_group;                       ///< the hit group it came from; invalid for general groups
+  std::uint32_t attribute_size = 0;           ///< hit attribute bytes its intersection reports (hit groups)
+  friend bool operator==(const PlannedGroup&, const PlannedGroup&) = default;
 };
 
 /// Everything a pipeline needs, derived from the scene and its entries.
 struct PipelinePlan {
   std::vector<PlannedStage> stages;               ///< used stages, each once: raygen, miss, then hit stages
   std::vector<PlannedGroup> groups;               ///< used groups: raygen, miss, hit groups, callables; handle order
-  std::uint32_t max_recursion_depth = 1;          ///< as declared by ShaderTable::set_max_recursion_depth
-  std::uint32_t max_payload_size = 0;             ///< largest ray payload (bytes)
+  std::uint32_t max_recursion_depth = 1;          ///< as declared by Scene::set_max_recursion_depth; else 1
+  bool recursion_depth_declared = false;          ///< the scene declared it (else hit shaders must not trace)
+  std::uint32_t max_payload_size = 0;             ///< largest payload of a ray type records use (bytes)
   std::uint32_t max_attribute_size = 0;           ///< largest hit attributes of a used hit group (bytes)
   std::array<std::uint32_t, 4> max_record_data_size{};  ///< per region (SbtRegionKind order), bytes after the handle
   GlobalSignatureId global_signature;             ///< invalid when none was set
   std::vector<LocalSignatureId<>> local_signatures;  ///< local signatures used by records, in registration order
+  friend bool operator==(const PipelinePlan&, const PipelinePlan&) = default;
 };
 
 }  // namespace proceduray

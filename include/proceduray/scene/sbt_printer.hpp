@@ -1,6 +1,8 @@
-// ASCII printer of a built shader binding table, for debugging and docs.
+// ASCII printer of a compiled scene's shader binding table as laid out for a device, for
+// debugging and docs.
 //
-//   std::cout << proceduray::format_sbt(sbt);
+//   const proceduray::Plan plan = proceduray::compile(scene);
+//   std::cout << proceduray::format_sbt(plan, plan.layout(limits));
 //
 // It prints the regions (offset, stride, size, count), every record (region, index, byte
 // offset, group, ray, geometry, instance, data offset and size; instance "*" = the block
@@ -14,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "proceduray/scene/shader_binding_table.hpp"
+#include "proceduray/scene/plan.hpp"
 
 namespace proceduray {
 
@@ -48,10 +50,8 @@ inline std::string format_table(const std::vector<std::vector<std::string>>& row
 }  // namespace detail
 
 /// The table as text: regions, records (at most `max_records` per region), TLAS instances (at most `max_records`).
-inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_records = 1000) {
-  const SbtLayout& layout = sbt.layout();
-  const Scene& scene = sbt.scene();
-  const PipelinePlan& plan = sbt.plan();
+inline std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::size_t max_records = 1000) {
+  const PipelinePlan& plan = sbt.pipeline();
   std::string out = std::string("SBT: ") + std::to_string(layout.size) + " bytes; handle " +
                     std::to_string(layout.properties.handle_size) + ", handle alignment " +
                     std::to_string(layout.properties.handle_alignment) + ", base alignment " +
@@ -72,12 +72,12 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
     const auto list = sbt.records(kind);
     for (std::uint32_t i = 0; i < list.size() && i < max_records; ++i) {
       const SbtRecord& r = list[i];
-      const ShaderTableEntry* e = sbt.entry(r);
+      const Entry* e = sbt.entry(r);
       records.push_back(
           {to_string(kind), std::to_string(i), std::to_string(layout.record_offset(kind, i)),
            r.group == no_index ? std::string("(null)") : plan.groups[r.group].name,
-           r.ray == no_index ? "-" : name_or_dash(scene.rays().name(r.ray)),
-           r.geometry == no_index ? "-" : scene.geometries().name(r.geometry),
+           r.ray == no_index ? "-" : name_or_dash(sbt.ray_name(r.ray)),
+           r.geometry == no_index ? "-" : sbt.geometries()[r.geometry].name,
            kind != SbtRegionKind::hit ? "-" : (r.instance == no_index ? "*" : std::to_string(r.instance)),
            std::to_string(layout.data_offset(kind, i)), std::to_string(e ? e->data_size : 0)});
     }
@@ -93,7 +93,7 @@ inline std::string format_sbt(const ShaderBindingTable& sbt, std::size_t max_rec
   };
   const auto tlas = sbt.instances();
   for (std::size_t i = 0; i < tlas.size() && i < max_records; ++i) {
-    instances.push_back({std::to_string(i), scene.blases()[tlas[i].blas].name, std::to_string(tlas[i].instance),
+    instances.push_back({std::to_string(i), sbt.blases()[tlas[i].blas].name, std::to_string(tlas[i].instance),
                          std::to_string(tlas[i].sbt_offset), hex(tlas[i].mask)});
   }
   if (tlas.size() > max_records) instances.push_back({"...", std::string("(") + std::to_string(tlas.size() - max_records) + " more)"});

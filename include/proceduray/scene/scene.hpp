@@ -1,321 +1,202 @@
-// The scene registry: rays, hit groups, geometry, global and local signatures, each
-// registered by string id and returned as a strong typed id.
+// A scene: its entities (entities.hpp) and the entries that bind them into shader-table
+// records, the global signature the pipeline uses and how deep rays nest. Everything a
+// renderer needs is here; compile(scene) (compile.hpp) turns it into a Plan with no device.
 //
-//   proceduray::Scene scene;   // payload, attribute and record types: registered with PROCEDURAY_STRUCT
-//   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
-//   auto shadow   = scene.add_ray<ShadowPayload>("Shadow", {.miss = "shadow.rmiss"});
-//   auto pacman   = scene.add_hit_group<Attributes>("Pacman", {.kind = proceduray::HitGroupKind::procedural,
-//                                                   .closest_hit = "pacman.rchit", .intersection = "pacman.rint"});
-//   auto geometry = scene.add_geometry("Pacman", proceduray::GeometryDesc::procedural({{}}, transforms));
-//   auto sig      = scene.add_local_signature<ProceduralArgs>("Procedural");
-//   scene.add_layer("casts_shadow");                            // named bits of instance masks
-//   auto tint     = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
-//   const proceduray::HitGroup* maybe = scene.find_hit_group("Pacman");   // nullptr if absent
-//   auto again = scene.ray_id<RayPayload>("Radiance");   // throws: unknown id, wrong payload type
+//   proceduray::Scene scene;
+//   auto radiance = scene.add_ray<RadiancePayload>("radiance", {.miss = "sky.rmiss"});
+//   auto shadow   = scene.add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
+//   auto ball     = scene.add_hit_group<BallHit>("ball", {.kind = proceduray::HitGroupKind::procedural,
+//                                                        .closest_hit = "ball.rchit", .intersection = "ball.rint"});
+//   auto occluder = scene.add_hit_group<BallHit>("ball_shadow", {.kind = proceduray::HitGroupKind::procedural,
+//                                                               .intersection = "ball.rint"});
+//   auto balls    = scene.add_geometry("balls", proceduray::GeometryDesc::procedural({box}, {left, right}));
+//   auto material = scene.add_local_signature<Material>("material");
+//   scene.add_raygen("camera.rgen");
+//   scene.add_hit(radiance, ball, material, Material{red}, balls, 0);    // instance 0
+//   scene.add_hit(radiance, ball, material, Material{blue}, balls, 1);   // instance 1
+//   scene.add_hit(shadow, occluder, balls);                              // every instance, no data
+//   scene.add_miss(radiance, sky_signature, Sky{...});                   // optional miss record data
+//   scene.set_global_signature({.bindings = {...}});                     // registered as "global"
+//   scene.set_max_recursion_depth(2);                                    // closest hits trace shadow rays
 //
-// Registration order is the index order: rays' order is their SBT ray index and miss index.
-// Geometry goes into BLASes (Scene::blases()): its own, or the one named by GeometryDesc::blas.
+// An entry whose arguments type differs from its local signature's does not compile; the
+// string-id overload checks it at run time (TypeMismatchError). The order entries are added
+// in does not matter: compile() assigns every instance's SBT offset and every record's place.
+// A hit group must match the geometry's kind (HitGroupKindError); every (ray, geometry,
+// instance) needs an entry, instance-specific first, then geometry-wide, then the ray's
+// default for the geometry's kind (set_default_hit), or compile() throws MissingEntryError.
 #pragma once
 
 #include <cstdint>
-#include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
-#include <type_traits>
-#include <typeindex>
-#include <typeinfo>
-#include <unordered_map>
-#include <utility>
-#include <vector>
 
-#include "proceduray/scene/callable.hpp"
+#include "proceduray/scene/entities.hpp"
+#include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
-#include "proceduray/scene/geometry.hpp"
-#include "proceduray/scene/global_signature.hpp"
-#include "proceduray/scene/hit_group.hpp"
-#include "proceduray/scene/ids.hpp"
-#include "proceduray/scene/layers.hpp"
-#include "proceduray/scene/local_signature.hpp"
-#include "proceduray/scene/ray.hpp"
-#include "proceduray/scene/registry.hpp"
-#include "proceduray/scene/shader_data.hpp"
 
 namespace proceduray {
 
-/// A bottom-level acceleration structure: geometries of one kind and the TLAS instances of it.
-struct Blas {
-  std::string name;                          ///< the shared BLAS name, or the id of its only geometry
-  GeometryKind kind = GeometryKind::procedural;  ///< kind of all its geometries
-  std::vector<GeometryId> geometries;        ///< in geometry-index order
-  std::vector<InstanceTransform> instances;  ///< one TLAS instance each
-  std::vector<std::uint8_t> masks;           ///< instance masks, one per instance
-  UpdatePolicy update = UpdatePolicy::Static;  ///< of all its geometries
-  bool shared = false;                       ///< named by GeometryDesc::blas
-};
-
-/// Every entity of a scene, keyed by id.
-namespace detail {
-template <class A>
-constexpr const TypeOps* attribute_glsl_of() {
-  if constexpr (std::is_void_v<A>) return nullptr;
-  else return &type_ops<A>;
-}
-}  // namespace detail
-
-class Scene {
+/// A scene's entities and entries.
+class Scene : public Entities {
  public:
-  /// Registers a ray type with payload type Payload; throws DuplicateIdError.
-  template <PayloadData Payload>
-  RayId<Payload> add_ray(std::string id, RayDesc desc) {
-    return RayId<Payload>(m_rays.add("Scene::add_ray", std::move(id),
-                                     Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}));
+  /// Adds a raygen record for `shader`, without record data.
+  EntryId add_raygen(std::string shader) { return add_raygen_entry(std::move(shader), no_index, nullptr, 0); }
+  /// Adds a raygen record for `shader` carrying `data` (type fixed by the local signature).
+  template <RecordData Args, class Given>
+    requires ArgumentsMatchSignature<Given, Args>
+  EntryId add_raygen(std::string shader, LocalSignatureId<Args> signature, const Given& data) {
+    return add_raygen_entry(std::move(shader), signature.index(), &data, sizeof(Args));
   }
 
-  /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
-  /// or the built-in barycentrics for triangles). Throws HitGroupKindError, DuplicateIdError.
-  template <class Attributes = void>
-  HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
-    static_assert(std::is_void_v<Attributes> || AttributeData<Attributes>,
-                  "Scene::add_hit_group: the attribute type (Attributes in the instantiation above) must be registered with "
-                  "PROCEDURAY_STRUCT and at most 32 bytes (maxRayHitAttributeSize that Vulkan guarantees); "
-                  "register it, or shrink it and pass the rest through the payload");
-    validate(desc, id, "Scene::add_hit_group");
-    std::uint32_t size = 0;
-    if constexpr (!std::is_void_v<Attributes>) {
-      if (desc.kind == HitGroupKind::triangles) {
-        throw HitGroupKindError(std::string("Scene::add_hit_group: triangle hit group \"") + id + "\" declares an attribute type (" +
-                                std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
-                                "barycentrics: call add_hit_group<void>");
-      }
-      size = sizeof(Attributes);
-    } else if (desc.kind == HitGroupKind::triangles) {
-      size = triangle_attribute_size;
-    }
-    return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
-                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}));
+  /// Gives the miss record of `ray` record data; rays without it get a record with none.
+  template <class Payload, RecordData Args, class Given>
+    requires ArgumentsMatchSignature<Given, Args>
+  EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Args> signature, const Given& data) {
+    Entry e{.region = SbtRegionKind::miss, .ray = ray.index(), .local_signature = signature.index()};
+    return add_entry("Scene::add_miss", e, &data, sizeof(Args));
   }
 
-  /// Registers a geometry and puts it in its BLAS; throws InvalidGeometryError, DuplicateIdError.
-  GeometryId add_geometry(std::string id, GeometryDesc desc) {
-    constexpr std::string_view op = "Scene::add_geometry";
-    validate(desc, id, op);
-    std::vector<std::uint8_t> masks = desc.instance_masks;
-    if (masks.empty()) masks.assign(desc.instances.size(), desc.mask);
-    // Every check comes before the first change, so a throw leaves the scene as it was.
-    auto blas_index = static_cast<std::uint32_t>(m_blases.size());
-    const bool shared = !desc.blas.empty();
-    bool new_blas = true;
-    if (shared) {
-      if (auto it = m_shared_blas.find(desc.blas); it != m_shared_blas.end()) {
-        blas_index = it->second;
-        new_blas = false;
-        const Blas& blas = m_blases[blas_index];
-        auto refuse = [&](const std::string& what) {
-          return InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" " + what);
-        };
-        if (blas.kind != desc.kind) {
-          throw refuse(std::string("is ") + to_string(desc.kind) + " but BLAS \"" + blas.name + "\" holds " +
-                       to_string(blas.kind) + " geometry; a BLAS holds one kind: name another BLAS");
-        }
-        if (blas.update != desc.update) {
-          throw refuse(std::string("is ") + to_string(desc.update) + " but BLAS \"" + blas.name + "\" is " +
-                       to_string(blas.update) + "; geometries sharing a BLAS share its instances and its builds, "
-                       "so declare the same update policy or name another BLAS");
-        }
-        if (!blas.instances.empty() && !desc.instances.empty() && desc.instances != blas.instances) {
-          throw refuse("declares " + std::to_string(desc.instances.size()) + " instances that differ from the " +
-                       std::to_string(blas.instances.size()) + " of its BLAS \"" + blas.name +
-                       "\"; instances belong to the BLAS: declare them once (others leave them empty)");
-        }
-        if (!blas.instances.empty() && !desc.instances.empty() && masks != blas.masks) {
-          throw refuse("declares instance masks that differ from those of its BLAS \"" + blas.name +
-                       "\"; masks belong to the instances: declare them once, with the instances");
-        }
-      }
-    }
-    if (desc.instances.empty() && (desc.mask != all_layers || !desc.instance_masks.empty())) {
-      throw InvalidGeometryError(std::string(op) + ": geometry \"" + id + "\" sets instance masks but declares no "
-                                 "instances; masks belong to the instances: set them on the geometry that declares them");
-    }
-    const GeometryKind kind = desc.kind;
-    const UpdatePolicy update = desc.update;
-    std::vector<InstanceTransform> instances = std::move(desc.instances);
-    desc.instances.clear();
-    std::string blas_name = !new_blas ? std::string() : shared ? desc.blas : id;
-    const auto geometry_index = new_blas ? 0u : static_cast<std::uint32_t>(m_blases[blas_index].geometries.size());
-    const GeometryId gid(m_geometries.add(op, std::move(id), Geometry{std::move(desc), blas_index, geometry_index}));
-    if (new_blas) {
-      if (shared) m_shared_blas.emplace(blas_name, blas_index);
-      m_blases.push_back(Blas{std::move(blas_name), kind, {gid}, std::move(instances), std::move(masks), update, shared});
-    } else {
-      Blas& blas = m_blases[blas_index];
-      if (blas.instances.empty()) {
-        blas.instances = std::move(instances);
-        blas.masks = std::move(masks);
-      }
-      blas.geometries.push_back(gid);
-    }
-    return gid;
+  /// Gives the record of callable `callable` record data; callables without it get a record with none.
+  template <class Data, RecordData Args, class Given>
+    requires ArgumentsMatchSignature<Given, Args>
+  EntryId add_callable_record(CallableId<Data> callable, LocalSignatureId<Args> signature, const Given& data) {
+    Entry e{.region = SbtRegionKind::callable, .local_signature = signature.index(), .shader = callable.index()};
+    return add_entry("Scene::add_callable_record", e, &data, sizeof(Args));
   }
 
-  /// Adds a named layer (a bit of instance masks and cull masks) and returns its bit;
-  /// throws DuplicateIdError, or SceneError past eight layers.
-  std::uint8_t add_layer(std::string name) { return m_layers.add(std::move(name), "Scene::add_layer"); }
-  /// The union of the named layers' bits; throws UnknownIdError naming the known layers.
-  std::uint8_t layer_mask(std::initializer_list<std::string_view> names) const {
-    return m_layers.mask(names, "Scene::layer_mask");
+  /// Binds <ray, hit group> (no record data) to a geometry, or one instance of it.
+  template <class Payload>
+  EntryId add_hit(RayId<Payload> ray, HitGroupId group, GeometryId geometry, std::uint32_t instance = all_instances) {
+    Entry e{.ray = ray.index(), .hit_group = group.index(), .geometry = geometry.index(), .instance = instance};
+    return add_entry("Scene::add_hit", e, nullptr, 0);
   }
-  /// The scene's layers, bit order.
-  const Layers& layers() const { return m_layers; }
-
-  /// Registers a callable shader called with Data; throws DuplicateIdError, SceneError for no shader.
-  template <class Data>
-  CallableId<Data> add_callable(std::string id, CallableDesc desc) {
-    static_assert(PayloadData<Data>,
-                  "Scene::add_callable: the callable data type (Data in the instantiation above) must be registered "
-                  "with PROCEDURAY_STRUCT: it is declared in GLSL as callableDataEXT from that registration");
-    if (desc.shader.empty()) {
-      throw SceneError("Scene::add_callable: callable " + detail::quote_id(id) + " has no shader; set .shader");
-    }
-    return CallableId<Data>(m_callables.add("Scene::add_callable", std::move(id),
-                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}));
+  /// Binds <ray, hit group, local signature, arguments> to a geometry, or one instance of it.
+  template <class Payload, RecordData Args, class Given>
+    requires ArgumentsMatchSignature<Given, Args>
+  EntryId add_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args,
+                  GeometryId geometry, std::uint32_t instance = all_instances) {
+    Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature.index(),
+            .geometry = geometry.index(), .instance = instance};
+    return add_entry("Scene::add_hit", e, &args, sizeof(Args));
   }
-
-  /// Registers a global signature; throws SceneError for bad bindings, DuplicateIdError.
-  GlobalSignatureId add_global_signature(std::string id, GlobalSignatureDesc desc) {
-    validate(desc, id, "Scene::add_global_signature");
-    return GlobalSignatureId(m_global_signatures.add("Scene::add_global_signature", std::move(id),
-                                                     GlobalSignature{std::move(desc)}));
-  }
-
-  /// Registers a local signature whose records carry Args; throws DuplicateIdError.
+  /// The same by string ids; throws UnknownIdError, or TypeMismatchError when Args is not the signature's type.
   template <RecordData Args>
-  LocalSignatureId<Args> add_local_signature(std::string id) {
-    return LocalSignatureId<Args>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
-                                                         LocalSignature{sizeof(Args), typeid(Args), &type_ops<Args>}));
+  EntryId add_hit(std::string_view ray, std::string_view group, std::string_view signature, const Args& args,
+                  std::string_view geometry, std::uint32_t instance = all_instances) {
+    return add_hit(ray_id(ray), hit_group_id(group), local_signature_id<Args>(signature), args, geometry_id(geometry),
+                   instance);
   }
 
-  /// The ray registered as `id`, or nullptr.
-  const Ray* find_ray(std::string_view id) const { return m_rays.find(id); }
-  /// The hit group registered as `id`, or nullptr.
-  const HitGroup* find_hit_group(std::string_view id) const { return m_hit_groups.find(id); }
-  /// The geometry registered as `id`, or nullptr.
-  const Geometry* find_geometry(std::string_view id) const { return m_geometries.find(id); }
-  /// The global signature registered as `id`, or nullptr.
-  const GlobalSignature* find_global_signature(std::string_view id) const { return m_global_signatures.find(id); }
-  /// The local signature registered as `id`, or nullptr.
-  const LocalSignature* find_local_signature(std::string_view id) const { return m_local_signatures.find(id); }
+  /// Declares the hit group `ray` uses on geometry of the group's kind that has no entry.
+  template <class Payload>
+  EntryId set_default_hit(RayId<Payload> ray, HitGroupId group) {
+    Entry e{.ray = ray.index(), .hit_group = group.index(), .is_default = true};
+    return add_entry("Scene::set_default_hit", e, nullptr, 0);
+  }
+  /// The same, with record data.
+  template <class Payload, RecordData Args, class Given>
+    requires ArgumentsMatchSignature<Given, Args>
+  EntryId set_default_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args) {
+    Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature.index(), .is_default = true};
+    return add_entry("Scene::set_default_hit", e, &args, sizeof(Args));
+  }
 
-  /// The ray of `id`; throws UnknownIdError (nearest ids) or, for a typed lookup, TypeMismatchError.
-  template <class Payload = void>
-  RayId<Payload> ray_id(std::string_view id) const {
-    const std::uint32_t index = m_rays.index_of(id, "Scene::ray_id");
-    if constexpr (!std::is_void_v<Payload>) {
-      check_type(m_rays.entities()[index].payload_type, typeid(Payload), "Scene::ray_id", "ray", id, "payload");
+  /// Makes a registered global signature the one the pipeline uses; default: none.
+  void set_global_signature(GlobalSignatureId id) {
+    global_signatures().check_index(id.index(), "Scene::set_global_signature");
+    m_global_signature = id;
+  }
+  /// Registers `desc` as `id` and makes it the one the pipeline uses.
+  GlobalSignatureId set_global_signature(GlobalSignatureDesc desc, std::string id = "global") {
+    const GlobalSignatureId g = add_global_signature(std::move(id), std::move(desc));
+    m_global_signature = g;
+    return g;
+  }
+  /// Declares the deepest traceRayEXT nesting the shaders do (1 = rays from raygen only).
+  /// Undeclared, it is 1, and a pipeline whose hit, miss or callable shaders trace is refused.
+  void set_max_recursion_depth(std::uint32_t depth) {
+    if (depth == 0) {
+      throw SceneError("Scene::set_max_recursion_depth: depth 0 allows no traceRayEXT at all; use >= 1");
     }
-    return RayId<Payload>(index);
-  }
-  /// The hit group of `id`; throws UnknownIdError.
-  HitGroupId hit_group_id(std::string_view id) const { return HitGroupId(m_hit_groups.index_of(id, "Scene::hit_group_id")); }
-  /// The geometry of `id`; throws UnknownIdError.
-  GeometryId geometry_id(std::string_view id) const { return GeometryId(m_geometries.index_of(id, "Scene::geometry_id")); }
-  /// The global signature of `id`; throws UnknownIdError.
-  GlobalSignatureId global_signature_id(std::string_view id) const {
-    return GlobalSignatureId(m_global_signatures.index_of(id, "Scene::global_signature_id"));
-  }
-  /// The local signature of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
-  template <class Args = void>
-  LocalSignatureId<Args> local_signature_id(std::string_view id) const {
-    const std::uint32_t index = m_local_signatures.index_of(id, "Scene::local_signature_id");
-    if constexpr (!std::is_void_v<Args>) {
-      check_type(m_local_signatures.entities()[index].data_type, typeid(Args), "Scene::local_signature_id",
-                 "local signature", id, "record data");
-    }
-    return LocalSignatureId<Args>(index);
+    m_max_recursion_depth = depth;
   }
 
-  /// The callable of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
-  template <class Data = void>
-  CallableId<Data> callable_id(std::string_view id) const {
-    const std::uint32_t index = m_callables.index_of(id, "Scene::callable_id");
-    if constexpr (!std::is_void_v<Data>) {
-      check_type(m_callables.entities()[index].data_type, typeid(Data), "Scene::callable_id", "callable", id, "data");
-    }
-    return CallableId<Data>(index);
-  }
-  /// The callable of an id; throws UnknownIdError.
-  const Callable& callable(CallableId<> id) const { return m_callables.at(id.index(), "Scene::callable"); }
-
-  /// The ray of an id; throws UnknownIdError for an id this scene did not issue.
-  const Ray& ray(RayId<> id) const { return m_rays.at(id.index(), "Scene::ray"); }
-  /// The ray registered as `id`; throws UnknownIdError.
-  const Ray& ray(std::string_view id) const { return m_rays.at(id, "Scene::ray"); }
-  /// The hit group of an id; throws UnknownIdError.
-  const HitGroup& hit_group(HitGroupId id) const { return m_hit_groups.at(id.index(), "Scene::hit_group"); }
-  /// The hit group registered as `id`; throws UnknownIdError.
-  const HitGroup& hit_group(std::string_view id) const { return m_hit_groups.at(id, "Scene::hit_group"); }
-  /// The geometry of an id; throws UnknownIdError.
-  const Geometry& geometry(GeometryId id) const { return m_geometries.at(id.index(), "Scene::geometry"); }
-  /// The geometry registered as `id`; throws UnknownIdError.
-  const Geometry& geometry(std::string_view id) const { return m_geometries.at(id, "Scene::geometry"); }
-  /// The global signature of an id; throws UnknownIdError.
-  const GlobalSignature& global_signature(GlobalSignatureId id) const {
-    return m_global_signatures.at(id.index(), "Scene::global_signature");
-  }
-  /// The local signature of an id; throws UnknownIdError.
-  const LocalSignature& local_signature(LocalSignatureId<> id) const {
-    return m_local_signatures.at(id.index(), "Scene::local_signature");
-  }
-  /// The BLAS a geometry lives in; throws UnknownIdError.
-  const Blas& blas_of(GeometryId id) const { return m_blases[geometry(id).blas]; }
-
-  /// All rays in ray-index order.
-  const Registry<Ray>& rays() const { return m_rays; }
-  /// All hit groups in registration order.
-  const Registry<HitGroup>& hit_groups() const { return m_hit_groups; }
-  /// All geometries in registration order.
-  const Registry<Geometry>& geometries() const { return m_geometries; }
-  /// All callables in callable-index order.
-  const Registry<Callable>& callables() const { return m_callables; }
-  /// All global signatures.
-  const Registry<GlobalSignature>& global_signatures() const { return m_global_signatures; }
-  /// All local signatures.
-  const Registry<LocalSignature>& local_signatures() const { return m_local_signatures; }
-  /// All BLASes in creation order (the order of their first geometry).
-  std::span<const Blas> blases() const { return m_blases; }
-  /// TLAS instances over all BLASes.
-  std::uint64_t instance_count() const {
-    std::uint64_t n = 0;
-    for (const Blas& b : m_blases) n += b.instances.size();
-    return n;
-  }
-
-  /// Reserves room for `count` geometries (and their BLASes).
-  void reserve_geometries(std::size_t count) {
-    m_geometries.reserve(count);
-    m_blases.reserve(count);
-  }
+  /// The global signature the pipeline uses; invalid when none was set.
+  GlobalSignatureId pipeline_global_signature() const { return m_global_signature; }
+  /// The declared recursion depth, if any.
+  std::optional<std::uint32_t> max_recursion_depth() const { return m_max_recursion_depth; }
+  /// Every entry and its record data.
+  const EntryList& entries() const { return m_entries; }
+  /// Reserves room for `entries` entries and `data_bytes` of record data.
+  void reserve_entries(std::size_t entries, std::size_t data_bytes) { m_entries.reserve(entries, data_bytes); }
 
  private:
-  static void check_type(std::type_index have, std::type_index want, std::string_view op, std::string_view kind,
-                         std::string_view id, std::string_view what) {
-    if (have != want) {
-      throw TypeMismatchError(std::string(op) + ": " + std::string(kind) + " \"" + std::string(id) + "\" has " +
-                              std::string(what) + " type " + have.name() + ", not the requested " + want.name() +
-                              "; ask for the type it was registered with");
-    }
+  EntryId add_raygen_entry(std::string shader, std::uint32_t signature, const void* data, std::uint32_t size) {
+    if (shader.empty()) throw SceneError("Scene::add_raygen: empty raygen shader name; name the raygen shader");
+    if (signature != no_index) local_signatures().check_index(signature, "Scene::add_raygen");
+    const Entry e{.region = SbtRegionKind::raygen, .local_signature = signature,
+                  .shader = m_entries.add_raygen_shader(std::move(shader))};
+    return m_entries.push(e, data, size);
   }
+  EntryId add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size);
+  void check_hit(std::string_view op, const Entry& e) const;
 
-  Registry<Ray> m_rays{"ray"};
-  Registry<HitGroup> m_hit_groups{"hit group"};
-  Registry<Geometry> m_geometries{"geometry"};
-  Registry<GlobalSignature> m_global_signatures{"global signature"};
-  Registry<LocalSignature> m_local_signatures{"local signature"};
-  Registry<Callable> m_callables{"callable"};
-  Layers m_layers;
-  std::vector<Blas> m_blases;
-  std::unordered_map<std::string, std::uint32_t> m_shared_blas;
+  EntryList m_entries;
+  GlobalSignatureId m_global_signature;
+  std::optional<std::uint32_t> m_max_recursion_depth;
 };
+
+inline EntryId Scene::add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size) {
+  if (e.local_signature != no_index) local_signatures().check_index(e.local_signature, op);
+  const auto same = [&](const Entry& other) {
+    if (other.region != e.region) return false;
+    if (e.region == SbtRegionKind::miss) return other.ray == e.ray;
+    if (e.region == SbtRegionKind::callable) return other.shader == e.shader;
+    return e.is_default && other.is_default && other.ray == e.ray &&
+           hit_groups().entities()[other.hit_group].desc.kind == hit_groups().entities()[e.hit_group].desc.kind;
+  };
+  if (e.region == SbtRegionKind::miss) rays().check_index(e.ray, op);
+  if (e.region == SbtRegionKind::callable) callables().check_index(e.shader, op);
+  if (e.region == SbtRegionKind::hit) check_hit(op, e);
+  for (const Entry& other : m_entries.all()) {
+    if (!same(other)) continue;
+    if (e.region == SbtRegionKind::miss) {
+      throw DuplicateIdError(std::string(op) + ": ray \"" + rays().name(e.ray) +
+                             "\" already has a miss entry; a ray has one miss record: add it once");
+    }
+    if (e.region == SbtRegionKind::callable) {
+      throw DuplicateIdError(std::string(op) + ": callable \"" + callables().name(e.shader) +
+                             "\" already has an entry; a callable has one record: add it once");
+    }
+    throw DuplicateIdError(std::string(op) + ": ray \"" + rays().name(e.ray) + "\" already has a default " +
+                           to_string(hit_groups().entities()[e.hit_group].desc.kind) + " hit group (\"" +
+                           hit_groups().name(other.hit_group) + "\"); declare one default per ray and kind");
+  }
+  return m_entries.push(e, data, size);
+}
+
+inline void Scene::check_hit(std::string_view op, const Entry& e) const {
+  rays().check_index(e.ray, op);
+  const HitGroup& group = hit_groups().at(e.hit_group, op);
+  if (e.is_default) return;
+  const Geometry& g = geometries().at(e.geometry, op);
+  const bool procedural = g.desc.kind == GeometryKind::procedural;
+  if (procedural != (group.desc.kind == HitGroupKind::procedural)) {
+    throw HitGroupKindError(std::string(op) + ": " + to_string(g.desc.kind) + " geometry \"" +
+                            geometries().name(e.geometry) + "\" bound to " + to_string(group.desc.kind) +
+                            " hit group \"" + hit_groups().name(e.hit_group) + "\"" +
+                            (procedural ? ", which has no intersection shader; bind a procedural hit group"
+                                        : ", which has an intersection shader; bind a triangles hit group"));
+  }
+  const auto count = blases()[g.blas].instances.size();
+  if (e.instance != all_instances && e.instance >= count) {
+    throw SceneError(std::string(op) + ": instance " + std::to_string(e.instance) + " of geometry \"" +
+                     geometries().name(e.geometry) + "\" does not exist (it has " + std::to_string(count) +
+                     " instances); use an index below the count, or all_instances");
+  }
+}
 
 }  // namespace proceduray

@@ -191,57 +191,82 @@ std::string glsl_declarations() {
   return glsl_declarations(std::span<const TypeOps* const>(Interface::types), true);
 }
 
-/// An outgoing payload, `layout(location = N) rayPayloadEXT T name;`, N = T's index in Payload<...>.
-template <class Interface, class T>
-std::string glsl_ray_payload(std::string_view name) {
-  return "layout(location = " + std::to_string(Interface::template payload_location<T>()) + ") rayPayloadEXT " +
-         std::string(type_ops<T>.glsl_name) + " " + std::string(name) + ";\n";
+/// A payload at `location`: `layout(location = N) rayPayloadEXT T name;` (rayPayloadInEXT when incoming).
+inline std::string glsl_ray_payload(std::uint32_t location, const TypeOps& t, std::string_view name, bool incoming = false) {
+  return "layout(location = " + std::to_string(location) + ") " + (incoming ? "rayPayloadInEXT " : "rayPayloadEXT ") +
+         std::string(t.glsl_name) + " " + std::string(name) + ";\n";
 }
-
-/// The incoming payload of a hit or miss stage, `layout(location = N) rayPayloadInEXT T name;`.
-template <class Interface, class T>
-std::string glsl_ray_payload_in(std::string_view name) {
-  return "layout(location = " + std::to_string(Interface::template payload_location<T>()) +
-         ") rayPayloadInEXT " + std::string(type_ops<T>.glsl_name) + " " + std::string(name) + ";\n";
+/// Callable data at `location`: `layout(location = N) callableDataEXT T name;` (callableDataInEXT when incoming).
+inline std::string glsl_callable_data(std::uint32_t location, const TypeOps& t, std::string_view name,
+                                      bool incoming = false) {
+  return "layout(location = " + std::to_string(location) + ") " + (incoming ? "callableDataInEXT " : "callableDataEXT ") +
+         std::string(t.glsl_name) + " " + std::string(name) + ";\n";
 }
-
 /// Hit attributes, `hitAttributeEXT T name;` (one per stage).
-template <class Interface, class T>
-std::string glsl_hit_attribute(std::string_view name) {
-  static_cast<void>(Interface::template attributes_index<T>());
-  return "hitAttributeEXT " + std::string(type_ops<T>.glsl_name) + " " + std::string(name) + ";\n";
+inline std::string glsl_hit_attribute(const TypeOps& t, std::string_view name) {
+  return "hitAttributeEXT " + std::string(t.glsl_name) + " " + std::string(name) + ";\n";
 }
-
 /// A buffer block with struct t's members under `rule`; `qualifiers` go first in layout(...).
 inline std::string glsl_block(const TypeOps& t, LayoutRule rule, std::string_view qualifiers,
                               std::string_view block_name, std::string_view instance_name) {
   return "layout(" + std::string(qualifiers) + ", " + std::string(to_string(rule)) + ") buffer " +
          std::string(block_name) + " {\n" + detail::member_lines(t) + "} " + std::string(instance_name) + ";\n";
 }
+/// Record data: `layout(shaderRecordEXT, rule) buffer TShaderRecord {...} name;`.
+inline std::string glsl_shader_record(const TypeOps& t, std::string_view name) {
+  return glsl_block(t, t.rule, "shaderRecordEXT", std::string(t.glsl_name) + "ShaderRecord", name);
+}
+/// A push-constant block with t's members and rule: `layout(push_constant, rule) uniform TPushConstants {...} name;`.
+inline std::string glsl_push_constant(const TypeOps& t, std::string_view name) {
+  return "layout(push_constant, " + std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) +
+         "PushConstants {\n" + detail::member_lines(t) + "} " + std::string(name) + ";\n";
+}
+/// A uniform block: `layout(set = S, binding = B, rule) uniform TUniform {...} name;` (scalar needs the
+/// scalarBlockLayout feature, core in Vulkan 1.2).
+inline std::string glsl_uniform(const TypeOps& t, std::uint32_t set, std::uint32_t binding, std::string_view name) {
+  return "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(binding) + ", " +
+         std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) + "Uniform {\n" +
+         detail::member_lines(t) + "} " + std::string(name) + ";\n";
+}
+/// A read-only storage buffer holding an array of t, read as `name.data[i]`.
+inline std::string glsl_storage_buffer(const TypeOps& t, std::uint32_t set, std::uint32_t binding, std::string_view name) {
+  const std::string type(t.glsl_name);
+  return "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(binding) + ", " +
+         std::string(to_string(t.rule)) + ") readonly buffer " + type + "Buffer {\n    " + type + " data[];\n} " +
+         std::string(name) + ";\n";
+}
 
+/// An outgoing payload, `layout(location = N) rayPayloadEXT T name;`, N = T's index in Payload<...>.
+template <class Interface, class T>
+std::string glsl_ray_payload(std::string_view name) {
+  return glsl_ray_payload(Interface::template payload_location<T>(), type_ops<T>, name);
+}
+/// The incoming payload of a hit or miss stage, `layout(location = N) rayPayloadInEXT T name;`.
+template <class Interface, class T>
+std::string glsl_ray_payload_in(std::string_view name) {
+  return glsl_ray_payload(Interface::template payload_location<T>(), type_ops<T>, name, true);
+}
+/// Hit attributes of an Attributes type, `hitAttributeEXT T name;`.
+template <class Interface, class T>
+std::string glsl_hit_attribute(std::string_view name) {
+  static_cast<void>(Interface::template attributes_index<T>());
+  return glsl_hit_attribute(type_ops<T>, name);
+}
 /// The record data block of a RootArguments type: `layout(shaderRecordEXT, rule) buffer TShaderRecord {...} name;`.
 template <class Interface, class T>
 std::string glsl_shader_record(std::string_view name) {
   static_cast<void>(Interface::template root_arguments_index<T>());
-  return glsl_block(type_ops<T>, type_ops<T>.rule, "shaderRecordEXT", std::string(type_ops<T>.glsl_name) + "ShaderRecord", name);
+  return glsl_shader_record(type_ops<T>, name);
 }
-
-/// A push-constant block with T's members and T's rule: `layout(push_constant, rule) uniform TPushConstants {...} name;`.
+/// A push-constant block of T (see glsl_push_constant(const TypeOps&, name)).
 template <RegisteredStruct T>
 std::string glsl_push_constant(std::string_view name) {
-  const TypeOps& t = type_ops<T>;
-  return "layout(push_constant, " + std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) +
-         "PushConstants {\n" + detail::member_lines(t) + "} " + std::string(name) + ";\n";
+  return glsl_push_constant(type_ops<T>, name);
 }
-
-/// A uniform block with T's members and T's rule: `layout(set = S, binding = B, rule) uniform TUniform {...} name;`
-/// (scalar needs the scalarBlockLayout feature, core in Vulkan 1.2).
+/// A uniform block of T (see glsl_uniform(const TypeOps&, set, binding, name)).
 template <RegisteredStruct T>
 std::string glsl_uniform(std::uint32_t set, std::uint32_t binding, std::string_view name) {
-  const TypeOps& t = type_ops<T>;
-  return "layout(set = " + std::to_string(set) + ", binding = " + std::to_string(binding) + ", " +
-         std::string(to_string(t.rule)) + ") uniform " + std::string(t.glsl_name) + "Uniform {\n" +
-         detail::member_lines(t) + "} " + std::string(name) + ";\n";
+  return glsl_uniform(type_ops<T>, set, binding, name);
 }
 
 /// A GLSL constant with the exact value of a host constant: `const uint name = 3u;`.

@@ -96,9 +96,9 @@ class Context {
             m_rt_properties.shaderGroupBaseAlignment, m_rt_properties.maxShaderGroupStride};
   }
   /// The limits the scene layer checks a built shader table against.
-  DeviceLimits limits() const noexcept {
+  DeviceLimits limits() const {
     return {sbt_properties(), m_rt_properties.maxRayRecursionDepth, m_rt_properties.maxRayHitAttributeSize,
-            m_max_geometry_count, m_max_instance_count};
+            m_max_geometry_count, m_max_instance_count, name()};
   }
   /// Nanoseconds per timestamp tick; 0 when the queue cannot write timestamps.
   double timestamp_period_ns() const noexcept { return m_timestamp_period; }

@@ -1,8 +1,7 @@
-// The renderer: everything a built shader table implies, made on the device, and frames traced.
+// The renderer: everything a scene implies, made on the device, and frames traced.
 //
-//   proceduray::ShaderBindingTable sbt = table.build(ctx.limits());
-//   proceduray::vk::Renderer renderer(ctx, sbt, {.shader_dirs = {"shaders"},
-//                                                .pipeline_cache = "proceduray.cache"});
+//   proceduray::vk::Renderer renderer(ctx, scene, {.shader_dirs = {"shaders"},
+//                                                  .pipeline_cache = "proceduray.cache"});
 //   renderer.set(constants_slot, constants);          // typed uniform, uploaded before the next trace
 //   renderer.set_storage(tints_slot, tints);          // typed storage buffer (an array)
 //   renderer.set_push(knobs_slot, knobs);             // typed push constants, recorded with the next trace
@@ -12,18 +11,19 @@
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
 //   frame.work.blas_builds;                           // what the frame rebuilt: BLAS builds, refits, TLAS work
 //
-// From the table it makes: one BLAS per scene BLAS (triangles or AABBs; compacted when Static,
+// It compiles the scene (compile.hpp) and keeps the Plan, a value: changing the scene afterwards
+// does not change the renderer. From the plan it makes: one BLAS per scene BLAS (triangles or
+// AABBs, read from the scene without a copy; compacted when Static,
 // kept refittable when DynamicGeometry), a TLAS whose instances carry the SBT offsets and masks
 // the scene assigned (refittable when any geometry is dynamic), descriptor sets
 // from the global signature (the acceleration-structure binding gets the TLAS, the storage
 // image binding the frame, uniform bindings the values given with set()), the pipeline from
 // the plan (shaders read from shader_dirs, compiled with the declarations glsl_for derives, the
-// stack size from the groups' own sizes, a disk cache when asked), and the SBT bytes.
-// The table and its scene must outlive the renderer.
+// stack size from the groups' own sizes, a disk cache when asked), and the SBT bytes laid out
+// for the device. The scene is read only while the constructor runs.
 #pragma once
 
-#include <proceduray/scene/glsl_for.hpp>
-#include <proceduray/scene/shader_binding_table.hpp>
+#include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/descriptors.hpp>
@@ -35,6 +35,7 @@
 #include <proceduray/vk/trace.hpp>
 
 #include <chrono>
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -87,7 +88,8 @@ struct Frame {
 /// Builds the device objects of a shader table and traces frames of it.
 class Renderer {
  public:
-  Renderer(const Context& ctx, const proceduray::ShaderBindingTable& table, RendererOptions options = {});
+  /// Compiles `scene` and builds it on `ctx`; throws what compile() and Plan::layout() throw.
+  Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options = {});
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
@@ -136,6 +138,8 @@ class Renderer {
   const Pipeline& pipeline() const noexcept { return *m_pipeline; }
   const SbtBuffer& sbt() const noexcept { return *m_sbt; }
   const Tlas& tlas() const noexcept { return m_tlas; }
+  /// What compile(scene) derived: records, instances, pipeline plan, declarations.
+  const proceduray::Plan& plan() const noexcept { return m_plan; }
   /// Bytes of every BLAS (Static ones after compaction).
   VkDeviceSize blas_bytes() const noexcept;
 
@@ -149,7 +153,7 @@ class Renderer {
     bool changed = false;                                // set_* since the last frame
     const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
   };
-  const Blas& dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const;
+  const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const;
   void check_movable(GeometryId geometry, const char* operation) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit,
   /// which the frame's command buffer records before the TLAS work and the trace.
@@ -171,7 +175,7 @@ class Renderer {
   void set_push_bytes(PushConstantBlock slot, const TypeOps* type, std::span<const std::byte> bytes);
   const PushConstantBlock* push_block() const;
   Uniform& uniform(std::uint32_t set, std::uint32_t binding, std::size_t size, const char* operation);
-  void build_acceleration_structures();
+  void build_acceleration_structures(const proceduray::Scene& scene);
   void build_descriptor_sets();
   void build_pipeline();
   std::string find_shader(const std::string& name) const;
@@ -183,7 +187,8 @@ class Renderer {
   }
 
   const Context* m_ctx;
-  const proceduray::ShaderBindingTable* m_table;
+  proceduray::Plan m_plan;
+  SbtLayout m_layout;
   RendererOptions m_options;
   BuildTimings m_timings;
   std::vector<BlasSlot> m_blases;  // index = scene BLAS; never reallocated (instances point into it)
@@ -204,15 +209,15 @@ class Renderer {
 
 // ---------------------------------------------------------------------------------------------
 
-inline Renderer::Renderer(const Context& ctx, const proceduray::ShaderBindingTable& table, RendererOptions options)
-    : m_ctx(&ctx), m_table(&table), m_options(std::move(options)) {
+inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
+    : m_ctx(&ctx), m_plan(compile(scene)), m_layout(m_plan.layout(ctx.limits())), m_options(std::move(options)) {
   if (m_options.shader_dirs.empty()) m_options.shader_dirs.push_back(std::filesystem::current_path());
   const auto start = Clock::now();
-  build_acceleration_structures();
+  build_acceleration_structures(scene);
   m_timings.acceleration_ms = ms_since(start);
   build_descriptor_sets();
   build_pipeline();
-  m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, table);
+  m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout);
   if (ctx.timestamp_period_ns() > 0) {
     auto info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -223,44 +228,43 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::ShaderBindingTab
   }
 }
 
-inline void Renderer::build_acceleration_structures() {
-  const Scene& scene = m_table->scene();
-  m_blases.resize(scene.blases().size());
+// The scene's boxes go to the BLAS build as they are: an Aabb is six floats, min then max, like
+// VkAabbPositionsKHR.
+static_assert(sizeof(Aabb) == sizeof(VkAabbPositionsKHR) && offsetof(Aabb, max) == offsetof(VkAabbPositionsKHR, maxX));
+
+inline void Renderer::build_acceleration_structures(const proceduray::Scene& scene) {
+  const auto blases = m_plan.blases();
+  m_blases.resize(blases.size());
   bool any_dynamic = false;
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
-    const Blas& blas = scene.blases()[b];
+    const PlannedBlas& blas = blases[b];
     BlasSlot& slot = m_blases[b];
     any_dynamic = any_dynamic || blas.update != UpdatePolicy::Static;
     const bool refittable = blas.update == UpdatePolicy::DynamicGeometry;
-    for (GeometryId id : blas.geometries) {
-      const GeometryDesc& desc = scene.geometry(id).desc;
-      if (blas.kind == GeometryKind::procedural) {
-        auto& list = slot.boxes.emplace_back();
-        for (const Aabb& a : desc.aabbs) list.push_back({a.min.x, a.min.y, a.min.z, a.max.x, a.max.y, a.max.z});
-      } else if (refittable) {
-        slot.meshes.push_back(desc.mesh);  // the renderer's own copy: set_vertices and set_mesh change it
-      }
-    }
     if (blas.kind == GeometryKind::procedural) {
-      const auto geometries = aabb_geometries(b);
-      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(geometries));
-      else slot.fixed = build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), m_options.blas);
-      if (!refittable) slot.boxes.clear();  // the scene keeps Static boxes
-    } else if (refittable) {
-      const auto geometries = triangle_geometries(b);
-      slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
-    } else {
-      std::vector<TriangleGeometry> geometries;  // straight from the scene: a Static mesh is not copied
-      for (GeometryId id : blas.geometries) {
-        const GeometryDesc& desc = scene.geometry(id).desc;
-        geometries.push_back({desc.mesh.vertices, desc.mesh.indices, desc.opaque});
+      std::vector<AabbGeometry> geometries;
+      for (std::uint32_t g : blas.geometries) {
+        const auto& boxes = scene.geometry(GeometryId(g)).desc.aabbs;
+        geometries.push_back({std::span(reinterpret_cast<const VkAabbPositionsKHR*>(boxes.data()), boxes.size()),
+                              m_plan.geometries()[g].opaque});
+        if (refittable) slot.boxes.emplace_back(geometries.back().boxes.begin(), geometries.back().boxes.end());
       }
-      slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), m_options.blas);
+      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(aabb_geometries(b)));
+      else slot.fixed = build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), m_options.blas);
+      continue;
     }
+    std::vector<TriangleGeometry> geometries;  // straight from the scene: a Static mesh is not copied
+    for (std::uint32_t g : blas.geometries) {
+      const TriangleMesh& mesh = scene.geometry(GeometryId(g)).desc.mesh;
+      if (refittable) slot.meshes.push_back(mesh);  // the renderer's own copy: set_vertices and set_mesh change it
+      geometries.push_back({mesh.vertices, mesh.indices, m_plan.geometries()[g].opaque});
+    }
+    if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
+    else slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), m_options.blas);
   }
-  const auto instances = m_table->instances();
+  const auto instances = m_plan.instances();
   for (std::uint32_t k = 0; k < instances.size(); ++k) {
-    const InstanceTransform& t = m_table->transform(instances[k]);
+    const InstanceTransform& t = instances[k].transform;
     glm::mat4 m(1.0f);
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];  // InstanceTransform holds the rows of the 3x4 matrix
@@ -272,30 +276,27 @@ inline void Renderer::build_acceleration_structures() {
 }
 
 inline std::vector<AabbGeometry> Renderer::aabb_geometries(std::uint32_t b) const {
-  const Scene& scene = m_table->scene();
-  const Blas& blas = scene.blases()[b];
+  const PlannedBlas& blas = m_plan.blases()[b];
   std::vector<AabbGeometry> out;
   for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
-    out.push_back({m_blases[b].boxes[g], scene.geometry(blas.geometries[g]).desc.opaque});
+    out.push_back({m_blases[b].boxes[g], m_plan.geometries()[blas.geometries[g]].opaque});
   }
   return out;
 }
 
 inline std::vector<TriangleGeometry> Renderer::triangle_geometries(std::uint32_t b) const {
-  const Scene& scene = m_table->scene();
-  const Blas& blas = scene.blases()[b];
+  const PlannedBlas& blas = m_plan.blases()[b];
   std::vector<TriangleGeometry> out;
   for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
     const TriangleMesh& mesh = m_blases[b].meshes[g];
-    out.push_back({mesh.vertices, mesh.indices, scene.geometry(blas.geometries[g]).desc.opaque});
+    out.push_back({mesh.vertices, mesh.indices, m_plan.geometries()[blas.geometries[g]].opaque});
   }
   return out;
 }
 
 inline void Renderer::build_descriptor_sets() {
-  const PipelinePlan& plan = m_table->plan();
-  if (!plan.global_signature.valid()) return;
-  const auto& desc = m_table->scene().global_signature(plan.global_signature).desc;
+  if (m_plan.global_signature() == nullptr) return;
+  const GlobalSignatureDesc& desc = *m_plan.global_signature();
   std::map<std::uint32_t, std::vector<Binding>> by_set;
   std::uint32_t last_set = 0;
   for (const proceduray::Binding& b : desc.bindings) {
@@ -334,10 +335,10 @@ inline std::string Renderer::find_shader(const std::string& name) const {
 }
 
 inline void Renderer::build_pipeline() {
-  const PipelinePlan& plan = m_table->plan();
+  const PipelinePlan& plan = m_plan.pipeline();
   PipelineDesc desc;
-  if (plan.global_signature.valid()) {  // checked before compiling: a size error is the clearer one
-    const std::uint32_t bytes = m_table->scene().global_signature(plan.global_signature).desc.push_bytes();
+  if (m_plan.global_signature() != nullptr) {  // checked before compiling: a size error is the clearer one
+    const std::uint32_t bytes = m_plan.global_signature()->push_bytes();
     const std::uint32_t limit = m_ctx->properties().limits.maxPushConstantsSize;
     if (bytes > limit) {
       throw std::invalid_argument("Renderer: the global signature declares " + std::to_string(bytes) +
@@ -349,7 +350,7 @@ inline void Renderer::build_pipeline() {
   for (const PlannedStage& stage : plan.stages) {
     const std::string path = find_shader(stage.shader);
     std::string preamble = m_options.declarations ? m_options.declarations(stage.stage, stage.shader)
-                                                  : glsl_for(*m_table, stage.stage, stage.shader) + m_options.extra_declarations;
+                                                  : stage.declarations + m_options.extra_declarations;
     desc.add_shader(stage.stage, compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
                                                .preamble = std::move(preamble)}));
   }
@@ -361,9 +362,7 @@ inline void Renderer::build_pipeline() {
     desc.groups.push_back({types[static_cast<std::uint32_t>(g.type)], g.general, g.closest_hit, g.any_hit, g.intersection});
   }
   for (const auto& set : m_sets) desc.set_layouts.push_back(set->layout());
-  if (plan.global_signature.valid()) {
-    desc.push_constant_size = m_table->scene().global_signature(plan.global_signature).desc.push_bytes();
-  }
+  if (m_plan.global_signature() != nullptr) desc.push_constant_size = m_plan.global_signature()->push_bytes();
   desc.max_recursion_depth = plan.max_recursion_depth;
   PipelineCache cache(*m_ctx, m_options.pipeline_cache);
   desc.cache = cache.get();
@@ -411,9 +410,8 @@ inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding
 }
 
 inline const PushConstantBlock* Renderer::push_block() const {
-  const PipelinePlan& plan = m_table->plan();
-  if (!plan.global_signature.valid()) return nullptr;
-  return &m_table->scene().global_signature(plan.global_signature).desc.push_constants;
+  const GlobalSignatureDesc* global = m_plan.global_signature();
+  return global == nullptr ? nullptr : &global->push_constants;
 }
 
 inline void Renderer::set_push_bytes(PushConstantBlock slot, const TypeOps* type, std::span<const std::byte> bytes) {
@@ -432,9 +430,9 @@ inline void Renderer::set_push_bytes(PushConstantBlock slot, const TypeOps* type
 }
 
 inline void Renderer::check_movable(GeometryId geometry, const char* operation) const {
-  const Scene& scene = m_table->scene();
-  if (scene.blas_of(geometry).update == UpdatePolicy::Static) {
-    throw std::invalid_argument(std::string(operation) + ": geometry \"" + scene.geometries().name(geometry.index()) +
+  const PlannedGeometry& g = m_plan.geometry(geometry, operation);
+  if (m_plan.blases()[g.blas].update == UpdatePolicy::Static) {
+    throw std::invalid_argument(std::string(operation) + ": geometry \"" + g.name +
                                 "\" is Static, so its instances were built not to move; declare it with "
                                 "update = UpdatePolicy::DynamicTransform");
   }
@@ -442,17 +440,17 @@ inline void Renderer::check_movable(GeometryId geometry, const char* operation) 
 
 inline void Renderer::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world) {
   constexpr const char* op = "Renderer::set_transforms";
-  const Scene& scene = m_table->scene();
   check_movable(geometry, op);
-  const std::size_t count = scene.blas_of(geometry).instances.size();
+  const PlannedGeometry& g = m_plan.geometry(geometry, op);
+  const std::size_t count = m_plan.blases()[g.blas].instance_count;
   if (object_to_world.size() != count) {
-    throw std::invalid_argument(std::string(op) + ": geometry \"" + scene.geometries().name(geometry.index()) + "\" has " +
+    throw std::invalid_argument(std::string(op) + ": geometry \"" + g.name + "\" has " +
                                 std::to_string(count) + " instances, " + std::to_string(object_to_world.size()) +
                                 " transforms given; give one per instance");
   }
   // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
   // matrix leaves every instance where it was.
-  const std::uint32_t first = m_table->tlas_index(geometry, 0, op);
+  const std::uint32_t first = m_plan.tlas_index(geometry, 0, op);
   for (std::size_t i = 0; i < count; ++i) {
     Instance probe = m_instances[first + i];
     probe.transform = object_to_world[i];
@@ -463,14 +461,14 @@ inline void Renderer::set_transforms(GeometryId geometry, std::span<const glm::m
 }
 
 inline void Renderer::set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask) {
-  const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_mask");
+  const std::uint32_t k = m_plan.tlas_index(geometry, instance, "Renderer::set_mask");
   if (m_instances[k].mask == mask) return;
   m_instances[k].mask = mask;
   m_tlas_rebuild = true;
 }
 
 inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
-  const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_transform");
+  const std::uint32_t k = m_plan.tlas_index(geometry, instance, "Renderer::set_transform");
   check_movable(geometry, "Renderer::set_transform");
   Instance moved = m_instances[k];
   moved.transform = object_to_world;
@@ -479,11 +477,10 @@ inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance,
   m_transforms_dirty = true;
 }
 
-inline const Blas& Renderer::dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const {
-  const Scene& scene = m_table->scene();
-  const Geometry& g = scene.geometry(geometry);
-  const Blas& blas = scene.blases()[g.blas];
-  const std::string name = scene.geometries().name(geometry.index());
+inline const PlannedBlas& Renderer::dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const {
+  const PlannedGeometry& g = m_plan.geometry(geometry, operation);
+  const PlannedBlas& blas = m_plan.blases()[g.blas];
+  const std::string& name = g.name;
   if (blas.update != UpdatePolicy::DynamicGeometry) {
     throw std::invalid_argument(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.update) +
                                 ", so its BLAS was built not to change; declare it with "
@@ -500,8 +497,8 @@ inline const Blas& Renderer::dynamic_geometry(GeometryId geometry, GeometryKind 
 inline void Renderer::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes) {
   constexpr const char* op = "Renderer::set_aabbs";
   dynamic_geometry(geometry, GeometryKind::procedural, op);
-  const Geometry& g = m_table->scene().geometry(geometry);
-  const std::string where = std::string(op) + ": geometry \"" + m_table->scene().geometries().name(geometry.index()) + "\"";
+  const PlannedGeometry& g = m_plan.geometry(geometry, op);
+  const std::string where = std::string(op) + ": geometry \"" + g.name + "\"";
   if (boxes.empty()) throw InvalidGeometryError(where + " given no boxes; give it at least one AABB");
   std::vector<VkAabbPositionsKHR> list;
   list.reserve(boxes.size());
@@ -518,10 +515,10 @@ inline void Renderer::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes
 inline void Renderer::set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices) {
   constexpr const char* op = "Renderer::set_vertices";
   dynamic_geometry(geometry, GeometryKind::triangles, op);
-  const Geometry& g = m_table->scene().geometry(geometry);
+  const PlannedGeometry& g = m_plan.geometry(geometry, op);
   TriangleMesh mesh = m_blases[g.blas].meshes[g.geometry_index];
   if (vertices.size() != mesh.vertices.size()) {
-    throw InvalidGeometryError(std::string(op) + ": geometry \"" + m_table->scene().geometries().name(geometry.index()) +
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name +
                                "\" has " + std::to_string(mesh.vertices.size()) + " vertices, " +
                                std::to_string(vertices.size()) + " given; new positions keep the count: "
                                "call set_mesh to change the topology");
@@ -533,10 +530,9 @@ inline void Renderer::set_vertices(GeometryId geometry, std::span<const glm::vec
 inline void Renderer::set_mesh(GeometryId geometry, TriangleMesh mesh) {
   constexpr const char* op = "Renderer::set_mesh";
   dynamic_geometry(geometry, GeometryKind::triangles, op);
-  const Scene& scene = m_table->scene();
+  const PlannedGeometry& g = m_plan.geometry(geometry, op);
   GeometryDesc check = GeometryDesc::triangles(mesh, {});
-  validate(check, scene.geometries().name(geometry.index()), op);  // throws InvalidGeometryError naming the geometry
-  const Geometry& g = scene.geometry(geometry);
+  validate(check, g.name, op);  // throws InvalidGeometryError naming the geometry
   BlasSlot& slot = m_blases[g.blas];
   slot.meshes[g.geometry_index] = std::move(mesh);
   slot.changed = true;
@@ -544,7 +540,7 @@ inline void Renderer::set_mesh(GeometryId geometry, TriangleMesh mesh) {
 
 inline void Renderer::record_refit(VkCommandBuffer cmd, std::uint32_t b) {
   RefittableBlas& blas = *m_blases[b].dynamic;
-  if (m_table->scene().blases()[b].kind == GeometryKind::procedural) {
+  if (m_plan.blases()[b].kind == GeometryKind::procedural) {
     blas.record_refit(*m_ctx, cmd, std::span<const AabbGeometry>(aabb_geometries(b)));
   } else {
     blas.record_refit(*m_ctx, cmd, std::span<const TriangleGeometry>(triangle_geometries(b)));
@@ -552,13 +548,12 @@ inline void Renderer::record_refit(VkCommandBuffer cmd, std::uint32_t b) {
 }
 
 inline std::vector<std::uint32_t> Renderer::prepare_blases(FrameWork& work) {
-  const Scene& scene = m_table->scene();
   std::vector<std::uint32_t> refits;
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
     BlasSlot& slot = m_blases[b];
     if (!slot.changed) continue;
     slot.changed = false;
-    const bool procedural = scene.blases()[b].kind == GeometryKind::procedural;
+    const bool procedural = m_plan.blases()[b].kind == GeometryKind::procedural;
     const auto boxes = procedural ? aabb_geometries(b) : std::vector<AabbGeometry>{};
     const auto meshes = procedural ? std::vector<TriangleGeometry>{} : triangle_geometries(b);
     const bool refit = procedural ? slot.dynamic->same_topology(std::span<const AabbGeometry>(boxes))
@@ -571,9 +566,9 @@ inline std::vector<std::uint32_t> Renderer::prepare_blases(FrameWork& work) {
       // A new structure (the old one is freed whole, handle before memory); its instances point at it.
       slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes))
                                 : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes));
-      const auto instances = m_table->instances();
-      for (std::size_t k = 0; k < instances.size(); ++k) {
-        if (instances[k].blas == b) m_instances[k].blas = &slot.dynamic->structure();
+      const PlannedBlas& blas = m_plan.blases()[b];
+      for (std::uint32_t k = 0; k < blas.instance_count; ++k) {
+        m_instances[blas.first_instance + k].blas = &slot.dynamic->structure();
       }
       ++work.blas_builds;
       m_tlas_rebuild = true;

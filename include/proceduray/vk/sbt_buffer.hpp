@@ -11,7 +11,7 @@
 #pragma once
 
 #include <proceduray/scene/sbt_layout.hpp>
-#include <proceduray/scene/shader_binding_table.hpp>
+#include <proceduray/scene/plan.hpp>
 #include <proceduray/vk/pipeline.hpp>
 
 #include <array>
@@ -41,8 +41,9 @@ class SbtBuffer {
  public:
   SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
             std::span<const RecordWrite> records);
-  /// The table a scene built: its records and data, with `pipeline`'s handles in plan().groups order.
-  SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::ShaderBindingTable& table);
+  /// A compiled scene's table as `layout` places it: its records and data, with `pipeline`'s
+  /// handles in plan.pipeline().groups order.
+  SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan, const SbtLayout& layout);
 
   /// Raygen, miss, hit and callable regions with device addresses, in vkCmdTraceRaysKHR's order.
   const std::array<VkStridedDeviceAddressRegionKHR, 4>& regions() const noexcept { return m_regions; }
@@ -83,12 +84,13 @@ inline void SbtBuffer::place(const Context& ctx) {
   }
 }
 
-inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::ShaderBindingTable& table)
-    : m_layout(table.layout()) {
+inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan,
+                            const SbtLayout& layout)
+    : m_layout(layout) {
   place(ctx);
-  if (pipeline.group_count() != table.plan().groups.size()) {
+  if (pipeline.group_count() != plan.pipeline().groups.size()) {
     throw std::invalid_argument("SbtBuffer: the pipeline has " + std::to_string(pipeline.group_count()) +
-                                " groups but the table's plan has " + std::to_string(table.plan().groups.size()) +
+                                " groups but the table's plan has " + std::to_string(plan.pipeline().groups.size()) +
                                 "; make the pipeline from the same plan");
   }
   std::vector<std::byte> handles;
@@ -96,7 +98,7 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
     const auto h = pipeline.group_handle(g);
     handles.insert(handles.end(), h.begin(), h.end());
   }
-  table.write({static_cast<std::byte*>(m_buffer.data()) + m_start, m_layout.size}, handles);
+  plan.write(m_layout, {static_cast<std::byte*>(m_buffer.data()) + m_start, m_layout.size}, handles);
 }
 
 inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,

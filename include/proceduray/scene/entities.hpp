@@ -1,0 +1,260 @@
+// The entities of a scene: rays, hit groups, geometry, layers, callables, global and local
+// signatures, each registered by string id and returned as a strong typed id. Scene (scene.hpp)
+// is an Entities plus the entries that bind them; use it through Scene.
+//
+//   proceduray::Scene scene;   // payload, attribute and record types: registered with PROCEDURAY_STRUCT
+//   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
+//   auto shadow   = scene.add_ray<ShadowPayload>("Shadow", {.miss = "shadow.rmiss"});
+//   auto pacman   = scene.add_hit_group<Attributes>("Pacman", {.kind = proceduray::HitGroupKind::procedural,
+//                                                   .closest_hit = "pacman.rchit", .intersection = "pacman.rint"});
+//   auto geometry = scene.add_geometry("Pacman", proceduray::GeometryDesc::procedural({{}}, transforms));
+//   auto sig      = scene.add_local_signature<ProceduralArgs>("Procedural");
+//   scene.add_layer("casts_shadow");                            // named bits of instance masks
+//   auto tint     = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
+//   const proceduray::HitGroup* maybe = scene.find_hit_group("Pacman");   // nullptr if absent
+//   auto again = scene.ray_id<RayPayload>("Radiance");   // throws: unknown id, wrong payload type
+//
+// Registration order is the index order: rays' order is their SBT ray index and miss index.
+// Geometry goes into BLASes (Scene::blases()): its own, or the one named by GeometryDesc::blas.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <typeindex>
+#include <typeinfo>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "proceduray/scene/blas.hpp"
+#include "proceduray/scene/callable.hpp"
+#include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/geometry.hpp"
+#include "proceduray/scene/global_signature.hpp"
+#include "proceduray/scene/hit_group.hpp"
+#include "proceduray/scene/ids.hpp"
+#include "proceduray/scene/layers.hpp"
+#include "proceduray/scene/local_signature.hpp"
+#include "proceduray/scene/ray.hpp"
+#include "proceduray/scene/registry.hpp"
+#include "proceduray/scene/shader_data.hpp"
+
+namespace proceduray {
+
+namespace detail {
+template <class A>
+constexpr const TypeOps* attribute_glsl_of() {
+  if constexpr (std::is_void_v<A>) return nullptr;
+  else return &type_ops<A>;
+}
+}  // namespace detail
+
+/// Every registered entity of a scene (Scene adds the entries that bind them).
+class Entities {
+ public:
+  /// Registers a ray type with payload type Payload; throws DuplicateIdError.
+  template <PayloadData Payload>
+  RayId<Payload> add_ray(std::string id, RayDesc desc) {
+    return RayId<Payload>(m_rays.add("Scene::add_ray", std::move(id),
+                                     Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}));
+  }
+
+  /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
+  /// or the built-in barycentrics for triangles). Throws HitGroupKindError, DuplicateIdError.
+  template <class Attributes = void>
+  HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
+    static_assert(std::is_void_v<Attributes> || AttributeData<Attributes>,
+                  "Scene::add_hit_group: the attribute type (Attributes in the instantiation above) must be registered with "
+                  "PROCEDURAY_STRUCT and at most 32 bytes (maxRayHitAttributeSize that Vulkan guarantees); "
+                  "register it, or shrink it and pass the rest through the payload");
+    validate(desc, id, "Scene::add_hit_group");
+    std::uint32_t size = 0;
+    if constexpr (!std::is_void_v<Attributes>) {
+      if (desc.kind == HitGroupKind::triangles) {
+        throw HitGroupKindError(std::string("Scene::add_hit_group: triangle hit group \"") + id + "\" declares an attribute type (" +
+                                std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
+                                "barycentrics: call add_hit_group<void>");
+      }
+      size = sizeof(Attributes);
+    } else if (desc.kind == HitGroupKind::triangles) {
+      size = triangle_attribute_size;
+    }
+    return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
+                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}));
+  }
+
+  /// Registers a geometry and puts it in its BLAS; throws InvalidGeometryError, DuplicateIdError.
+  GeometryId add_geometry(std::string id, GeometryDesc desc) {
+    constexpr std::string_view op = "Scene::add_geometry";
+    validate(desc, id, op);
+    // Every check comes before the first change, so a throw leaves the scene as it was.
+    const BlasSet::Join join = m_blases.check(desc, id, op);
+    // An empty or taken id: add() throws its DuplicateIdError or SceneError before it changes anything.
+    if (id.empty() || m_geometries.find(id) != nullptr) m_geometries.add(op, id, Geometry{});
+    const GeometryId gid(static_cast<std::uint32_t>(m_geometries.size()));
+    const std::uint32_t index = m_blases.add(join, gid, desc, id);
+    m_geometries.add(op, std::move(id), Geometry{std::move(desc), join.blas, index});
+    return gid;
+  }
+
+  /// Adds a named layer (a bit of instance masks and cull masks) and returns its bit;
+  /// throws DuplicateIdError, or SceneError past eight layers.
+  std::uint8_t add_layer(std::string name) { return m_layers.add(std::move(name), "Scene::add_layer"); }
+  /// The union of the named layers' bits; throws UnknownIdError naming the known layers.
+  std::uint8_t layer_mask(std::initializer_list<std::string_view> names) const {
+    return m_layers.mask(names, "Scene::layer_mask");
+  }
+  /// The scene's layers, bit order.
+  const Layers& layers() const { return m_layers; }
+
+  /// Registers a callable shader called with Data; throws DuplicateIdError, SceneError for no shader.
+  template <class Data>
+  CallableId<Data> add_callable(std::string id, CallableDesc desc) {
+    static_assert(PayloadData<Data>,
+                  "Scene::add_callable: the callable data type (Data in the instantiation above) must be registered "
+                  "with PROCEDURAY_STRUCT: it is declared in GLSL as callableDataEXT from that registration");
+    if (desc.shader.empty()) {
+      throw SceneError("Scene::add_callable: callable " + detail::quote_id(id) + " has no shader; set .shader");
+    }
+    return CallableId<Data>(m_callables.add("Scene::add_callable", std::move(id),
+                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}));
+  }
+
+  /// Registers a global signature; throws SceneError for bad bindings, DuplicateIdError.
+  GlobalSignatureId add_global_signature(std::string id, GlobalSignatureDesc desc) {
+    validate(desc, id, "Scene::add_global_signature");
+    return GlobalSignatureId(m_global_signatures.add("Scene::add_global_signature", std::move(id),
+                                                     GlobalSignature{std::move(desc)}));
+  }
+
+  /// Registers a local signature whose records carry Args; throws DuplicateIdError.
+  template <RecordData Args>
+  LocalSignatureId<Args> add_local_signature(std::string id) {
+    return LocalSignatureId<Args>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
+                                                         LocalSignature{sizeof(Args), typeid(Args), &type_ops<Args>}));
+  }
+
+  /// The ray registered as `id`, or nullptr.
+  const Ray* find_ray(std::string_view id) const { return m_rays.find(id); }
+  /// The hit group registered as `id`, or nullptr.
+  const HitGroup* find_hit_group(std::string_view id) const { return m_hit_groups.find(id); }
+  /// The geometry registered as `id`, or nullptr.
+  const Geometry* find_geometry(std::string_view id) const { return m_geometries.find(id); }
+  /// The global signature registered as `id`, or nullptr.
+  const GlobalSignature* find_global_signature(std::string_view id) const { return m_global_signatures.find(id); }
+  /// The local signature registered as `id`, or nullptr.
+  const LocalSignature* find_local_signature(std::string_view id) const { return m_local_signatures.find(id); }
+
+  /// The ray of `id`; throws UnknownIdError (nearest ids) or, for a typed lookup, TypeMismatchError.
+  template <class Payload = void>
+  RayId<Payload> ray_id(std::string_view id) const {
+    const std::uint32_t index = m_rays.index_of(id, "Scene::ray_id");
+    if constexpr (!std::is_void_v<Payload>) {
+      check_type(m_rays.entities()[index].payload_type, typeid(Payload), "Scene::ray_id", "ray", id, "payload");
+    }
+    return RayId<Payload>(index);
+  }
+  /// The hit group of `id`; throws UnknownIdError.
+  HitGroupId hit_group_id(std::string_view id) const { return HitGroupId(m_hit_groups.index_of(id, "Scene::hit_group_id")); }
+  /// The geometry of `id`; throws UnknownIdError.
+  GeometryId geometry_id(std::string_view id) const { return GeometryId(m_geometries.index_of(id, "Scene::geometry_id")); }
+  /// The global signature of `id`; throws UnknownIdError.
+  GlobalSignatureId global_signature_id(std::string_view id) const {
+    return GlobalSignatureId(m_global_signatures.index_of(id, "Scene::global_signature_id"));
+  }
+  /// The local signature of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
+  template <class Args = void>
+  LocalSignatureId<Args> local_signature_id(std::string_view id) const {
+    const std::uint32_t index = m_local_signatures.index_of(id, "Scene::local_signature_id");
+    if constexpr (!std::is_void_v<Args>) {
+      check_type(m_local_signatures.entities()[index].data_type, typeid(Args), "Scene::local_signature_id",
+                 "local signature", id, "record data");
+    }
+    return LocalSignatureId<Args>(index);
+  }
+
+  /// The callable of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
+  template <class Data = void>
+  CallableId<Data> callable_id(std::string_view id) const {
+    const std::uint32_t index = m_callables.index_of(id, "Scene::callable_id");
+    if constexpr (!std::is_void_v<Data>) {
+      check_type(m_callables.entities()[index].data_type, typeid(Data), "Scene::callable_id", "callable", id, "data");
+    }
+    return CallableId<Data>(index);
+  }
+  /// The callable of an id; throws UnknownIdError.
+  const Callable& callable(CallableId<> id) const { return m_callables.at(id.index(), "Scene::callable"); }
+
+  /// The ray of an id; throws UnknownIdError for an id this scene did not issue.
+  const Ray& ray(RayId<> id) const { return m_rays.at(id.index(), "Scene::ray"); }
+  /// The ray registered as `id`; throws UnknownIdError.
+  const Ray& ray(std::string_view id) const { return m_rays.at(id, "Scene::ray"); }
+  /// The hit group of an id; throws UnknownIdError.
+  const HitGroup& hit_group(HitGroupId id) const { return m_hit_groups.at(id.index(), "Scene::hit_group"); }
+  /// The hit group registered as `id`; throws UnknownIdError.
+  const HitGroup& hit_group(std::string_view id) const { return m_hit_groups.at(id, "Scene::hit_group"); }
+  /// The geometry of an id; throws UnknownIdError.
+  const Geometry& geometry(GeometryId id) const { return m_geometries.at(id.index(), "Scene::geometry"); }
+  /// The geometry registered as `id`; throws UnknownIdError.
+  const Geometry& geometry(std::string_view id) const { return m_geometries.at(id, "Scene::geometry"); }
+  /// The global signature of an id; throws UnknownIdError.
+  const GlobalSignature& global_signature(GlobalSignatureId id) const {
+    return m_global_signatures.at(id.index(), "Scene::global_signature");
+  }
+  /// The local signature of an id; throws UnknownIdError.
+  const LocalSignature& local_signature(LocalSignatureId<> id) const {
+    return m_local_signatures.at(id.index(), "Scene::local_signature");
+  }
+  /// The BLAS a geometry lives in; throws UnknownIdError.
+  const Blas& blas_of(GeometryId id) const { return m_blases.all()[geometry(id).blas]; }
+
+  /// All rays in ray-index order.
+  const Registry<Ray>& rays() const { return m_rays; }
+  /// All hit groups in registration order.
+  const Registry<HitGroup>& hit_groups() const { return m_hit_groups; }
+  /// All geometries in registration order.
+  const Registry<Geometry>& geometries() const { return m_geometries; }
+  /// All callables in callable-index order.
+  const Registry<Callable>& callables() const { return m_callables; }
+  /// All global signatures.
+  const Registry<GlobalSignature>& global_signatures() const { return m_global_signatures; }
+  /// All local signatures.
+  const Registry<LocalSignature>& local_signatures() const { return m_local_signatures; }
+  /// All BLASes in creation order (the order of their first geometry).
+  std::span<const Blas> blases() const { return m_blases.all(); }
+  /// The shared BLAS called `name`, or nullptr.
+  const Blas* find_shared_blas(std::string_view name) const { return m_blases.find_shared(name); }
+  /// TLAS instances over all BLASes.
+  std::uint64_t instance_count() const { return m_blases.instance_count(); }
+
+  /// Reserves room for `count` geometries (and their BLASes).
+  void reserve_geometries(std::size_t count) {
+    m_geometries.reserve(count);
+    m_blases.reserve(count);
+  }
+
+ private:
+  static void check_type(std::type_index have, std::type_index want, std::string_view op, std::string_view kind,
+                         std::string_view id, std::string_view what) {
+    if (have != want) {
+      throw TypeMismatchError(std::string(op) + ": " + std::string(kind) + " \"" + std::string(id) + "\" has " +
+                              std::string(what) + " type " + have.name() + ", not the requested " + want.name() +
+                              "; ask for the type it was registered with");
+    }
+  }
+
+  Registry<Ray> m_rays{"ray"};
+  Registry<HitGroup> m_hit_groups{"hit group"};
+  Registry<Geometry> m_geometries{"geometry"};
+  Registry<GlobalSignature> m_global_signatures{"global signature"};
+  Registry<LocalSignature> m_local_signatures{"local signature"};
+  Registry<Callable> m_callables{"callable"};
+  Layers m_layers;
+  BlasSet m_blases;
+};
+
+}  // namespace proceduray

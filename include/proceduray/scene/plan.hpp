@@ -1,0 +1,252 @@
+// The plan: what compile(scene) derives, as one self-contained value with no pointer into the
+// scene and no device in it: TLAS instances with their SBT offsets, every SBT record with its
+// bytes, the pipeline plan (stages, groups, sizes, recursion depth) and each stage's GLSL
+// declarations. Device limits and the SBT layout come after, in one place: layout(limits).
+//
+//   proceduray::Plan plan = proceduray::compile(scene);        // no device: runs at build time too
+//   proceduray::SbtLayout layout = plan.layout(ctx.limits());  // throws DeviceLimitError
+//   std::vector<std::byte> bytes(layout.size);
+//   plan.write(layout, bytes, handles);   // handles: one per plan.pipeline().groups, in that order
+//   auto hit = plan.resolve(shadow, pacman, 2);   // record index and the entry it holds
+//
+// Hit records are laid out per BLAS, in BLAS order: first one block shared by the instances
+// without instance-specific entries, then one block per instance that has some. A block is
+// geometry-major, ray-minor, so for every (ray r, geometry g, instance i):
+//   record = instance_sbt_offset(i) + geometry_index(g) * ray_count() + r
+//
+//   hit region:  | BLAS 0 shared block        | BLAS 0 inst 3 block | BLAS 1 shared block | ...
+//                | g0 r0 | g0 r1 | g1 r0 | g1 r1 | g0 r0 | g0 r1 | ...
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "proceduray/error.hpp"
+#include "proceduray/scene/device_limits.hpp"
+#include "proceduray/scene/entry.hpp"
+#include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/geometry.hpp"
+#include "proceduray/scene/global_signature.hpp"
+#include "proceduray/scene/ids.hpp"
+#include "proceduray/scene/pipeline_plan.hpp"
+#include "proceduray/scene/sbt_layout.hpp"
+
+namespace proceduray {
+
+/// One SBT record; fields that do not apply are no_index.
+struct SbtRecord {
+  std::uint32_t group = no_index;     ///< index into PipelinePlan::groups; no_index = null handle
+  std::uint32_t entry = no_index;     ///< the entry it holds; no_index for a record without one
+  std::uint32_t ray = no_index;       ///< ray index (miss, hit)
+  std::uint32_t geometry = no_index;  ///< geometry registry index (hit)
+  std::uint32_t instance = no_index;  ///< BLAS instance (hit); no_index = shared by instances without own entries
+  friend bool operator==(const SbtRecord&, const SbtRecord&) = default;
+};
+
+/// One TLAS instance; its position in Plan::instances() is its instanceCustomIndex.
+struct TlasInstance {
+  std::uint32_t blas = 0;        ///< index into Plan::blases()
+  std::uint32_t instance = 0;    ///< index among that BLAS's instances
+  std::uint32_t sbt_offset = 0;  ///< instanceShaderBindingTableRecordOffset
+  std::uint8_t mask = 0xFF;      ///< instance mask (GeometryDesc::mask or instance_masks)
+  InstanceTransform transform = identity_transform();  ///< rows of the 3x4 matrix, as VkTransformMatrixKHR
+  friend bool operator==(const TlasInstance&, const TlasInstance&) = default;
+};
+
+/// A geometry as the plan knows it.
+struct PlannedGeometry {
+  std::string name;                  ///< its id
+  std::uint32_t blas = 0;            ///< index into Plan::blases()
+  std::uint32_t geometry_index = 0;  ///< Vulkan's geometryIndex in its BLAS
+  bool opaque = true;                ///< VK_GEOMETRY_OPAQUE_BIT
+  friend bool operator==(const PlannedGeometry&, const PlannedGeometry&) = default;
+};
+
+/// A BLAS as the plan knows it; its instances are consecutive in Plan::instances().
+struct PlannedBlas {
+  std::string name;                            ///< shared BLAS name, or its only geometry's id
+  GeometryKind kind = GeometryKind::procedural;  ///< of all its geometries
+  UpdatePolicy update = UpdatePolicy::Static;  ///< of all its geometries
+  std::vector<std::uint32_t> geometries;       ///< geometry indices, in geometry-index order
+  std::uint32_t first_instance = 0;            ///< its first TLAS instance
+  std::uint32_t instance_count = 0;            ///< how many
+  friend bool operator==(const PlannedBlas&, const PlannedBlas&) = default;
+};
+
+/// The answer of Plan::resolve.
+struct HitResolution {
+  std::uint32_t record = 0;           ///< hit-region record index
+  const SbtRecord* sbt_record = nullptr;  ///< the record
+  const Entry* entry = nullptr;       ///< the entry it holds
+};
+
+/// What compile(scene) derived; a value: copy it, keep it, compare it.
+class Plan {
+ public:
+  /// Records of a region, in record order.
+  std::span<const SbtRecord> records(SbtRegionKind region) const { return m_records[static_cast<std::uint32_t>(region)]; }
+  /// TLAS instances: BLAS order, then instance order.
+  std::span<const TlasInstance> instances() const { return m_instances; }
+  /// BLASes in the scene's order.
+  std::span<const PlannedBlas> blases() const { return m_blases; }
+  /// Stages, groups, sizes and recursion depth for the pipeline.
+  const PipelinePlan& pipeline() const { return m_pipeline; }
+  /// The global signature the pipeline uses, or nullptr.
+  const GlobalSignatureDesc* global_signature() const { return m_global ? &*m_global : nullptr; }
+  /// traceRayEXT's sbtRecordStride: the number of ray types.
+  std::uint32_t ray_count() const { return static_cast<std::uint32_t>(m_ray_names.size()); }
+  /// A ray type's id.
+  const std::string& ray_name(std::uint32_t ray) const { return m_ray_names.at(ray); }
+  /// Every geometry, in registration order.
+  std::span<const PlannedGeometry> geometries() const { return m_geometries; }
+  /// A geometry of this plan; throws UnknownIdError for an id the plan does not have, naming `operation`.
+  const PlannedGeometry& geometry(GeometryId id, std::string_view operation = "Plan::geometry") const {
+    if (id.index() >= m_geometries.size()) {
+      throw UnknownIdError(std::string(operation) + ": geometry #" + std::to_string(id.index()) + " is not in the "
+                           "compiled scene (it has " + std::to_string(m_geometries.size()) + " geometries); "
+                           "compile the scene again after adding geometry");
+    }
+    return m_geometries[id.index()];
+  }
+  /// Vulkan's geometryIndex of a geometry in its BLAS.
+  std::uint32_t geometry_index(GeometryId id) const { return geometry(id).geometry_index; }
+  /// The TLAS instance index (instanceCustomIndex) of instance `instance` of a geometry's BLAS;
+  /// throws InvalidGeometryError naming `operation`, the geometry and the index.
+  std::uint32_t tlas_index(GeometryId id, std::uint32_t instance, std::string_view operation = "Plan::tlas_index") const {
+    const PlannedGeometry& g = geometry(id, operation);
+    const PlannedBlas& blas = m_blases[g.blas];
+    if (instance >= blas.instance_count) {
+      throw InvalidGeometryError(std::string(operation) + ": geometry \"" + g.name + "\" has " +
+                                 std::to_string(blas.instance_count) + " instances, no instance " +
+                                 std::to_string(instance) + "; use an index below the count");
+    }
+    return blas.first_instance + instance;
+  }
+  /// instanceShaderBindingTableRecordOffset of instance `instance` of a geometry's BLAS.
+  std::uint32_t instance_sbt_offset(GeometryId id, std::uint32_t instance) const {
+    return m_instances[tlas_index(id, instance, "Plan::instance_sbt_offset")].sbt_offset;
+  }
+  /// Applies the Vulkan index rule to (ray, geometry, instance): the hit record and its entry.
+  HitResolution resolve(RayId<> ray, GeometryId id, std::uint32_t instance) const {
+    if (ray.index() >= ray_count()) {
+      throw UnknownIdError("Plan::resolve: ray #" + std::to_string(ray.index()) + " is not in the compiled scene (" +
+                           std::to_string(ray_count()) + " ray types); pass a ray id of this scene");
+    }
+    const std::uint32_t record = instance_sbt_offset(id, instance) + geometry_index(id) * ray_count() + ray.index();
+    const SbtRecord& r = m_records[2].at(record);
+    return {record, &r, &m_entries[r.entry]};
+  }
+  /// The entry a record holds, or nullptr.
+  const Entry* entry(const SbtRecord& record) const { return record.entry == no_index ? nullptr : &m_entries[record.entry]; }
+  /// The record data bytes of a record (empty when it has none).
+  std::span<const std::byte> record_data(const SbtRecord& record) const {
+    const Entry* e = entry(record);
+    if (e == nullptr || e->data_size == 0) return {};
+    return std::span<const std::byte>(m_data).subspan(e->data_offset, e->data_size);
+  }
+  /// The GLSL declarations compile() derived for `shader` as `stage`; throws UnknownIdError if
+  /// the plan has no such stage.
+  const std::string& declarations(ShaderStage stage, std::string_view shader) const;
+
+  /// Checks the plan against a device's limits and lays out the SBT for it; throws
+  /// DeviceLimitError naming the limit, the value and the device.
+  SbtLayout layout(const DeviceLimits& limits) const;
+  /// Writes every record into `buffer` (at least layout.size bytes, placed at a multiple of
+  /// base_alignment): the handle of its group from `group_handles` (handle_size bytes per
+  /// planned group), then its record data. Padding and null handles are zeroed.
+  void write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> group_handles) const;
+
+  friend bool operator==(const Plan&, const Plan&) = default;
+
+ private:
+  friend struct PlanBuilder;  // compile.hpp fills the plan
+  std::vector<std::string> m_ray_names;
+  std::vector<PlannedGeometry> m_geometries;
+  std::vector<PlannedBlas> m_blases;
+  std::vector<TlasInstance> m_instances;
+  std::array<std::vector<SbtRecord>, 4> m_records;
+  std::vector<Entry> m_entries;
+  std::vector<std::byte> m_data;
+  PipelinePlan m_pipeline;
+  std::optional<GlobalSignatureDesc> m_global;
+};
+
+inline const std::string& Plan::declarations(ShaderStage stage, std::string_view shader) const {
+  for (const PlannedStage& s : m_pipeline.stages) {
+    if (s.stage == stage && s.shader == shader) return s.declarations;
+  }
+  std::string known;
+  for (const PlannedStage& s : m_pipeline.stages) known += (known.empty() ? "" : ", ") + detail::quote_id(s.shader);
+  throw UnknownIdError("glsl_for: the plan has no " + std::string(to_string(stage)) + " stage \"" + std::string(shader) +
+                       "\" (its stages: " + (known.empty() ? std::string("none") : known) +
+                       "); name a shader the scene's entries use, as the stage they use it in");
+}
+
+inline SbtLayout Plan::layout(const DeviceLimits& limits) const {
+  const std::string device = limits.device.empty() ? std::string("the device") : limits.device;
+  auto refuse = [&](const std::string& what, std::uint64_t value, std::uint64_t limit, const char* name,
+                    const std::string& fix) {
+    return DeviceLimitError("Plan::layout: " + what + " " + std::to_string(value) + ", " + device + " allows " +
+                            std::to_string(limit) + " (" + name + "); " + fix);
+  };
+  if (m_pipeline.max_recursion_depth > limits.max_ray_recursion_depth) {
+    throw refuse("the scene nests rays", m_pipeline.max_recursion_depth, limits.max_ray_recursion_depth,
+                 "maxRayRecursionDepth", "trace iteratively from raygen instead");
+  }
+  for (const PlannedBlas& b : m_blases) {
+    if (b.geometries.size() > limits.max_geometry_count) {
+      throw refuse("BLAS \"" + b.name + "\" holds geometries:", b.geometries.size(), limits.max_geometry_count,
+                   "maxGeometryCount", "split it");
+    }
+  }
+  if (m_instances.size() > limits.max_instance_count) {
+    throw refuse("the scene has instances:", m_instances.size(), limits.max_instance_count, "maxInstanceCount",
+                 "merge geometry into fewer instances");
+  }
+  for (const PlannedGroup& g : m_pipeline.groups) {
+    if (g.attribute_size > limits.max_ray_hit_attribute_size) {
+      throw refuse("hit group \"" + g.name + "\" reports bytes of hit attributes:", g.attribute_size,
+                   limits.max_ray_hit_attribute_size, "maxRayHitAttributeSize", "shrink the attribute struct");
+    }
+  }
+  std::array<SbtRegionRecords, 4> counts;
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    counts[k] = {static_cast<std::uint32_t>(m_records[k].size()), m_pipeline.max_record_data_size[k]};
+  }
+  return layout_sbt(limits.sbt, counts);
+}
+
+inline void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> handles) const {
+  const std::uint32_t handle = layout.properties.handle_size;
+  if (buffer.size() < layout.size) {
+    throw UsageError("Plan::write: buffer has " + std::to_string(buffer.size()) + " bytes, the table needs " +
+                     std::to_string(layout.size) + "; allocate layout.size bytes");
+  }
+  if (handles.size() < std::uint64_t{handle} * m_pipeline.groups.size()) {
+    throw UsageError("Plan::write: " + std::to_string(handles.size()) + " bytes of group handles, need " +
+                     std::to_string(m_pipeline.groups.size()) + " groups x " + std::to_string(handle) +
+                     " bytes; fetch handles for every planned group");
+  }
+  std::memset(buffer.data(), 0, layout.size);
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const auto kind = static_cast<SbtRegionKind>(k);
+    const auto& list = m_records[k];
+    for (std::uint32_t i = 0; i < list.size(); ++i) {
+      const std::uint64_t at = layout.record_offset(kind, i);
+      if (list[i].group != no_index) {
+        std::memcpy(buffer.data() + at, handles.data() + std::uint64_t{list[i].group} * handle, handle);
+      }
+      const auto data = record_data(list[i]);
+      if (!data.empty()) std::memcpy(buffer.data() + at + handle, data.data(), data.size());
+    }
+  }
+}
+
+}  // namespace proceduray
