@@ -10,6 +10,8 @@
 #include "../common/cli.hpp"
 #include "paper_types.hpp"
 
+#include <proceduray/scene/glsl_files.hpp>
+
 #include <string>
 
 namespace paper {
@@ -39,10 +41,16 @@ struct PaperScene : pr::Scene {
     procedural("mandelbulb", mandelbulb_aabb, {mandelbulb_placement}, {mandelbulb_material});
   }
 
-  /// Shaders from this example's folder, with the flags and the AABBs after the derived declarations.
+  /// Shaders from this example's folder, compiled with the declarations the build wrote
+  /// (PAPER_GLSL_DIR: glsl/generate.cpp, run with no device) and the flags and AABBs after them.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-            .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this), .pipeline_cache = std::move(cache)};
+    pr::vk::RendererOptions o{.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
+                              .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this),
+                              .pipeline_cache = std::move(cache)};
+#ifdef PAPER_GLSL_DIR
+    o.declarations = pr::glsl_files(PAPER_GLSL_DIR);
+#endif
+    return o;
   }
 };
 

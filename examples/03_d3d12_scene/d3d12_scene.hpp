@@ -39,7 +39,7 @@ class D3d12Scene : public pr::Scene {
     m_shadow = add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
     m_record = add_local_signature<PrimitiveRecord>("primitive");
     add_raygen("raygen.rgen");
-    set_max_recursion_depth(max_recursion_depth);
+    set_max_recursion_depth(d3d12::max_recursion_depth);
     set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                        {pr::BindingKind::storage_image, 1, 0, 1, "image"}, constants_slot}});
     if (layout == Layout::sample) {

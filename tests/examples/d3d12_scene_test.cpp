@@ -24,7 +24,7 @@ constexpr std::uint32_t size = 64;
 struct Alone {
   d3d12::D3d12Scene scene{d3d12::default_primitives(), d3d12::Layout::isolated};
   vk::Renderer renderer;
-  explicit Alone(const vk::Context& ctx) : renderer(ctx, scene.build(ctx.limits()), d3d12::renderer_options()) {}
+  explicit Alone(const vk::Context& ctx) : renderer(ctx, scene, d3d12::renderer_options()) {}
 };
 
 d3d12::SceneConstants debug_constants(const Camera& camera, float time, std::uint32_t metaball_method) {
@@ -77,17 +77,17 @@ TEST_CASE("d3d12 primitive kinds equal the GLSL consts") {
 
 TEST_CASE("d3d12 hit table has the sample's 22 records in geometry order") {
   d3d12::D3d12Scene scene;
-  const ShaderBindingTable& sbt = scene.build(DeviceLimits{});
+  const Plan sbt = compile(scene);
   const auto hits = sbt.records(SbtRegionKind::hit);
   REQUIRE(hits.size() == 22);
   CHECK(sbt.records(SbtRegionKind::miss).size() == 2);
   for (std::uint32_t k = 0; k < d3d12::primitive_count; ++k) {
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
     CAPTURE(d3d12::primitive_names[k]);
-    CHECK(sbt.plan().groups[hits[2 + 2 * k].group].name == std::string(d3d12::hit_group_of(kind)));
-    CHECK(sbt.plan().groups[hits[3 + 2 * k].group].name == std::string(d3d12::hit_group_of(kind)) + "_shadow");
+    CHECK(sbt.pipeline().groups[hits[2 + 2 * k].group].name == std::string(d3d12::hit_group_of(kind)));
+    CHECK(sbt.pipeline().groups[hits[3 + 2 * k].group].name == std::string(d3d12::hit_group_of(kind)) + "_shadow");
   }
-  CHECK(format_sbt(sbt).find("signed_distance_shadow") != std::string::npos);
+  CHECK(format_sbt(sbt, sbt.layout(DeviceLimits{})).find("signed_distance_shadow") != std::string::npos);
 }
 
 TEST_CASE("d3d12 host rejects degenerate primitive parameters") {
@@ -208,7 +208,7 @@ TEST_CASE("d3d12 rays through the AABB beside the primitive report no hit") {
 TEST_CASE("d3d12 scene shows every primitive and animates without a TLAS refit") {
   TestContext t;
   d3d12::D3d12Scene scene;
-  vk::Renderer renderer(t.ctx, scene.build(t.ctx.limits()), d3d12::renderer_options());
+  vk::Renderer renderer(t.ctx, scene, d3d12::renderer_options());
   constexpr std::uint32_t w = 160, h = 120;
   const Camera camera = d3d12::sample_camera(w, h);
   auto render = [&](float time) {

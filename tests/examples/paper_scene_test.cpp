@@ -3,6 +3,16 @@
 
 #include <02_paper_scene/paper_scene.hpp>
 
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <vector>
+
 using namespace proceduray;
 
 namespace {
@@ -14,7 +24,7 @@ constexpr std::uint32_t height = 96;
 struct Paper {
   paper::PaperScene scene;
   vk::Renderer renderer;
-  explicit Paper(const vk::Context& ctx) : renderer(ctx, scene.build(ctx.limits()), scene.renderer_options()) {}
+  explicit Paper(const vk::Context& ctx) : renderer(ctx, scene, scene.renderer_options()) {}
 
   vk::Frame render(float time, std::uint32_t flags) {
     paper::SceneConstants c = paper::default_constants(width, height, time);
@@ -118,4 +128,122 @@ TEST_CASE("paper scene renders are identical and animation moves only animated o
   }
   CHECK(changed > 20);
   CHECK(changed_elsewhere == 0);
+}
+
+namespace {
+
+/// One expected hit record: its group, ray, geometry, instance (-1: the shared block) and material.
+struct ExpectedHit {
+  const char* group;
+  std::uint32_t ray;
+  const char* geometry;
+  int instance;
+  const paper::MaterialRecord* material;
+};
+
+/// Record data of a record as a MaterialRecord (48 bytes), or nothing.
+std::optional<paper::MaterialRecord> material_of(const Plan& plan, const SbtRecord& r) {
+  const auto bytes = plan.record_data(r);
+  if (bytes.size() != sizeof(paper::MaterialRecord)) return std::nullopt;
+  paper::MaterialRecord m;
+  std::memcpy(&m, bytes.data(), sizeof m);
+  return m;
+}
+
+bool same_bytes(const paper::MaterialRecord& a, const paper::MaterialRecord& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("paper scene plan equals the recorded groups records and bytes") {
+  const Plan plan = compile(paper::PaperScene{});  // no device
+  const PipelinePlan& pipeline = plan.pipeline();
+  // Groups: raygen, two misses, then the used hit groups in registration order (add_object makes
+  // "<id>" for radiance and "<id>_shadow" for shadow).
+  const std::vector<std::string> groups{"raygen.rgen", "radiance.rmiss", "shadow.rmiss", "plane", "plane_shadow",
+                                        "pacman", "pacman_shadow", "julia", "julia_shadow", "mandelbulb",
+                                        "mandelbulb_shadow"};
+  REQUIRE(pipeline.groups.size() == groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) CHECK(pipeline.groups[g].name == groups[g]);
+  const std::vector<std::pair<ShaderStage, std::string>> stages{
+      {ShaderStage::raygen, "raygen.rgen"},        {ShaderStage::miss, "radiance.rmiss"},
+      {ShaderStage::miss, "shadow.rmiss"},         {ShaderStage::closest_hit, "plane.rchit"},
+      {ShaderStage::closest_hit, "shade.rchit"},   {ShaderStage::intersection, "pacman.rint"},
+      {ShaderStage::intersection, "julia.rint"},   {ShaderStage::intersection, "mandelbulb.rint"}};
+  REQUIRE(pipeline.stages.size() == stages.size());
+  for (std::size_t s = 0; s < stages.size(); ++s) {
+    CHECK(pipeline.stages[s].stage == stages[s].first);
+    CHECK(pipeline.stages[s].shader == stages[s].second);
+  }
+  CHECK(pipeline.max_recursion_depth == paper::max_depth_limit + 1);
+  CHECK(pipeline.recursion_depth_declared);
+  CHECK(pipeline.max_payload_size == sizeof(paper::RadiancePayload));
+  CHECK(pipeline.max_attribute_size == sizeof(paper::ProceduralHit));
+  CHECK(pipeline.max_record_data_size == std::array<std::uint32_t, 4>{0, 0, sizeof(paper::MaterialRecord), 0});
+
+  // Hit records: the plane's shared block, one block per Pac-man (each has its own material),
+  // then the Julia set's and the Mandelbulb's shared blocks; ray-minor inside each block.
+  const std::vector<ExpectedHit> hits{
+      {"plane", 0, "plane", -1, &paper::plane_material},
+      {"plane_shadow", 1, "plane", -1, &paper::plane_material},
+      {"pacman", 0, "pacman", 0, &paper::pacman_materials[0]},
+      {"pacman_shadow", 1, "pacman", 0, &paper::pacman_materials[0]},
+      {"pacman", 0, "pacman", 1, &paper::pacman_materials[1]},
+      {"pacman_shadow", 1, "pacman", 1, &paper::pacman_materials[1]},
+      {"julia", 0, "julia", -1, &paper::julia_material},
+      {"julia_shadow", 1, "julia", -1, &paper::julia_material},
+      {"mandelbulb", 0, "mandelbulb", -1, &paper::mandelbulb_material},
+      {"mandelbulb_shadow", 1, "mandelbulb", -1, &paper::mandelbulb_material}};
+  const auto records = plan.records(SbtRegionKind::hit);
+  REQUIRE(records.size() == hits.size());
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    CAPTURE(i);
+    const SbtRecord& r = records[i];
+    CHECK(pipeline.groups[r.group].name == hits[i].group);
+    CHECK(r.ray == hits[i].ray);
+    CHECK(plan.geometries()[r.geometry].name == hits[i].geometry);
+    CHECK(r.instance == (hits[i].instance < 0 ? no_index : std::uint32_t(hits[i].instance)));
+    const auto m = material_of(plan, r);
+    REQUIRE(m.has_value());
+    CHECK(same_bytes(*m, *hits[i].material));
+  }
+  // Raygen and miss records carry no data; TLAS instances point at their blocks.
+  CHECK(plan.records(SbtRegionKind::raygen).size() == 1);
+  CHECK(plan.records(SbtRegionKind::miss).size() == 2);
+  CHECK(plan.record_data(plan.records(SbtRegionKind::miss)[0]).empty());
+  std::vector<std::uint32_t> offsets;
+  for (const TlasInstance& i : plan.instances()) offsets.push_back(i.sbt_offset);
+  CHECK(offsets == std::vector<std::uint32_t>{0, 2, 4, 6, 8});
+  // A value: the same scene compiles to an equal plan, and a copy stays equal.
+  const Plan again = compile(paper::PaperScene{});
+  CHECK(again == plan);
+}
+
+TEST_CASE("paper scene declarations written at build time with no device equal the renderer's at run time") {
+#ifndef PAPER_GLSL_DIR
+#error "PAPER_GLSL_DIR must name the folder the build wrote the paper scene's declarations to"
+#endif
+  const std::filesystem::path dir = PAPER_GLSL_DIR;
+  TestContext t;
+  paper::PaperScene scene;
+  vk::RendererOptions options = scene.renderer_options();
+  options.declarations = nullptr;  // derive them here, on the device's side of the run
+  vk::Renderer renderer(t.ctx, scene, options);
+  std::ifstream list(dir / "files.txt");
+  REQUIRE(list.good());
+  std::vector<std::string> listed{std::istream_iterator<std::string>(list), std::istream_iterator<std::string>()};
+  const auto& stages = renderer.plan().pipeline().stages;
+  REQUIRE(listed.size() == stages.size());
+  for (const PlannedStage& stage : stages) {
+    CAPTURE(stage.shader);
+    CHECK(std::count(listed.begin(), listed.end(), glsl_file_name(stage.stage, stage.shader)) == 1);
+    const std::string written = glsl_files(dir)(stage.stage, stage.shader);
+    CHECK(!written.empty());
+    CHECK(written == stage.declarations);
+  }
+  // The example renders with the written files (renderer_options) and sees its objects.
+  Paper p(t.ctx);
+  const vk::Frame ids = p.render(0.0f, paper::flag_object_ids);
+  CHECK(at(ids, pixel_of(paper::pacman_placements[0].translation)).r == paper::pacman0_id);
 }

@@ -29,17 +29,21 @@ vk::ShaderStage stage_of(const std::filesystem::path& file) {
   return vk::ShaderStage::intersection;
 }
 
-/// The scene with its table built; a device's limits are not needed to derive declarations.
+/// The scene; no device is needed to derive declarations.
 const paper::PaperScene& paper_scene() {
-  static paper::PaperScene scene;
-  static const bool built = (scene.build(proceduray::DeviceLimits{}), true);
-  REQUIRE(built);
+  static const paper::PaperScene scene;
   return scene;
 }
 
+/// The scene compiled, once.
+const proceduray::Plan& paper_plan() {
+  static const proceduray::Plan plan = proceduray::compile(paper_scene());
+  return plan;
+}
+
 std::string declarations(std::string_view file) {
-  return proceduray::glsl_for(paper_scene().sbt(), stage_of(std::filesystem::path(file)), file) +
-         paper::extra_declarations + proceduray::glsl_aabb_consts(paper_scene().scene);
+  return proceduray::glsl_for(paper_plan(), stage_of(std::filesystem::path(file)), file) +
+         paper::extra_declarations + proceduray::glsl_aabb_consts(paper_scene());
 }
 
 std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
@@ -51,8 +55,8 @@ std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
 }  // namespace
 
 TEST_CASE("every paper scene shader compiles with its generated declarations") {
-  REQUIRE(paper_scene().sbt().plan().stages.size() == 8);  // raygen, 2 miss, 2 closest hit, 3 intersection
-  for (const proceduray::PlannedStage& stage : paper_scene().sbt().plan().stages) {
+  REQUIRE(paper_plan().pipeline().stages.size() == 8);  // raygen, 2 miss, 2 closest hit, 3 intersection
+  for (const proceduray::PlannedStage& stage : paper_plan().pipeline().stages) {
     const std::string_view file = stage.shader;
     CAPTURE(file);
     std::vector<std::uint32_t> spirv;
@@ -63,7 +67,7 @@ TEST_CASE("every paper scene shader compiles with its generated declarations") {
 }
 
 TEST_CASE("every paper shader file is a stage of the pipeline") {
-  const auto& stages = paper_scene().sbt().plan().stages;
+  const auto& stages = paper_plan().pipeline().stages;
   std::size_t on_disk = 0;
   for (const auto& entry : std::filesystem::directory_iterator(paper_shader_dir())) {
     if (entry.path().extension() == ".glsl") continue;  // included by the stages
@@ -78,7 +82,7 @@ TEST_CASE("every paper shader file is a stage of the pipeline") {
 
 TEST_CASE("paper types fit the pipeline limits") {
   static_assert(sizeof(paper::ProceduralHit) <= proceduray::max_hit_attribute_size);
-  const proceduray::PipelinePlan& plan = paper_scene().sbt().plan();
+  const proceduray::PipelinePlan& plan = paper_plan().pipeline();
   CHECK(plan.max_attribute_size == 16);
   CHECK(plan.max_payload_size == sizeof(paper::RadiancePayload));
   CHECK(sizeof(paper::RadiancePayload) == 28);  // colour, depth, object id, steps, weight
@@ -86,8 +90,8 @@ TEST_CASE("paper types fit the pipeline limits") {
   CHECK(plan.max_record_data_size[2] == 48);  // a MaterialRecord per hit record
   CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 12 + 4 * 9);  // camera, three vec3+float rows, nine knobs
   // Payload locations are ray indices: radiance 0, shadow 1 (the shaders' radiance_ray, shadow_ray).
-  CHECK(paper_scene().scene.ray_id<paper::RadiancePayload>("radiance").index() == 0);
-  CHECK(paper_scene().scene.ray_id<paper::ShadowPayload>("shadow").index() == 1);
+  CHECK(paper_scene().ray_id<paper::RadiancePayload>("radiance").index() == 0);
+  CHECK(paper_scene().ray_id<paper::ShadowPayload>("shadow").index() == 1);
   CHECK(plan.max_recursion_depth == paper::max_depth_limit + 1);  // the deepest radiance hit traces a shadow ray
 }
 

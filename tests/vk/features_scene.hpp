@@ -160,9 +160,10 @@ class FeaturesScene {
   pr::GeometryId slab() const { return m_slab; }
   pr::GeometryId floor() const { return m_floor; }
 
-  const pr::ShaderBindingTable& table(const pr::vk::Context& ctx) {
-    m_entries = std::make_unique<pr::ShaderTable>(m_scene);
-    pr::ShaderTable& t = *m_entries;
+  /// The scene with its entries.
+  const pr::Scene& table(const pr::vk::Context&) {
+    m_entries = m_scene;
+    pr::Scene& t = m_entries;
     t.add_raygen("scene.rgen");
     t.set_global_signature(m_scene.global_signature_id("global"));
     t.set_max_recursion_depth(2);
@@ -175,9 +176,8 @@ class FeaturesScene {
     }
     t.add_hit(m_primary, m_scene.hit_group_id("slab"), m_paint, Paint{slab_colour}, m_slab);
     t.add_hit(m_shadow, m_scene.hit_group_id("slab_shadow"), m_slab);
-    t.add_callable(m_tint, m_tint_args, TintArgs{m_config.tint});
-    m_table.emplace(t.build(ctx.limits()));
-    return *m_table;
+    t.add_callable_record(m_tint, m_tint_args, TintArgs{m_config.tint});
+    return m_entries;
   }
 
   static pr::vk::RendererOptions options() {
@@ -194,8 +194,7 @@ class FeaturesScene {
   pr::CallableId<TintCall> m_tint;
   pr::LocalSignatureId<Paint> m_paint;
   pr::LocalSignatureId<TintArgs> m_tint_args;
-  std::unique_ptr<pr::ShaderTable> m_entries;
-  std::optional<pr::ShaderBindingTable> m_table;
+  pr::Scene m_entries;  // m_scene and the entries of the last table() call
 };
 
 }  // namespace features_scene

@@ -40,18 +40,14 @@ constexpr PushConstantSlot<Knobs> knobs{.name = "knobs"};
 /// One ray type, no geometry (every ray misses), the global signature's push constants `push`.
 struct PushScene {
   Scene scene;
-  std::optional<ShaderTable> table;
-  std::optional<ShaderBindingTable> sbt;
   explicit PushScene(PushConstantBlock push) {
     scene.add_ray<Colour>("primary", {.miss = "push.rmiss"});
-    auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
-                                                                     {BindingKind::storage_image, 1, 0, 1, "image"}},
-                                                        .push_constants = push});
-    table.emplace(scene);
-    table->add_raygen("push.rgen");
-    table->set_global_signature(global);
+    scene.set_global_signature({.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                             {BindingKind::storage_image, 1, 0, 1, "image"}},
+                                .push_constants = push});
+    scene.add_raygen("push.rgen");
   }
-  const ShaderBindingTable& build(const vk::Context& ctx) { return sbt.emplace(table->build(ctx.limits())); }
+  const Scene& build(const vk::Context&) const { return scene; }
   static vk::RendererOptions options() { return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "push"}}; }
 };
 }  // namespace

@@ -87,20 +87,19 @@ class RendererScene {
   const pr::Scene& scene() const { return m_scene; }
   pr::GeometryId ball() const { return m_ball; }
 
-  /// Entries and the built table; `with_ball_entries = false` leaves the balls unbound.
-  const pr::ShaderBindingTable& table(const pr::vk::Context& ctx, bool with_ball_entries = true) {
-    m_entries = std::make_unique<pr::ShaderTable>(m_scene);
-    m_entries->add_raygen("scene.rgen");
-    m_entries->set_global_signature(m_scene.global_signature_id("global"));
+  /// The scene with its entries; `with_ball_entries = false` leaves the balls unbound.
+  const pr::Scene& table(const pr::vk::Context&, bool with_ball_entries = true) {
+    m_entries = m_scene;
+    m_entries.add_raygen("scene.rgen");
+    m_entries.set_global_signature(m_scene.global_signature_id("global"));
     const auto primary = m_scene.ray_id<Colour>("primary");
-    m_entries->add_hit(primary, m_scene.hit_group_id("floor"), m_paint, Paint{floor_colour}, m_floor);
+    m_entries.add_hit(primary, m_scene.hit_group_id("floor"), m_paint, Paint{floor_colour}, m_floor);
     if (with_ball_entries) {
       for (std::uint32_t i = 0; i < 2; ++i) {
-        m_entries->add_hit(primary, m_scene.hit_group_id("ball"), m_paint, Paint{ball_colours[i]}, m_ball, i);
+        m_entries.add_hit(primary, m_scene.hit_group_id("ball"), m_paint, Paint{ball_colours[i]}, m_ball, i);
       }
     }
-    m_table.emplace(m_entries->build(ctx.limits()));
-    return *m_table;
+    return m_entries;
   }
 
   static pr::vk::RendererOptions options(std::filesystem::path cache = {}) {
@@ -112,8 +111,7 @@ class RendererScene {
   pr::GeometryId m_floor;
   pr::GeometryId m_ball;
   pr::LocalSignatureId<Paint> m_paint;
-  std::unique_ptr<pr::ShaderTable> m_entries;
-  std::optional<pr::ShaderBindingTable> m_table;
+  pr::Scene m_entries;  // m_scene and the entries of the last table() call
 };
 
 }  // namespace renderer_scene

@@ -141,9 +141,9 @@ TEST_CASE("renderer renders are byte identical") {
 TEST_CASE("renderer storage buffers reach the shaders indexed by instance") {
   TestContext t;
   RendererScene s;
-  const ShaderBindingTable& table = s.table(t.ctx);
-  vk::Renderer renderer(t.ctx, table, RendererScene::options());
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
   renderer_scene::prepare(renderer, width, height);
+  const Plan& table = renderer.plan();
   // The shader indexes by gl_InstanceCustomIndexEXT: the instance's place in the TLAS.
   std::vector<renderer_scene::Tint> tints(table.instances().size(), {glm::vec4(1.0f)});
   tints[table.tlas_index(s.ball(), 1)] = {glm::vec4(0.5f)};
@@ -225,5 +225,5 @@ TEST_CASE("renderer pipeline cache is reused and a corrupt one is rebuilt") {
 TEST_CASE("renderer with unbound geometry fails at build naming the missing pairs") {
   TestContext t;
   RendererScene s;
-  CHECK_THROWS_WITH_AS(s.table(t.ctx, false), doctest::Contains("ball"), SceneError);
+  CHECK_THROWS_WITH_AS(compile(s.table(t.ctx, false)), doctest::Contains("ball"), SceneError);
 }

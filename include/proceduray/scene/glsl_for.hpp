@@ -172,8 +172,12 @@ inline std::string hit_declarations(const Scene& scene, const Plan& plan, Shader
     location = std::min(location, rec.ray);
   }
   std::string out;
-  const TypeOps* payload = one_type(payloads, shader, "payload");
-  if (stage != ShaderStage::intersection && payload != nullptr) out += glsl_ray_payload(location, *payload, "payload", true);
+  // An intersection shader sees no payload, so its uses may differ in payload type.
+  if (stage != ShaderStage::intersection) {
+    if (const TypeOps* p = one_type(payloads, shader, "payload"); p != nullptr) {
+      out += glsl_ray_payload(location, *p, "payload", true);
+    }
+  }
   if (const TypeOps* a = one_type(attributes, shader, "hit attribute"); a != nullptr) out += glsl_hit_attribute(*a, "hit");
   out += record_block(records, shader);
   if (stage == ShaderStage::closest_hit) {

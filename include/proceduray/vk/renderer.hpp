@@ -51,7 +51,8 @@ struct RendererOptions {
   std::vector<std::filesystem::path> shader_dirs;  ///< where the plan's shader names are read; default: the current folder
   /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
   std::string extra_declarations;
-  /// Replaces the generated declarations when set: the whole preamble of each shader.
+  /// Replaces the plan's declarations when set, e.g. with files written at build time (glsl_files);
+  /// extra_declarations still follow.
   std::function<std::string(ShaderStage, const std::string& name)> declarations;
   std::filesystem::path pipeline_cache;  ///< cache file; empty (default): none
   BuildOptions blas{};                   ///< BLAS builds; default compacted, fast trace
@@ -349,8 +350,8 @@ inline void Renderer::build_pipeline() {
   auto start = Clock::now();
   for (const PlannedStage& stage : plan.stages) {
     const std::string path = find_shader(stage.shader);
-    std::string preamble = m_options.declarations ? m_options.declarations(stage.stage, stage.shader)
-                                                  : stage.declarations + m_options.extra_declarations;
+    std::string preamble = (m_options.declarations ? m_options.declarations(stage.stage, stage.shader)
+                                                   : stage.declarations) + m_options.extra_declarations;
     desc.add_shader(stage.stage, compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
                                                .preamble = std::move(preamble)}));
   }

@@ -1,0 +1,96 @@
+// A scene's GLSL declarations as files, written at build time by a small program with no
+// device (compile(scene) needs none), and read back by the renderer instead of deriving them
+// again. The files are exactly Plan::declarations: one per pipeline stage.
+//
+//   // paper_glsl.cpp, built and run by proceduray_generate_scene_glsl() (cmake/ProcedurayGlsl.cmake):
+//   #include "paper_scene.hpp"
+//   #include <proceduray/scene/glsl_files.hpp>
+//   int main(int argc, char** argv) { return proceduray::glsl_files_main(paper::PaperScene{}, argc, argv); }
+//
+//   // the program that renders:
+//   options.declarations = proceduray::glsl_files("build/paper_glsl");   // throws EnvironmentError when a file is missing
+//   proceduray::glsl_file_name(proceduray::ShaderStage::closest_hit, "shade.rchit");   // "shade.rchit.closest_hit.glsl"
+#pragma once
+
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "proceduray/error.hpp"
+#include "proceduray/scene/compile.hpp"
+
+namespace proceduray {
+
+/// The file the declarations of `shader` as `stage` go to: "<shader>.<stage>.glsl", '/' made '_'.
+inline std::string glsl_file_name(ShaderStage stage, std::string_view shader) {
+  std::string name(shader);
+  for (char& c : name) {
+    if (c == '/' || c == '\\') c = '_';
+  }
+  return name + "." + to_string(stage) + ".glsl";
+}
+
+/// Writes one file per pipeline stage of `plan` into `dir` (made if missing) and returns their
+/// names; throws EnvironmentError naming a file it cannot write.
+inline std::vector<std::string> write_glsl_files(const Plan& plan, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::vector<std::string> names;
+  for (const PlannedStage& stage : plan.pipeline().stages) {
+    const std::string name = glsl_file_name(stage.stage, stage.shader);
+    std::ofstream out(dir / name, std::ios::binary | std::ios::trunc);
+    out << stage.declarations;
+    if (!out.good()) {
+      throw EnvironmentError("write_glsl_files: cannot write '" + (dir / name).string() +
+                             "'; check that the folder is writable");
+    }
+    names.push_back(name);
+  }
+  return names;
+}
+
+/// Reads the declarations write_glsl_files wrote into `dir`, for RendererOptions::declarations;
+/// the function it returns throws EnvironmentError naming a missing file and the fix.
+inline std::function<std::string(ShaderStage, const std::string&)> glsl_files(std::filesystem::path dir) {
+  return [dir = std::move(dir)](ShaderStage stage, const std::string& shader) {
+    const std::filesystem::path path = dir / glsl_file_name(stage, shader);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      throw EnvironmentError("glsl_files: cannot read '" + path.string() + "', the declarations of " +
+                             to_string(stage) + " shader \"" + shader + "\"; rebuild the target that generates "
+                             "them (proceduray_generate_scene_glsl), or drop RendererOptions::declarations");
+    }
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+}
+
+/// The body of a build-time generator: compiles `scene` and writes its declarations into the
+/// folder argv[1], then the list of files into argv[2] (default argv[1]/files.txt), which build
+/// systems track as the output. Returns 0, or 1 with a message.
+inline int glsl_files_main(const Scene& scene, int argc, char** argv) {
+  if (argc != 2 && argc != 3) {
+    std::cerr << "glsl_files_main: expected the output folder and optionally the list file; got " << (argc - 1)
+              << " arguments\n";
+    return 1;
+  }
+  try {
+    const std::vector<std::string> names = write_glsl_files(compile(scene), argv[1]);
+    const std::filesystem::path list_path = argc == 3 ? std::filesystem::path(argv[2])
+                                                      : std::filesystem::path(argv[1]) / "files.txt";
+    std::ofstream list(list_path, std::ios::trunc);
+    for (const std::string& name : names) list << name << "\n";
+    if (!list.good()) throw EnvironmentError("glsl_files_main: cannot write " + list_path.string());
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace proceduray
