@@ -1,7 +1,7 @@
 // scene/callable.hpp: callables registered by id, their records in the callable region, and
 // the callableDataEXT declarations glsl_for derives for them.
+#include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/glsl_for.hpp>
-#include <proceduray/scene/shader_table.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 #include <doctest/doctest.h>
@@ -40,8 +40,7 @@ namespace {
 /// One ray, one triangle, two callables ("tint" with record data, "noise" without).
 struct Fixture {
   Scene scene;
-  std::optional<ShaderTable> table;
-  std::optional<ShaderBindingTable> sbt;
+  std::optional<Plan> sbt;
   CallableId<TintCall> tint;
   CallableId<NoiseCall> noise;
   Fixture() {
@@ -51,11 +50,10 @@ struct Fixture {
     tint = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
     noise = scene.add_callable<NoiseCall>("noise", {.shader = "noise.rcall"});
     auto args = scene.add_local_signature<TintArgs>("tint_args");
-    table.emplace(scene);
-    table->add_raygen("main.rgen");
-    table->set_default_hit(light, group);
-    table->add_callable(tint, args, TintArgs{glm::vec4(0.5f, 1.0f, 2.0f, 0.0f)});
-    sbt.emplace(table->build(DeviceLimits{}));
+    scene.add_raygen("main.rgen");
+    scene.set_default_hit(light, group);
+    scene.add_callable_record(tint, args, TintArgs{glm::vec4(0.5f, 1.0f, 2.0f, 0.0f)});
+    sbt.emplace(compile(scene));
   }
 };
 bool has(const std::string& text, const char* piece) { return text.find(piece) != std::string::npos; }
@@ -78,18 +76,19 @@ TEST_CASE("callables register by id with their data type") {
 
 TEST_CASE("callable records fill the callable region in callable order with their data") {
   Fixture f;
-  const ShaderBindingTable& sbt = *f.sbt;
+  const Plan& sbt = *f.sbt;
   const auto records = sbt.records(SbtRegionKind::callable);
   REQUIRE(records.size() == 2);
-  const PipelinePlan& plan = sbt.plan();
+  const PipelinePlan& plan = sbt.pipeline();
   CHECK(plan.groups[records[0].group].name == "tint.rcall");
   CHECK(plan.groups[records[1].group].name == "noise.rcall");
   CHECK(plan.stages[plan.groups[records[1].group].general].stage == ShaderStage::callable);
   CHECK(plan.max_record_data_size[3] == sizeof(TintArgs));
-  const SbtRegion& region = sbt.layout().regions[3];
+  const SbtLayout layout = sbt.layout(DeviceLimits{});
+  const SbtRegion& region = layout.regions[3];
   CHECK(region.count == 2);
-  CHECK(region.stride >= sbt.layout().properties.handle_size + sizeof(TintArgs));
-  CHECK(region.offset >= sbt.layout().regions[2].offset + sbt.layout().regions[2].size);
+  CHECK(region.stride >= layout.properties.handle_size + sizeof(TintArgs));
+  CHECK(region.offset >= layout.regions[2].offset + layout.regions[2].size);
   const auto data = sbt.record_data(records[0]);
   REQUIRE(data.size() == sizeof(TintArgs));
   TintArgs back{};
@@ -102,8 +101,14 @@ TEST_CASE("callable records fill the callable region in callable order with thei
 
 TEST_CASE("a callable takes one entry") {
   Fixture f;
-  CHECK_THROWS_WITH_AS(f.table->add_callable(f.tint, f.scene.local_signature_id<TintArgs>("tint_args"), TintArgs{}),
-                       doctest::Contains("callable \"tint\" already has an entry"), DuplicateIdError);
+  const auto entries = f.scene.entries().all().size();
+  CHECK_THROWS_WITH_AS(f.scene.add_callable_record(f.tint, f.scene.local_signature_id<TintArgs>("tint_args"), TintArgs{}),
+                       doctest::Contains("Scene::add_callable_record: callable \"tint\" already has an entry"),
+                       DuplicateIdError);
+  CHECK(f.scene.entries().all().size() == entries);
+  CHECK_THROWS_AS(f.scene.add_callable_record(CallableId<TintCall>(7), f.scene.local_signature_id<TintArgs>("tint_args"),
+                                              TintArgs{}),
+                  UnknownIdError);
 }
 
 TEST_CASE("glsl_for declares callable data for callers and the callee") {

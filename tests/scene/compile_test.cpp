@@ -1,4 +1,6 @@
-#include "proceduray/scene/shader_table.hpp"
+// Tests for proceduray/scene/compile.hpp: compile(scene) lays every entry out as the Vulkan index rule
+// reads it, fills the records with their data, and refuses scenes with missing or doubled entries.
+#include "proceduray/scene/compile.hpp"
 
 #include <doctest/doctest.h>
 
@@ -17,7 +19,7 @@ namespace {
 
 // An entry whose arguments type differs from its local signature's does not compile.
 template <class Signature, class Args>
-concept CanAddHit = requires(ShaderTable t, RayId<> r, HitGroupId h, Signature s, Args a, GeometryId g) {
+concept CanAddHit = requires(Scene t, RayId<> r, HitGroupId h, Signature s, Args a, GeometryId g) {
   t.add_hit(r, h, s, a, g);
 };
 struct OtherArgs { std::uint32_t x; };
@@ -28,7 +30,7 @@ static_assert(!CanAddHit<LocalSignatureId<OtherArgs>, std::uint32_t>);
 static_assert(!CanAddHit<LocalSignatureId<>, OtherArgs>);  // an untyped id cannot carry data
 
 template <class Signature, class Args>
-concept CanAddMiss = requires(ShaderTable t, RayId<> r, Signature s, Args a) { t.add_miss(r, s, a); };
+concept CanAddMiss = requires(Scene t, RayId<> r, Signature s, Args a) { t.add_miss(r, s, a); };
 static_assert(CanAddMiss<LocalSignatureId<OtherArgs>, OtherArgs>);
 static_assert(!CanAddMiss<LocalSignatureId<OtherArgs>, TriangleRootArguments>);
 
@@ -38,10 +40,10 @@ bool bytes_equal(std::span<const std::byte> bytes, const T& value) {
 }
 
 /// Fake group handles: handle g is filled with byte g + 1.
-std::vector<std::byte> fake_handles(const ShaderBindingTable& sbt) {
-  const std::uint32_t h = sbt.layout().properties.handle_size;
-  std::vector<std::byte> out(sbt.plan().groups.size() * h);
-  for (std::size_t g = 0; g < sbt.plan().groups.size(); ++g) {
+std::vector<std::byte> fake_handles(const Plan& plan, const SbtLayout& layout) {
+  const std::uint32_t h = layout.properties.handle_size;
+  std::vector<std::byte> out(plan.pipeline().groups.size() * h);
+  for (std::size_t g = 0; g < plan.pipeline().groups.size(); ++g) {
     std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(g * h), h, std::byte(g + 1));
   }
   return out;
@@ -49,63 +51,65 @@ std::vector<std::byte> fake_handles(const ShaderBindingTable& sbt) {
 
 }  // namespace
 
-TEST_CASE("shader_table report scene resolves every ray geometry and instance") {
-  for (const DeviceLimits& limits : all_limits()) {
-    ReportScene r;
-    build_report_scene(r);
-    ShaderTable t(r.scene);
-    add_report_entries(r, t);
-    const ShaderBindingTable sbt = t.build(limits);
-    CHECK(sbt.ray_count() == 2);
-    // Triangle plane: one shared block; each fractal instance has its own entries.
-    CHECK(sbt.records(SbtRegionKind::hit).size() == 2 + 2 * (2 + 3 + 1));
-    CHECK(sbt.instances().size() == 7);
-    CHECK(sbt.instance_sbt_offset(r.plane, 0) == 0);
-    CHECK(sbt.instance_sbt_offset(r.julia, 0) == 2);
-    CHECK(sbt.instance_sbt_offset(r.julia, 1) == 4);
-    CHECK(sbt.instance_sbt_offset(r.pacman, 2) == 10);
-    CHECK(sbt.instance_sbt_offset(r.mandelbulb, 0) == 12);
-    const auto entries = t.entries();
-    std::uint32_t instance_index = 0;
-    for (GeometryId g : {r.julia, r.pacman, r.mandelbulb}) {
-      const std::string name = r.scene.geometries().name(g.index());
-      for (std::uint32_t i = 0; i < r.scene.blas_of(g).instances.size(); ++i, ++instance_index) {
-        const HitResolution radiance = sbt.resolve(r.radiance, g, i);
-        const HitResolution shadow = sbt.resolve(r.shadow, g, i);
-        CHECK(r.scene.hit_groups().name(radiance.entry->hit_group) == name);
-        CHECK(r.scene.hit_groups().name(shadow.entry->hit_group) == name + "_Shadow");
-        CHECK(radiance.entry->instance == i);
-        ProceduralRootArguments args;
-        std::memcpy(&args, t.data().data() + radiance.entry->data_offset, sizeof args);
-        CHECK(args.instance_index == instance_index);
-        CHECK(radiance.record == sbt.instance_sbt_offset(g, i) + sbt.geometry_index(g) * 2 + 0);
-        CHECK(shadow.record == radiance.record + 1);
-        CHECK(&entries[sbt.records(SbtRegionKind::hit)[radiance.record].entry] == radiance.entry);
-      }
+TEST_CASE("compile report scene resolves every ray geometry and instance") {
+  ReportScene r;
+  build_report_scene(r);
+  add_report_entries(r);
+  const Plan sbt = compile(r.scene);
+  // The plan depends on no device: every profile lays it out.
+  for (const DeviceLimits& limits : all_limits()) CHECK(sbt.layout(limits).region(SbtRegionKind::hit).count == 14);
+  CHECK(sbt.ray_count() == 2);
+  // Triangle plane: one shared block; each fractal instance has its own entries.
+  CHECK(sbt.records(SbtRegionKind::hit).size() == 2 + 2 * (2 + 3 + 1));
+  CHECK(sbt.instances().size() == 7);
+  CHECK(sbt.instance_sbt_offset(r.plane, 0) == 0);
+  CHECK(sbt.instance_sbt_offset(r.julia, 0) == 2);
+  CHECK(sbt.instance_sbt_offset(r.julia, 1) == 4);
+  CHECK(sbt.instance_sbt_offset(r.pacman, 2) == 10);
+  CHECK(sbt.instance_sbt_offset(r.mandelbulb, 0) == 12);
+  const auto entries = r.scene.entries().all();
+  std::uint32_t instance_index = 0;
+  for (GeometryId g : {r.julia, r.pacman, r.mandelbulb}) {
+    const std::string name = r.scene.geometries().name(g.index());
+    for (std::uint32_t i = 0; i < r.scene.blas_of(g).instances.size(); ++i, ++instance_index) {
+      const HitResolution radiance = sbt.resolve(r.radiance, g, i);
+      const HitResolution shadow = sbt.resolve(r.shadow, g, i);
+      CHECK(r.scene.hit_groups().name(radiance.entry->hit_group) == name);
+      CHECK(r.scene.hit_groups().name(shadow.entry->hit_group) == name + "_Shadow");
+      CHECK(radiance.entry->instance == i);
+      ProceduralRootArguments args;
+      std::memcpy(&args, r.scene.entries().data().data() + radiance.entry->data_offset, sizeof args);
+      CHECK(args.instance_index == instance_index);
+      CHECK(bytes_equal(sbt.record_data(*radiance.sbt_record), args));
+      CHECK(radiance.record == sbt.instance_sbt_offset(g, i) + sbt.geometry_index(g) * 2 + 0);
+      CHECK(shadow.record == radiance.record + 1);
+      // The plan holds its own copy of the entry the scene holds.
+      CHECK(entries[sbt.records(SbtRegionKind::hit)[radiance.record].entry] == *radiance.entry);
+      CHECK(sbt.entry(sbt.records(SbtRegionKind::hit)[radiance.record]) == radiance.entry);
     }
-    CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.plane, 0).entry->hit_group) == "Triangle_Shadow");
   }
+  CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.plane, 0).entry->hit_group) == "Triangle_Shadow");
 }
 
-TEST_CASE("shader_table D3D12 sample 22-record hit table in any insertion order") {
+TEST_CASE("compile D3D12 sample 22-record hit table in any insertion order") {
   std::mt19937 rng(22);
   std::vector<std::uint32_t> order(22);
   std::iota(order.begin(), order.end(), 0u);
   for (int trial = 0; trial < 20; ++trial) {
     D3D12Scene d;
     build_d3d12_scene(d);
-    ShaderTable t(d.scene);
-    add_d3d12_entries(d, t, order);
-    const ShaderBindingTable sbt = t.build(trial % 2 ? h100_limits : lavapipe_limits);
+    add_d3d12_entries(d, order);
+    const Plan sbt = compile(d.scene);
     const auto hit = sbt.records(SbtRegionKind::hit);
     REQUIRE(hit.size() == 22);
-    CHECK(sbt.plan().groups.size() == 1 + 2 + 8);  // raygen, 2 miss, 8 hit groups
+    CHECK(sbt.layout(trial % 2 ? h100_limits : lavapipe_limits).region(SbtRegionKind::hit).count == 22);
+    CHECK(sbt.pipeline().groups.size() == 1 + 2 + 8);  // raygen, 2 miss, 8 hit groups
     // The sample's table: [0] triangle, [1] triangle shadow, then (radiance, shadow) per AABB geometry.
-    CHECK(sbt.plan().groups[hit[0].group].name == "MyHitGroup_Triangle");
-    CHECK(sbt.plan().groups[hit[1].group].name == "MyHitGroup_Triangle_ShadowRay");
+    CHECK(sbt.pipeline().groups[hit[0].group].name == "MyHitGroup_Triangle");
+    CHECK(sbt.pipeline().groups[hit[1].group].name == "MyHitGroup_Triangle_ShadowRay");
     for (std::uint32_t a = 0; a < 10; ++a) {
-      CHECK(sbt.plan().groups[hit[2 + 2 * a].group].name == std::string(d3d12_group_of(a)));
-      CHECK(sbt.plan().groups[hit[3 + 2 * a].group].name == std::string(d3d12_group_of(a)) + "_ShadowRay");
+      CHECK(sbt.pipeline().groups[hit[2 + 2 * a].group].name == std::string(d3d12_group_of(a)));
+      CHECK(sbt.pipeline().groups[hit[3 + 2 * a].group].name == std::string(d3d12_group_of(a)) + "_ShadowRay");
       CHECK(sbt.geometry_index(d.aabbs[a]) == a);
     }
     // InstanceContributionToHitGroupIndex: 0 for the plane BLAS, 2 for the AABB BLAS.
@@ -125,37 +129,6 @@ TEST_CASE("shader_table D3D12 sample 22-record hit table in any insertion order"
       CHECK(args.aabb.primitive_type == slot);
     }
     std::shuffle(order.begin(), order.end(), rng);
-  }
-}
-
-TEST_CASE("shader_table write puts handles and record data at their offsets") {
-  for (const DeviceLimits& limits : all_limits()) {
-    D3D12Scene d;
-    build_d3d12_scene(d);
-    ShaderTable t(d.scene);
-    std::vector<std::uint32_t> order(22);
-    std::iota(order.begin(), order.end(), 0u);
-    add_d3d12_entries(d, t, order);
-    const ShaderBindingTable sbt = t.build(limits);
-    const auto handles = fake_handles(sbt);
-    std::vector<std::byte> buffer(sbt.layout().size, std::byte{0xEE});
-    sbt.write(buffer, handles);
-    const std::uint32_t h = limits.sbt.handle_size;
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      const auto kind = static_cast<SbtRegionKind>(k);
-      const auto records = sbt.records(kind);
-      for (std::uint32_t i = 0; i < records.size(); ++i) {
-        const std::uint64_t at = sbt.layout().record_offset(kind, i);
-        CHECK(buffer[at] == std::byte(records[i].group + 1));
-        CHECK(buffer[at + h - 1] == std::byte(records[i].group + 1));
-        const auto data = sbt.record_data(records[i]);
-        CHECK(std::equal(data.begin(), data.end(), buffer.begin() + static_cast<std::ptrdiff_t>(sbt.layout().data_offset(kind, i))));
-      }
-    }
-    std::vector<std::byte> small(sbt.layout().size - 1);
-    CHECK_THROWS_WITH_AS(sbt.write(small, handles), doctest::Contains("allocate layout().size"), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(sbt.write(buffer, std::span(handles).first(h)), doctest::Contains("fetch handles"),
-                         std::invalid_argument);
   }
 }
 
@@ -217,12 +190,20 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   struct Planned { Key key; bool is_default; std::uint32_t group; std::uint32_t size_class; std::uint32_t tag; };
   std::vector<Planned> plan;
   std::uint32_t tag = 1;
+  // compile() derives each shader's record block, so one shader takes one record type: the
+  // entries of hit groups tri<h> and proc<h> (shaders chit<h>, isect<h>) carry no data or, for
+  // h = 0, 1, 2, Args4, Args16 or Args40. Record sizes still vary within a scene.
+  auto binding = [&](Key key, bool is_default, std::uint32_t kind) {
+    const std::uint32_t h = pick(3);
+    const std::uint32_t size_class = pick(4) == 0 ? 0 : h + 1;
+    plan.push_back({key, is_default, groups[kind][h].index(), size_class, tag++});
+  };
   std::array<std::vector<bool>, 2> has_default{std::vector<bool>(ray_count), std::vector<bool>(ray_count)};
   for (std::uint32_t k = 0; k < 2; ++k) {
     for (std::uint32_t r = 0; r < ray_count; ++r) {
       if (pick(3) == 0) {
         has_default[k][r] = true;
-        plan.push_back({{r, no_index, no_index}, true, groups[k][pick(3)].index(), pick(4), tag++});
+        binding({r, no_index, no_index}, true, k);
       }
     }
   }
@@ -232,17 +213,17 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
     for (std::uint32_t r = 0; r < ray_count; ++r) {
       const std::uint32_t mode = pick(4);
       const bool wide = mode == 0 || mode == 1 || (mode == 3 && !has_default[kind][r]);
-      if (wide) plan.push_back({{r, g.index(), no_index}, false, groups[kind][pick(3)].index(), pick(4), tag++});
+      if (wide) binding({r, g.index(), no_index}, false, kind);
       for (std::uint32_t i = 0; i < instances; ++i) {
         if (mode == 2 || (mode == 1 && pick(2) == 0)) {
-          plan.push_back({{r, g.index(), i}, false, groups[kind][pick(3)].index(), pick(4), tag++});
+          binding({r, g.index(), i}, false, kind);
         }
       }
     }
   }
   std::shuffle(plan.begin(), plan.end(), rng);
 
-  ShaderTable t(s);
+  Scene& t = s;  // the entries, added after every entity
   t.add_raygen("rgen");
   if (pick(2)) t.add_miss(rays[0], sig4, Args4{0xABCDu});
   std::map<Key, std::uint32_t> wide_tag, specific_tag;
@@ -253,7 +234,7 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
     const HitGroupId group(p.group);
     const RayId<TestPayload> ray = rays[p.key.ray];
     const GeometryId geometry(p.key.geometry);
-    const std::uint32_t instance = p.key.instance == no_index ? ShaderTable::all_instances : p.key.instance;
+    const std::uint32_t instance = p.key.instance == no_index ? all_instances : p.key.instance;
     EntryId id;
     if (p.is_default) {
       switch (p.size_class) {
@@ -276,10 +257,11 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   }
 
   const auto limits = all_limits()[seed % 5];
-  const ShaderBindingTable sbt = t.build(limits);
+  const Plan sbt = compile(s);
+  const SbtLayout layout = sbt.layout(limits);
   const auto hit = sbt.records(SbtRegionKind::hit);
-  std::vector<std::byte> buffer(sbt.layout().size);
-  sbt.write(buffer, fake_handles(sbt));
+  std::vector<std::byte> buffer(layout.size);
+  sbt.write(layout, buffer, fake_handles(sbt, layout));
   std::vector<bool> reached(hit.size(), false);
   std::uint64_t checked = 0;
   for (GeometryId g : geometries) {
@@ -303,12 +285,12 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
         CHECK(hit[record].entry == expected_entry);
         const HitResolution res = sbt.resolve(rays[r], g, i);
         CHECK(res.record == record);
-        CHECK(res.entry == &t.entries()[expected_entry]);
-        CHECK(sbt.plan().groups[hit[record].group].hit_group.index() == t.entries()[expected_entry].hit_group);
+        CHECK(*res.entry == t.entries().all()[expected_entry]);
+        CHECK(sbt.pipeline().groups[hit[record].group].hit_group.index() == t.entries().all()[expected_entry].hit_group);
         // The bytes the GPU reads at that record: the handle of the bound group, then its data.
-        const std::uint64_t at = sbt.layout().record_offset(SbtRegionKind::hit, record);
+        const std::uint64_t at = layout.record_offset(SbtRegionKind::hit, record);
         CHECK(buffer[at] == std::byte(hit[record].group + 1));
-        const auto data = t.data(EntryId(expected_entry));
+        const auto data = t.entries().data(t.entries().all()[expected_entry]);
         if (!data.empty()) {
           std::uint32_t written = 0;
           std::memcpy(&written, buffer.data() + at + limits.sbt.handle_size, 4);
@@ -321,16 +303,16 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   }
   // No record is unreachable: the table holds no more than the scene needs.
   CHECK(std::count(reached.begin(), reached.end(), false) == 0);
-  check_layout_invariants(sbt.layout(), {{{1, sbt.plan().max_record_data_size[0]},
-                                          {ray_count, sbt.plan().max_record_data_size[1]},
-                                          {static_cast<std::uint32_t>(hit.size()), sbt.plan().max_record_data_size[2]},
-                                          {}}});
+  check_layout_invariants(layout, {{{1, sbt.pipeline().max_record_data_size[0]},
+                                    {ray_count, sbt.pipeline().max_record_data_size[1]},
+                                    {static_cast<std::uint32_t>(hit.size()), sbt.pipeline().max_record_data_size[2]},
+                                    {}}});
   return checked;
 }
 
 }  // namespace
 
-TEST_CASE("shader_table 1000 random scenes resolve every ray geometry and instance to its entry") {
+TEST_CASE("compile 1000 random scenes resolve every ray geometry and instance to its entry") {
   std::uint64_t checked = 0;
   for (std::uint32_t seed = 0; seed < 1000; ++seed) {
     INFO("seed " << seed);
@@ -339,106 +321,62 @@ TEST_CASE("shader_table 1000 random scenes resolve every ray geometry and instan
   CHECK(checked > 10000);
 }
 
-TEST_CASE("shader_table missing pairs are listed unless a default entry exists") {
+TEST_CASE("compile missing pairs are listed unless a default entry exists") {
   ReportScene r;
   build_report_scene(r);
-  ShaderTable t(r.scene);
+  Scene& t = r.scene;
   t.add_raygen("Raygen");
   const auto sig = r.scene.local_signature_id<TriangleRootArguments>("Triangle");
   t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), sig, TriangleRootArguments{}, r.plane);
   t.add_hit(r.radiance, r.scene.hit_group_id("Julia"), r.julia);
   t.add_hit(r.shadow, r.scene.hit_group_id("Julia_Shadow"), r.julia, 1);
-  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("(\"Shadow\", \"GlobalGeometry\", instances without own entries)"),
+  CHECK_THROWS_WITH_AS(compile(t),
+                       doctest::Contains("compile: 6 hit records have no entry (ray, geometry, instance): "
+                                         "(\"Shadow\", \"GlobalGeometry\", instances without own entries)"),
                        MissingEntryError);
-  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("(\"Shadow\", \"Julia\", instances without own entries)"),
+  CHECK_THROWS_WITH_AS(compile(t), doctest::Contains("(\"Shadow\", \"Julia\", instances without own entries)"),
                        MissingEntryError);
-  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("(\"Radiance\", \"Pacman\""), MissingEntryError);
-  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("set_default_hit"), MissingEntryError);
+  CHECK_THROWS_WITH_AS(compile(t), doctest::Contains("(\"Radiance\", \"Pacman\""), MissingEntryError);
+  CHECK_THROWS_WITH_AS(compile(t), doctest::Contains("add them with Scene::add_hit or declare Scene::set_default_hit"),
+                       MissingEntryError);
   t.set_default_hit(r.shadow, r.scene.hit_group_id("Triangle_Shadow"));
   t.set_default_hit(r.shadow, r.scene.hit_group_id("Pacman_Shadow"));
   t.set_default_hit(r.radiance, r.scene.hit_group_id("Pacman"));
-  const ShaderBindingTable sbt = t.build(lavapipe_limits);
+  const Plan sbt = compile(t);
   CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.mandelbulb, 0).entry->hit_group) == "Pacman_Shadow");
   CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.julia, 1).entry->hit_group) == "Julia_Shadow");
   CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.julia, 0).entry->hit_group) == "Pacman_Shadow");
   CHECK(r.scene.hit_groups().name(sbt.resolve(r.shadow, r.plane, 0).entry->hit_group) == "Triangle_Shadow");
   CHECK_THROWS_WITH_AS(t.set_default_hit(r.shadow, r.scene.hit_group_id("Julia_Shadow")),
-                       doctest::Contains("already has a default procedural hit group"), DuplicateIdError);
+                       doctest::Contains("Scene::set_default_hit: ray \"Shadow\" already has a default procedural hit group"),
+                       DuplicateIdError);
 }
 
-TEST_CASE("shader_table duplicate bindings name both entries") {
+TEST_CASE("compile duplicate bindings name both entries") {
   ReportScene r;
   build_report_scene(r);
-  ShaderTable t(r.scene);
-  add_report_entries(r, t);
+  add_report_entries(r);
   const auto sig = r.scene.local_signature_id<ProceduralRootArguments>("Procedural");
-  t.add_hit(r.radiance, r.scene.hit_group_id("Pacman"), sig, ProceduralRootArguments{}, r.pacman, 1);
-  CHECK_THROWS_WITH_AS(t.build(lavapipe_limits), doctest::Contains("both bind ray \"Radiance\" on instance 1 of geometry \"Pacman\""),
+  r.scene.add_hit(r.radiance, r.scene.hit_group_id("Pacman"), sig, ProceduralRootArguments{}, r.pacman, 1);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("compile: entries #"), DuplicateIdError);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("both bind ray \"Radiance\" on instance 1 of geometry \"Pacman\""),
                        DuplicateIdError);
-  ShaderTable u(r.scene);
-  add_report_entries(r, u);
-  u.add_hit(r.shadow, r.scene.hit_group_id("Triangle_Shadow"), r.plane);
-  CHECK_THROWS_WITH_AS(u.build(lavapipe_limits), doctest::Contains("on all instances of geometry \"GlobalGeometry\""),
+  ReportScene u;
+  build_report_scene(u);
+  add_report_entries(u);
+  u.scene.add_hit(u.shadow, u.scene.hit_group_id("Triangle_Shadow"), u.plane);
+  CHECK_THROWS_WITH_AS(compile(u.scene), doctest::Contains("on all instances of geometry \"GlobalGeometry\""),
                        DuplicateIdError);
-  ShaderTable v(r.scene);
-  v.add_miss(r.radiance, sig, ProceduralRootArguments{});
-  CHECK_THROWS_WITH_AS(v.add_miss(r.radiance, sig, ProceduralRootArguments{}), doctest::Contains("already has a miss entry"),
+  ReportScene w;
+  build_report_scene(w);
+  Scene& v = w.scene;
+  v.add_miss(w.radiance, sig, ProceduralRootArguments{});
+  CHECK_THROWS_WITH_AS(v.add_miss(w.radiance, sig, ProceduralRootArguments{}),
+                       doctest::Contains("Scene::add_miss: ray \"Radiance\" already has a miss entry"),
                        DuplicateIdError);
 }
 
-TEST_CASE("shader_table hit group kind must match the geometry") {
-  ReportScene r;
-  build_report_scene(r);
-  ShaderTable t(r.scene);
-  CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), r.pacman),
-                       doctest::Contains("procedural geometry \"Pacman\" bound to triangles hit group \"Triangle\", which has no intersection shader"),
-                       HitGroupKindError);
-  CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Pacman"), r.plane),
-                       doctest::Contains("bind a triangles hit group"), HitGroupKindError);
-  CHECK(t.entries().empty());
-}
-
-TEST_CASE("shader_table string ids are checked at run time") {
-  ReportScene r;
-  build_report_scene(r);
-  ShaderTable t(r.scene);
-  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", TriangleRootArguments{}, "Pacman"),
-                       doctest::Contains("local signature \"Procedural\" has record data type"), TypeMismatchError);
-  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacmam", "Procedural", ProceduralRootArguments{}, "Pacman"),
-                       doctest::Contains("unknown hit group id \"Pacmam\"; nearest known ids: \"Pacman\""), UnknownIdError);
-  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", ProceduralRootArguments{}, "Pacman", 3),
-                       doctest::Contains("instance 3 of geometry \"Pacman\" does not exist (it has 3 instances)"), SceneError);
-  CHECK_THROWS_AS(t.add_hit(r.radiance, HitGroupId(), r.pacman), UnknownIdError);
-}
-
-TEST_CASE("shader_table device limits: instances recursion attributes stride") {
-  ReportScene r;
-  build_report_scene(r);
-  ShaderTable t(r.scene);
-  add_report_entries(r, t);
-  DeviceLimits limits = lavapipe_limits;
-  limits.max_instance_count = 6;
-  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("the scene has 7 instances, the device allows 6"), DeviceLimitError);
-  limits = lavapipe_limits;
-  limits.max_ray_recursion_depth = 2;
-  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("max recursion depth 3 exceeds the device's maxRayRecursionDepth 2"),
-                       DeviceLimitError);
-  limits = lavapipe_limits;
-  limits.max_ray_hit_attribute_size = 8;
-  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("reports 16 bytes of hit attributes, the device allows 8"),
-                       DeviceLimitError);
-  limits = lavapipe_limits;
-  limits.sbt.max_stride = 64;  // 32 + 32 bytes of ProceduralRootArguments... exceeds
-  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("exceeds the device's maxShaderGroupStride 64"), std::length_error);
-  limits = lavapipe_limits;
-  limits.max_geometry_count = 0;
-  CHECK_THROWS_WITH_AS(t.build(limits), doctest::Contains("maxGeometryCount"), DeviceLimitError);
-  ShaderTable empty(r.scene);
-  CHECK_THROWS_WITH_AS(empty.build(lavapipe_limits), doctest::Contains("no raygen entry"), SceneError);
-  CHECK_THROWS_AS(t.set_max_recursion_depth(0), SceneError);
-}
-
-TEST_CASE("shader_table one block per BLAS and the instance limit") {
+TEST_CASE("compile one block per BLAS and the instance limit") {
   Scene s;
   const auto ray = s.add_ray<TestPayload>("r", {.miss = "m"});
   const auto group = s.add_hit_group("g", {.closest_hit = "c"});
@@ -446,11 +384,20 @@ TEST_CASE("shader_table one block per BLAS and the instance limit") {
   // Three one-instance BLASes: offsets 0, 1, 2; a device allowing 2 instances refuses the scene.
   std::vector<GeometryId> geometries;
   for (const char* name : {"g0", "g1", "g2"}) geometries.push_back(s.add_geometry(name, GeometryDesc::triangles(tri)));
-  ShaderTable t(s);
-  t.add_raygen("rgen");
-  for (GeometryId g : geometries) t.add_hit(ray, group, g);
-  CHECK(t.build(lavapipe_limits).instance_sbt_offset(s.geometry_id("g2"), 0) == 2);
+  s.add_raygen("rgen");
+  for (GeometryId g : geometries) s.add_hit(ray, group, g);
+  const Plan plan = compile(s);
+  CHECK(plan.instance_sbt_offset(s.geometry_id("g2"), 0) == 2);
   DeviceLimits limits = lavapipe_limits;
   limits.max_instance_count = 2;
-  CHECK_THROWS_AS(t.build(limits), DeviceLimitError);
+  CHECK_THROWS_AS(plan.layout(limits), DeviceLimitError);
+}
+
+TEST_CASE("compile refuses a scene without a raygen entry") {
+  ReportScene r;
+  build_report_scene(r);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("compile: no raygen entry; add one with Scene::add_raygen"),
+                       SceneError);
+  r.scene.add_raygen("Raygen");
+  CHECK_THROWS_AS(compile(r.scene), MissingEntryError);  // the next check: the hit records
 }

@@ -1,6 +1,6 @@
 // scene/glsl_for.hpp: declarations derived from the scene, per shader and stage.
+#include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/glsl_for.hpp>
-#include <proceduray/scene/shader_table.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -50,13 +50,12 @@ constexpr StorageSlot<Other> others{.binding = 3, .set = 1, .name = "others"};
 enum class Misuse { none, two_payloads, two_records };
 
 /// Two rays (light, shadow), a procedural ball, a triangle floor. two_payloads binds the ball's
-/// closest hit to the shadow ray too; two_records gives the ball's shadow entry another record type.
-struct Fixture {
+/// closest hit to the shadow ray too; two_records gives the ball's shadow entry another record type:
+/// compile() refuses both.
+struct Scenes {
   Scene scene;
-  std::optional<ShaderTable> table;
-  std::optional<ShaderBindingTable> sbt;
 
-  explicit Fixture(Misuse misuse = Misuse::none) {
+  explicit Scenes(Misuse misuse = Misuse::none) {
     const bool second_payload = misuse == Misuse::two_payloads;
     auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
     auto shadow = scene.add_ray<Shadow>("shadow ray", {.miss = "shadow.rmiss"});
@@ -74,20 +73,23 @@ struct Fixture {
     auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                                                      {BindingKind::storage_image, 1, 0, 1, "image"},
                                                                      globals, others}});
-    table.emplace(scene);
-    table->add_raygen("main.rgen");
-    table->set_global_signature(global);
-    table->add_hit(light, scene.hit_group_id("ball"), material, Material{}, ball);
+    scene.add_raygen("main.rgen");
+    scene.set_global_signature(global);
+    scene.add_hit(light, scene.hit_group_id("ball"), material, Material{}, ball);
     if (misuse == Misuse::two_records) {
-      table->add_hit(shadow, scene.hit_group_id("ball_shadow"), other, Other{}, ball);
+      scene.add_hit(shadow, scene.hit_group_id("ball_shadow"), other, Other{}, ball);
     } else {
-      table->add_hit(shadow, scene.hit_group_id("ball_shadow"), material, Material{}, ball);
+      scene.add_hit(shadow, scene.hit_group_id("ball_shadow"), material, Material{}, ball);
     }
-    table->add_hit(light, scene.hit_group_id("floor"), other, Other{}, floor);
-    table->add_hit(shadow, scene.hit_group_id("floor_shadow"), floor);
-    sbt.emplace(table->build(DeviceLimits{}));
+    scene.add_hit(light, scene.hit_group_id("floor"), other, Other{}, floor);
+    scene.add_hit(shadow, scene.hit_group_id("floor_shadow"), floor);
   }
-  std::string operator()(ShaderStage stage, const char* shader) const { return glsl_for(*sbt, stage, shader); }
+};
+
+/// The well-formed scene, compiled.
+struct Fixture : Scenes {
+  Plan plan = compile(scene);
+  std::string operator()(ShaderStage stage, const char* shader) const { return glsl_for(plan, stage, shader); }
 };
 
 bool has(const std::string& text, const char* piece) { return text.find(piece) != std::string::npos; }
@@ -132,18 +134,33 @@ TEST_CASE("glsl_for declares payloads by stage") {
 }
 
 TEST_CASE("glsl_for names a shader used with two payload types") {
-  const Fixture f(Misuse::two_payloads);
-  CHECK_THROWS_WITH_AS(f(ShaderStage::closest_hit, "ball.rchit"),
-                       doctest::Contains("shader \"ball.rchit\" is used with two payload types, Light and Shadow"),
+  const Scenes f(Misuse::two_payloads);
+  CHECK_THROWS_WITH_AS(compile(f.scene),
+                       doctest::Contains("compile: shader \"ball.rchit\" is used with two payload types, Light and Shadow"),
                        SceneError);
 }
 
 TEST_CASE("glsl_for names a shader used with two record types") {
   CHECK_NOTHROW(Fixture()(ShaderStage::intersection, "ball.rint"));
-  const Fixture f(Misuse::two_records);
-  CHECK_THROWS_WITH_AS(f(ShaderStage::intersection, "ball.rint"),
-                       doctest::Contains("shader \"ball.rint\" is used with two record data types, Material and Other"),
+  const Scenes f(Misuse::two_records);
+  CHECK_THROWS_WITH_AS(compile(f.scene),
+                       doctest::Contains("compile: shader \"ball.rint\" is used with two record data types, Material and Other"),
                        SceneError);
+}
+
+TEST_CASE("glsl_for refuses a shader the plan does not use as that stage") {
+  const Fixture f;
+  CHECK_THROWS_WITH_AS(f(ShaderStage::closest_hit, "nope.rchit"),
+                       doctest::Contains("glsl_for: the plan has no closest_hit stage \"nope.rchit\" (its stages: \"main.rgen\""),
+                       UnknownIdError);
+  CHECK_THROWS_WITH_AS(f(ShaderStage::miss, "ball.rchit"), doctest::Contains("the plan has no miss stage \"ball.rchit\""),
+                       UnknownIdError);
+  // The declarations are the plan's: the same text from a copy, after the scene is gone.
+  std::optional<Fixture> scoped(std::in_place);
+  const Plan copy = scoped->plan;
+  const std::string text = (*scoped)(ShaderStage::closest_hit, "ball.rchit");
+  scoped.reset();
+  CHECK(glsl_for(copy, ShaderStage::closest_hit, "ball.rchit") == text);
 }
 
 namespace glsl_for_test {
@@ -162,16 +179,15 @@ TEST_CASE("glsl_for declares a named push constant block in every stage") {
   scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 1, 2}}));
   auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}},
                                                       .push_constants = knobs});
-  ShaderTable table(scene);
-  table.add_raygen("main.rgen");
-  table.set_global_signature(global);
-  table.set_default_hit(light, group);
-  const ShaderBindingTable sbt = table.build(DeviceLimits{});
+  scene.add_raygen("main.rgen");
+  scene.set_global_signature(global);
+  scene.set_default_hit(light, group);
+  const Plan sbt = compile(scene);
   for (const auto& [stage, shader] : {std::pair{ShaderStage::raygen, "main.rgen"}, std::pair{ShaderStage::miss, "sky.rmiss"},
                                       std::pair{ShaderStage::closest_hit, "floor.rchit"}}) {
     const std::string glsl = glsl_for(sbt, stage, shader);
     CHECK(has(glsl, "struct Knobs {"));
-    CHECK(has(glsl, "layout(push_constant, scalar) uniform KnobsPush {"));
+    CHECK(has(glsl, "layout(push_constant, scalar) uniform KnobsPushConstants {"));
     CHECK(has(glsl, "} knobs;"));
   }
 }

@@ -1,7 +1,7 @@
 // scene/layers.hpp: named layers as instance-mask bits, and the scene's masks per instance.
+#include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/glsl_for.hpp>
 #include <proceduray/scene/layers.hpp>
-#include <proceduray/scene/shader_table.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 #include <doctest/doctest.h>
@@ -64,11 +64,10 @@ TEST_CASE("scene layers name the operation and reach the shaders and the instanc
   one.mask = scene.layer_mask({"casts shadow"});
   auto h = scene.add_geometry("one", one);
   auto plain = scene.add_geometry("plain", GeometryDesc::triangles(mesh));
-  ShaderTable table(scene);
-  table.add_raygen("main.rgen");
-  table.set_default_hit(light, group);
-  table.set_default_hit(scene.ray_id<layers_test::Light>("shadow"), group);
-  const ShaderBindingTable sbt = table.build(DeviceLimits{});
+  scene.add_raygen("main.rgen");
+  scene.set_default_hit(light, group);
+  scene.set_default_hit(scene.ray_id<layers_test::Light>("shadow"), group);
+  const Plan sbt = compile(scene);
   const auto instances = sbt.instances();
   CHECK(instances[sbt.tlas_index(g, 0)].mask == 0x01);
   CHECK(instances[sbt.tlas_index(g, 1)].mask == 0x03);

@@ -2,6 +2,8 @@
 // (hit groups per ray, the geometry, the entries), and a bad object changes nothing.
 #include "proceduray/scene/object.hpp"
 
+#include "proceduray/scene/compile.hpp"
+
 #include "scene_fixtures.hpp"
 
 #include <doctest/doctest.h>
@@ -26,11 +28,10 @@ PROCEDURAY_STRUCT(Material, scalar, albedo, id);
 /// Two rays and a material signature, as every test here starts.
 struct Rays {
   Scene scene;
-  ShaderTable table{scene};
   RayId<Payload> radiance = scene.add_ray<Payload>("radiance", {.miss = "radiance.rmiss"});
   RayId<Occlusion> shadow = scene.add_ray<Occlusion>("shadow", {.miss = "shadow.rmiss"});
   LocalSignatureId<Material> material = scene.add_local_signature<Material>("material");
-  Rays() { table.add_raygen("raygen.rgen"); }
+  Rays() { scene.add_raygen("raygen.rgen"); }
 };
 
 /// A one-triangle floor.
@@ -48,13 +49,13 @@ ObjectDesc spheres_desc(const Rays& r) {
 }
 
 /// What a hit record holds, by name: group, ray, geometry, instance and material id.
-std::vector<std::string> describe(const Scene& s, const ShaderBindingTable& sbt) {
+std::vector<std::string> describe(const Scene& s, const Plan& sbt) {
   std::vector<std::string> out;
   for (const SbtRecord& rec : sbt.records(SbtRegionKind::hit)) {
     Material m{};
     const auto data = sbt.record_data(rec);
     if (data.size() == sizeof(Material)) std::memcpy(&m, data.data(), sizeof m);
-    out.push_back(sbt.plan().groups[rec.group].name + " " + s.rays().name(rec.ray) + " " +
+    out.push_back(sbt.pipeline().groups[rec.group].name + " " + s.rays().name(rec.ray) + " " +
                   s.geometries().name(rec.geometry) + " " +
                   (rec.instance == no_index ? std::string("*") : std::to_string(rec.instance)) + " " +
                   (data.empty() ? std::string("-") : std::to_string(m.id)));
@@ -79,16 +80,16 @@ TEST_CASE("add_object registers what the hand-written hit groups geometry and en
   const HitGroupId spheres = by_hand.scene.hit_group_id("spheres");
   const HitGroupId spheres_shadow = by_hand.scene.hit_group_id("spheres_shadow");
   for (std::uint32_t i = 0; i < 2; ++i) {
-    by_hand.table.add_hit(by_hand.radiance, spheres, by_hand.material, i ? blue : red, hs, i);
-    by_hand.table.add_hit(by_hand.shadow, spheres_shadow, by_hand.material, i ? blue : red, hs, i);
+    by_hand.scene.add_hit(by_hand.radiance, spheres, by_hand.material, i ? blue : red, hs, i);
+    by_hand.scene.add_hit(by_hand.shadow, spheres_shadow, by_hand.material, i ? blue : red, hs, i);
   }
-  by_hand.table.add_hit(by_hand.radiance, by_hand.scene.hit_group_id("floor"), by_hand.material, grey, hf);
-  by_hand.table.add_hit(by_hand.shadow, by_hand.scene.hit_group_id("floor_shadow"), by_hand.material, grey, hf);
+  by_hand.scene.add_hit(by_hand.radiance, by_hand.scene.hit_group_id("floor"), by_hand.material, grey, hf);
+  by_hand.scene.add_hit(by_hand.shadow, by_hand.scene.hit_group_id("floor_shadow"), by_hand.material, grey, hf);
 
   Rays objects;
-  const GeometryId os = add_object<Hit>(objects.scene, objects.table, "spheres", spheres_desc(objects), objects.material,
+  const GeometryId os = add_object<Hit>(objects.scene, "spheres", spheres_desc(objects), objects.material,
                                         {red, blue});
-  const GeometryId of = add_object(objects.scene, objects.table, "floor",
+  const GeometryId of = add_object(objects.scene, "floor",
                                    {.geometry = GeometryDesc::triangles(triangle()),
                                     .closest_hit = {{objects.radiance, "floor.rchit"}}},
                                    objects.material, {grey});
@@ -99,8 +100,8 @@ TEST_CASE("add_object registers what the hand-written hit groups geometry and en
   CHECK(objects.scene.hit_group("spheres_shadow").desc.intersection == "sphere.rint");
   CHECK(objects.scene.hit_group("spheres").attribute_size == sizeof(Hit));
   CHECK(objects.scene.hit_group("floor").desc.kind == HitGroupKind::triangles);
-  const ShaderBindingTable a = by_hand.table.build(test::lavapipe_limits);
-  const ShaderBindingTable b = objects.table.build(test::lavapipe_limits);
+  const Plan a = compile(by_hand.scene);
+  const Plan b = compile(objects.scene);
   const std::vector<std::string> records = describe(objects.scene, b);
   CHECK(records == describe(by_hand.scene, a));
   CHECK(records == std::vector<std::string>{"spheres radiance spheres 0 1", "spheres_shadow shadow spheres 0 1",
@@ -110,10 +111,10 @@ TEST_CASE("add_object registers what the hand-written hit groups geometry and en
 
 TEST_CASE("add_object with one record binds it to every instance and without one binds no data") {
   Rays r;
-  add_object<Hit>(r.scene, r.table, "spheres", spheres_desc(r), r.material, {Material{{}, 7}});
-  add_object<Hit>(r.scene, r.table, "bare",
+  add_object<Hit>(r.scene, "spheres", spheres_desc(r), r.material, {Material{{}, 7}});
+  add_object<Hit>(r.scene, "bare",
                   {.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "bare.rint"});
-  const ShaderBindingTable sbt = r.table.build(test::lavapipe_limits);
+  const Plan sbt = compile(r.scene);
   CHECK(describe(r.scene, sbt) == std::vector<std::string>{"spheres radiance spheres * 7",
                                                            "spheres_shadow shadow spheres * 7", "bare radiance bare * -",
                                                            "bare_shadow shadow bare * -"});
@@ -122,75 +123,72 @@ TEST_CASE("add_object with one record binds it to every instance and without one
 
 TEST_CASE("add_object any-hit shaders go to the listed ray only") {
   Rays r;
-  add_object(r.scene, r.table, "leaves", {.geometry = GeometryDesc::triangles(triangle()),
+  add_object(r.scene, "leaves", {.geometry = GeometryDesc::triangles(triangle()),
                                           .any_hit = {{r.shadow, "alpha.rahit"}}});
   CHECK(r.scene.hit_group("leaves").desc.any_hit.empty());
   CHECK(r.scene.hit_group("leaves_shadow").desc.any_hit == "alpha.rahit");
 }
 
-TEST_CASE("add_object rejects a bad object before changing the scene or the table") {
+TEST_CASE("add_object rejects a bad object before changing the scene or its entries") {
   Rays r;
-  add_object<Hit>(r.scene, r.table, "spheres", spheres_desc(r), r.material, {Material{}});
+  add_object<Hit>(r.scene, "spheres", spheres_desc(r), r.material, {Material{}});
   const auto groups = r.scene.hit_groups().size();
   const auto geometries = r.scene.geometries().size();
-  const auto entries = r.table.entries().size();
+  const auto entries = r.scene.entries().all().size();
   auto unchanged = [&] {
     CHECK(r.scene.hit_groups().size() == groups);
     CHECK(r.scene.geometries().size() == geometries);
-    CHECK(r.table.entries().size() == entries);
+    CHECK(r.scene.entries().all().size() == entries);
   };
   const Material m{};
   // Three records for two instances.
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "other", spheres_desc(r), r.material, {m, m, m}),
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "other", spheres_desc(r), r.material, {m, m, m}),
                        doctest::Contains("object \"other\" has 3 records for 2 instances"), SceneError);
   unchanged();
   // The id is taken.
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "spheres", spheres_desc(r), r.material, {m}),
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "spheres", spheres_desc(r), r.material, {m}),
                        doctest::Contains("geometry \"spheres\" already exists"), DuplicateIdError);
   unchanged();
   // Attributes on triangles.
   const ObjectDesc floor{.geometry = GeometryDesc::triangles(triangle())};
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "floor", floor, r.material, {m}),
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "floor", floor, r.material, {m}),
                        doctest::Contains("call add_object<void>"), HitGroupKindError);
   unchanged();
   // An intersection shader on triangles.
   ObjectDesc clipped = floor;
   clipped.intersection = "clip.rint";
-  CHECK_THROWS_AS(add_object(r.scene, r.table, "floor", clipped, r.material, {m}), HitGroupKindError);
+  CHECK_THROWS_AS(add_object(r.scene, "floor", clipped, r.material, {m}), HitGroupKindError);
   unchanged();
   // A ray listed twice.
   ObjectDesc twice = spheres_desc(r);
   twice.closest_hit.push_back({r.radiance, "other.rchit"});
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "twice", twice, r.material, {m}),
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "twice", twice, r.material, {m}),
                        doctest::Contains("lists ray \"radiance\" twice in closest_hit"), DuplicateIdError);
   unchanged();
   // A ray of no scene.
   ObjectDesc stray = spheres_desc(r);
   stray.closest_hit = {{RayId<>(5), "x.rchit"}};
-  CHECK_THROWS_AS(add_object<Hit>(r.scene, r.table, "stray", stray, r.material, {m}), UnknownIdError);
+  CHECK_THROWS_AS(add_object<Hit>(r.scene, "stray", stray, r.material, {m}), UnknownIdError);
   unchanged();
   // A signature and no record.
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "empty", spheres_desc(r), r.material, {}),
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "empty", spheres_desc(r), r.material, {}),
                        doctest::Contains("has a local signature but no record"), SceneError);
   unchanged();
   // Bad geometry: named by the object's id.
   ObjectDesc nothing = spheres_desc(r);
   nothing.geometry.aabbs.clear();
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, r.table, "nothing", nothing, r.material, {m}),
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "nothing", nothing, r.material, {m}),
                        doctest::Contains("geometry \"nothing\" is procedural with no AABB"), InvalidGeometryError);
   unchanged();
-  // A table of another scene.
-  Scene other;
-  ShaderTable other_table(other);
-  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, other_table, "lost", spheres_desc(r), r.material, {m}),
-                       doctest::Contains("the shader table belongs to another scene"), SceneError);
+  // A signature of no scene.
+  CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "lost", spheres_desc(r), LocalSignatureId<Material>(9), {m}),
+                       doctest::Contains("add_object: object \"lost\" signature"), UnknownIdError);
   unchanged();
 }
 
 TEST_CASE("add_object needs the rays first") {
   Scene scene;
-  ShaderTable table(scene);
   const ObjectDesc early{.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "x.rint"};
-  CHECK_THROWS_WITH_AS(add_object(scene, table, "early", early), doctest::Contains("register the rays first"), SceneError);
+  CHECK_THROWS_WITH_AS(add_object(scene, "early", early), doctest::Contains("register the rays first"), SceneError);
   CHECK(scene.geometries().size() == 0);
 }

@@ -1,5 +1,7 @@
 #include "proceduray/scene/sbt_printer.hpp"
 
+#include "proceduray/scene/compile.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cstdlib>
@@ -20,12 +22,13 @@ TEST_CASE("sbt_printer small scene prints the exact table") {
   const auto plane = s.add_geometry("Plane", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}},
                                                                      {identity_transform(), identity_transform()}));
   const auto sig = s.add_local_signature<ShadowPayload>("Color");
-  ShaderTable t(s);
+  Scene& t = s;
   t.add_raygen("rgen");
   t.add_hit(radiance, tri, sig, ShadowPayload{1}, plane);
   t.add_hit(shadow, tri_shadow, plane);
   t.add_hit(radiance, tri, sig, ShadowPayload{2}, plane, 1);
-  const std::string text = format_sbt(t.build(lavapipe_limits));
+  const Plan plan = compile(t);
+  const std::string text = format_sbt(plan, plan.layout(lavapipe_limits));
   const std::string expected =
       "SBT: 288 bytes; handle 32, handle alignment 16, base alignment 32; sbtRecordStride (ray types) 2\n"
       "region   | offset | stride | size | records\n"
@@ -55,19 +58,19 @@ TEST_CASE("sbt_printer small scene prints the exact table") {
 TEST_CASE("sbt_printer report scene lists every record and can be truncated") {
   ReportScene r;
   build_report_scene(r);
-  ShaderTable t(r.scene);
-  add_report_entries(r, t);
-  const ShaderBindingTable sbt = t.build(h100_limits);
-  const std::string text = format_sbt(sbt);
+  add_report_entries(r);
+  const Plan sbt = compile(r.scene);
+  const SbtLayout layout = sbt.layout(h100_limits);
+  const std::string text = format_sbt(sbt, layout);
   CHECK(text.find("hit    |     13 |") != std::string::npos);
   CHECK(text.find("Mandelbulb_Shadow") != std::string::npos);
   CHECK(text.find("base alignment 64") != std::string::npos);
-  const std::string short_text = format_sbt(sbt, 2);
+  const std::string short_text = format_sbt(sbt, layout, 2);
   CHECK(short_text.find("(12 more)") != std::string::npos);
   CHECK(short_text.find("(5 more)") != std::string::npos);
   // PROCEDURAY_TEST_OUTPUT (set by CTest and Meson) receives the report scene's table for the docs.
   if (const char* out = std::getenv("PROCEDURAY_TEST_OUTPUT")) {
     std::filesystem::create_directories(out);
-    std::ofstream(std::filesystem::path(out) / "report_scene_sbt.txt") << format_sbt(t.build(lavapipe_limits));
+    std::ofstream(std::filesystem::path(out) / "report_scene_sbt.txt") << format_sbt(sbt, sbt.layout(lavapipe_limits));
   }
 }

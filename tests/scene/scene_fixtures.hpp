@@ -12,25 +12,26 @@
 #include <string>
 #include <vector>
 
+#include "proceduray/scene/compile.hpp"
 #include "proceduray/scene/device_limits.hpp"
+#include "proceduray/scene/plan.hpp"
 #include "proceduray/scene/sbt_layout.hpp"
 #include "proceduray/scene/scene.hpp"
-#include "proceduray/scene/shader_table.hpp"
 #include "proceduray/shader/field_list.hpp"
 
 namespace proceduray::test {
 
 // shared/device-profiles/lavapipe-mesa-25.0.7.json (llvmpipe, Mesa 25.0.7, Vulkan 1.4.305)
-inline constexpr DeviceLimits lavapipe_limits{
+inline const DeviceLimits lavapipe_limits{
     .sbt = {.handle_size = 32, .handle_alignment = 16, .base_alignment = 32, .max_stride = 16384},
     .max_ray_recursion_depth = 31, .max_ray_hit_attribute_size = 32,
-    .max_geometry_count = 16777215, .max_instance_count = 16777215};
+    .max_geometry_count = 16777215, .max_instance_count = 16777215, .device = "llvmpipe"};
 
 // shared/device-profiles/nvidia-h100-580.json (NVIDIA H100 80GB HBM3, driver 580.159.04)
-inline constexpr DeviceLimits h100_limits{
+inline const DeviceLimits h100_limits{
     .sbt = {.handle_size = 32, .handle_alignment = 32, .base_alignment = 64, .max_stride = 4096},
     .max_ray_recursion_depth = 31, .max_ray_hit_attribute_size = 32,
-    .max_geometry_count = 16777215, .max_instance_count = 16777215};
+    .max_geometry_count = 16777215, .max_instance_count = 16777215, .device = "NVIDIA H100 80GB HBM3"};
 
 /// Synthetic profiles the issue names.
 inline constexpr SbtProperties synthetic_32_32_64{.handle_size = 32, .handle_alignment = 32, .base_alignment = 64, .max_stride = 4096};
@@ -145,25 +146,26 @@ inline void build_report_scene(ReportScene& r) {
 }
 
 /// The report's Listing 10 through the string-id API: common triangle entries, per-instance procedural ones.
-inline void add_report_entries(const ReportScene& r, ShaderTable& t) {
-  t.add_raygen("Raygen");
+inline void add_report_entries(ReportScene& r) {
+  Scene& s = r.scene;
+  s.add_raygen("Raygen");
   const TriangleRootArguments plane_args{{{0.9f, 0.9f, 0.9f, 1.0f}, 0.25f, 1.0f, 0.4f, 50.0f}};
-  t.add_hit("Radiance", "Triangle", "Triangle", plane_args, "GlobalGeometry");
-  t.add_hit("Shadow", "Triangle_Shadow", "Triangle", plane_args, "GlobalGeometry");
+  s.add_hit("Radiance", "Triangle", "Triangle", plane_args, "GlobalGeometry");
+  s.add_hit("Shadow", "Triangle_Shadow", "Triangle", plane_args, "GlobalGeometry");
   std::uint32_t primitive = 0;
   std::uint32_t instance_index = 0;
   for (const char* name : {"Julia", "Pacman", "Mandelbulb"}) {
     const std::string n = name;
     for (std::uint32_t i = 0; i < r.instances[primitive]; ++i) {
       ProceduralRootArguments args{{{0.1f * float(primitive), 0.5f, 0.5f, 1.0f}, 0.0f, 0.9f, 0.7f, 50.0f}, instance_index, primitive};
-      t.add_hit("Radiance", n, "Procedural", args, n, i);
-      t.add_hit("Shadow", n + "_Shadow", "Procedural", args, n, i);
+      s.add_hit("Radiance", n, "Procedural", args, n, i);
+      s.add_hit("Shadow", n + "_Shadow", "Procedural", args, n, i);
       ++instance_index;
     }
     ++primitive;
   }
-  t.set_global_signature(r.scene.global_signature_id("Global"));
-  t.set_max_recursion_depth(3);
+  s.set_global_signature(s.global_signature_id("Global"));
+  s.set_max_recursion_depth(3);
 }
 
 // ---- The D3D12 procedural-geometry sample: a triangle plane BLAS and one BLAS of 10 AABB geometries.
@@ -221,9 +223,9 @@ inline void build_d3d12_scene(D3D12Scene& d) {
 }
 
 /// The sample's entries, added in `order` (a permutation of 0..21 over the 22 (geometry, ray) slots).
-inline void add_d3d12_entries(const D3D12Scene& d, ShaderTable& t, const std::vector<std::uint32_t>& order) {
-  const Scene& s = d.scene;
-  t.add_raygen("MyRaygenShader");
+inline void add_d3d12_entries(D3D12Scene& d, const std::vector<std::uint32_t>& order) {
+  Scene& s = d.scene;
+  s.add_raygen("MyRaygenShader");
   const auto tri = s.local_signature_id<D3D12RootArguments>("Triangle");
   const auto aabb = s.local_signature_id<D3D12RootArguments>("AABB");
   for (std::uint32_t slot : order) {
@@ -234,12 +236,12 @@ inline void add_d3d12_entries(const D3D12Scene& d, ShaderTable& t, const std::ve
     args.material.albedo = glm::vec4(float(slot));
     if (geometry == 0) {
       const auto group = s.hit_group_id(shadow_ray ? "MyHitGroup_Triangle_ShadowRay" : "MyHitGroup_Triangle");
-      if (shadow_ray) t.add_hit(d.shadow, group, tri, args, d.plane);
-      else t.add_hit(d.radiance, group, tri, args, d.plane);
+      if (shadow_ray) s.add_hit(d.shadow, group, tri, args, d.plane);
+      else s.add_hit(d.radiance, group, tri, args, d.plane);
     } else {
       const std::string name = std::string(d3d12_group_of(geometry - 1)) + (shadow_ray ? "_ShadowRay" : "");
-      if (shadow_ray) t.add_hit(d.shadow, s.hit_group_id(name), aabb, args, d.aabbs[geometry - 1]);
-      else t.add_hit(d.radiance, s.hit_group_id(name), aabb, args, d.aabbs[geometry - 1]);
+      if (shadow_ray) s.add_hit(d.shadow, s.hit_group_id(name), aabb, args, d.aabbs[geometry - 1]);
+      else s.add_hit(d.radiance, s.hit_group_id(name), aabb, args, d.aabbs[geometry - 1]);
     }
   }
 }

@@ -1,8 +1,12 @@
+// Tests for proceduray/scene/scene.hpp (and entities.hpp): entities by id, and the entries that bind them.
 #include "proceduray/scene/scene.hpp"
 
 #include <doctest/doctest.h>
 
+#include "proceduray/scene/compile.hpp"
+#include "proceduray/scene/default_global_signature.hpp"
 #include "proceduray/shader/field_list.hpp"
+#include "scene_fixtures.hpp"
 
 #include <cmath>
 #include <limits>
@@ -189,4 +193,130 @@ TEST_CASE("scene geometries sharing a BLAS shares its update policy") {
   bogus.update = static_cast<UpdatePolicy>(7);
   CHECK_THROWS_WITH_AS(scene.add_geometry("bogus", bogus), doctest::Contains("has update policy 7; use UpdatePolicy::Static"),
                        InvalidGeometryError);
+}
+
+// ---- Entries: Scene::add_raygen, add_miss, add_hit, set_default_hit, add_callable_record and the pipeline settings.
+
+TEST_CASE("scene add_hit: hit group kind must match the geometry") {
+  test::ReportScene r;
+  test::build_report_scene(r);
+  Scene& t = r.scene;
+  CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), r.pacman),
+                       doctest::Contains("Scene::add_hit: procedural geometry \"Pacman\" bound to triangles hit group "
+                                         "\"Triangle\", which has no intersection shader"),
+                       HitGroupKindError);
+  CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Pacman"), r.plane),
+                       doctest::Contains("bind a triangles hit group"), HitGroupKindError);
+  CHECK(t.entries().all().empty());
+}
+
+TEST_CASE("scene add_hit: string ids are checked at run time") {
+  test::ReportScene r;
+  test::build_report_scene(r);
+  Scene& t = r.scene;
+  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", test::TriangleRootArguments{}, "Pacman"),
+                       doctest::Contains("local signature \"Procedural\" has record data type"), TypeMismatchError);
+  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacmam", "Procedural", test::ProceduralRootArguments{}, "Pacman"),
+                       doctest::Contains("unknown hit group id \"Pacmam\"; nearest known ids: \"Pacman\""), UnknownIdError);
+  CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", test::ProceduralRootArguments{}, "Pacman", 3),
+                       doctest::Contains("Scene::add_hit: instance 3 of geometry \"Pacman\" does not exist (it has 3 instances)"),
+                       SceneError);
+  CHECK_THROWS_AS(t.add_hit(r.radiance, HitGroupId(), r.pacman), UnknownIdError);
+  CHECK(t.entries().all().empty());
+}
+
+TEST_CASE("scene entries keep the order they were added in and copies of their record data") {
+  Scene s;
+  const auto ray = s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
+  const auto group = s.add_hit_group("Triangle", {.closest_hit = "chit"});
+  const auto plane = s.add_geometry("Plane", GeometryDesc::triangles(triangle(), {identity_transform(), identity_transform()}));
+  const auto sig = s.add_local_signature<Args>("Local");
+  s.reserve_entries(4, 3 * sizeof(Args));
+  Args args{7};
+  const EntryId hit = s.add_hit(ray, group, sig, args, plane, 1);
+  args.index = 8;  // the entry copied the bytes when it was added
+  const EntryId raygen = s.add_raygen("rgen", sig, Args{9});
+  const EntryId miss = s.add_miss(ray, sig, Args{10});
+  const EntryId wide = s.add_hit(ray, group, plane);
+  CHECK(hit.index() == 0);
+  CHECK(raygen.index() == 1);
+  CHECK(miss.index() == 2);
+  CHECK(wide.index() == 3);
+  const EntryList& list = s.entries();
+  REQUIRE(list.all().size() == 4);
+  CHECK(list.all()[0].region == SbtRegionKind::hit);
+  CHECK(list.all()[0].instance == 1);
+  CHECK(list.all()[0].geometry == plane.index());
+  CHECK(list.all()[1].region == SbtRegionKind::raygen);
+  CHECK(list.raygen_shaders()[list.all()[1].shader] == "rgen");
+  CHECK(list.all()[2].region == SbtRegionKind::miss);
+  CHECK(list.all()[3].instance == all_instances);
+  CHECK(list.all()[3].local_signature == no_index);
+  CHECK(list.data().size() == 3 * sizeof(Args));
+  Args back{};
+  REQUIRE(list.data(list.all()[0]).size() == sizeof(Args));
+  std::memcpy(&back, list.data(list.all()[0]).data(), sizeof back);
+  CHECK(back.index == 7);
+  std::memcpy(&back, list.data(list.all()[2]).data(), sizeof back);
+  CHECK(back.index == 10);
+  CHECK(list.data(list.all()[3]).empty());
+  CHECK_THROWS_WITH_AS(s.add_raygen(""), doctest::Contains("Scene::add_raygen: empty raygen shader name"), SceneError);
+  CHECK_THROWS_WITH_AS(s.add_raygen("rgen", LocalSignatureId<Args>(3), Args{}),
+                       doctest::Contains("Scene::add_raygen: local signature #3 is not registered"), UnknownIdError);
+  CHECK_THROWS_WITH_AS(s.add_hit(ray, group, LocalSignatureId<Args>(3), Args{}, plane),
+                       doctest::Contains("Scene::add_hit: local signature #3"), UnknownIdError);
+  CHECK(list.all().size() == 4);
+}
+
+TEST_CASE("scene set_max_recursion_depth refuses 0 and keeps what was declared") {
+  Scene s;
+  CHECK_FALSE(s.max_recursion_depth().has_value());
+  CHECK_THROWS_WITH_AS(s.set_max_recursion_depth(0), doctest::Contains("Scene::set_max_recursion_depth: depth 0"), SceneError);
+  CHECK_FALSE(s.max_recursion_depth().has_value());
+  s.set_max_recursion_depth(2);
+  CHECK(s.max_recursion_depth() == 2u);
+}
+
+TEST_CASE("scene set_global_signature with a desc registers it and selects it") {
+  test::ReportScene r;
+  test::build_report_scene(r);
+  test::add_report_entries(r);  // selects "Global"
+  Scene& s = r.scene;
+  const auto signatures = s.global_signatures().size();
+  const GlobalSignatureId g = s.set_global_signature(default_global_signature());
+  CHECK(s.global_signatures().size() == signatures + 1);
+  CHECK(g == s.global_signature_id("global"));  // the default id
+  CHECK(s.pipeline_global_signature() == g);
+  CHECK(s.global_signature(g).desc == default_global_signature());
+  Plan plan = compile(s);
+  CHECK(plan.pipeline().global_signature == g);
+  REQUIRE(plan.global_signature() != nullptr);
+  CHECK(*plan.global_signature() == default_global_signature());
+  // Registered once: the same id again is a duplicate, and the selection stays.
+  CHECK_THROWS_AS(s.set_global_signature(default_global_signature()), DuplicateIdError);
+  CHECK(s.pipeline_global_signature() == g);
+  const GlobalSignatureId other = s.set_global_signature(default_global_signature(), "other");
+  CHECK(other == s.global_signature_id("other"));
+  CHECK(s.pipeline_global_signature() == other);
+  CHECK(compile(s).pipeline().global_signature == s.global_signature_id("other"));
+  // By id: selects a registered one, refuses an id the scene did not issue.
+  s.set_global_signature(s.global_signature_id("Global"));
+  CHECK(compile(s).pipeline().global_signature == s.global_signature_id("Global"));
+  CHECK_THROWS_WITH_AS(s.set_global_signature(GlobalSignatureId(9)), doctest::Contains("Scene::set_global_signature"),
+                       UnknownIdError);
+  CHECK(s.pipeline_global_signature() == s.global_signature_id("Global"));
+}
+
+TEST_CASE("scene without a global signature compiles to a plan without one") {
+  test::ReportScene r;
+  test::build_report_scene(r);
+  r.scene.add_raygen("Raygen");
+  r.scene.set_default_hit(r.radiance, r.scene.hit_group_id("Triangle"));
+  r.scene.set_default_hit(r.shadow, r.scene.hit_group_id("Triangle_Shadow"));
+  r.scene.set_default_hit(r.radiance, r.scene.hit_group_id("Pacman"));
+  r.scene.set_default_hit(r.shadow, r.scene.hit_group_id("Pacman_Shadow"));
+  CHECK_FALSE(r.scene.pipeline_global_signature().valid());
+  const Plan plan = compile(r.scene);
+  CHECK_FALSE(plan.pipeline().global_signature.valid());
+  CHECK(plan.global_signature() == nullptr);
 }

@@ -1,9 +1,11 @@
 // An entry whose arguments type differs from its local signature's record data type does not compile.
+// expect: no matching function for call to
+// expect: proceduray::Scene::add_hit(
 // expect: required for the satisfaction of
 // expect: ArgumentsMatchSignature<Given, Args>
 // expect: with Given = demo::TriangleArgs
 // expect: Args = demo::ProceduralArgs]
-#include <proceduray/scene/shader_table.hpp>
+#include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 namespace demo {
@@ -21,12 +23,12 @@ struct TriangleArgs {
 };
 PROCEDURAY_STRUCT(TriangleArgs, scalar, albedo);
 
-void bind(proceduray::Scene& scene, proceduray::ShaderTable& table) {
+void bind(proceduray::Scene& scene) {
   const auto radiance = scene.add_ray<Radiance>("Radiance", {.miss = "miss"});
   const auto group = scene.add_hit_group("Plane", {.closest_hit = "plane.rchit"});
   const auto plane = scene.add_geometry(
       "Plane", proceduray::GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}));
   const auto signature = scene.add_local_signature<ProceduralArgs>("Procedural");
-  table.add_hit(radiance, group, signature, TriangleArgs{}, plane);
+  scene.add_hit(radiance, group, signature, TriangleArgs{}, plane);
 }
 }  // namespace demo

@@ -1,8 +1,10 @@
 // A callable record's data must be registered record data, like every record's.
+// expect: no matching function for call to
+// expect: proceduray::Scene::add_callable_record(
 // expect: required for the satisfaction of
 // expect: RecordData<Args>
 // expect: [with Args = demo::TintArgs]
-#include <proceduray/scene/shader_table.hpp>
+#include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 namespace demo {
@@ -14,7 +16,7 @@ struct TintArgs {
   float factor[4];
 };
 
-void bind(proceduray::ShaderTable& table, proceduray::CallableId<Tint> tint) {
-  table.add_callable(tint, proceduray::LocalSignatureId<TintArgs>{}, TintArgs{});
+void bind(proceduray::Scene& scene, proceduray::CallableId<Tint> tint) {
+  scene.add_callable_record(tint, proceduray::LocalSignatureId<TintArgs>{}, TintArgs{});
 }
 }  // namespace demo
