@@ -48,14 +48,14 @@ class Scene : public Entities {
   template <RecordData Args, class Given>
     requires ArgumentsMatchSignature<Given, Args>
   EntryId add_raygen(std::string shader, LocalSignatureId<Args> signature, const Given& data) {
-    return add_raygen_entry(std::move(shader), signature.index(), &data, sizeof(Args));
+    return add_raygen_entry(std::move(shader), signature_index(signature, "Scene::add_raygen"), &data, sizeof(Args));
   }
 
   /// Gives the miss record of `ray` record data; rays without it get a record with none.
   template <class Payload, RecordData Args, class Given>
     requires ArgumentsMatchSignature<Given, Args>
   EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Args> signature, const Given& data) {
-    Entry e{.region = SbtRegionKind::miss, .ray = ray.index(), .local_signature = signature.index()};
+    Entry e{.region = SbtRegionKind::miss, .ray = ray.index(), .local_signature = signature_index(signature, "Scene::add_miss")};
     return add_entry("Scene::add_miss", e, &data, sizeof(Args));
   }
 
@@ -63,7 +63,8 @@ class Scene : public Entities {
   template <class Data, RecordData Args, class Given>
     requires ArgumentsMatchSignature<Given, Args>
   EntryId add_callable_record(CallableId<Data> callable, LocalSignatureId<Args> signature, const Given& data) {
-    Entry e{.region = SbtRegionKind::callable, .local_signature = signature.index(), .shader = callable.index()};
+    Entry e{.region = SbtRegionKind::callable, .local_signature = signature_index(signature, "Scene::add_callable_record"),
+            .shader = callable.index()};
     return add_entry("Scene::add_callable_record", e, &data, sizeof(Args));
   }
 
@@ -78,7 +79,7 @@ class Scene : public Entities {
     requires ArgumentsMatchSignature<Given, Args>
   EntryId add_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args,
                   GeometryId geometry, std::uint32_t instance = all_instances) {
-    Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature.index(),
+    Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature_index(signature, "Scene::add_hit"),
             .geometry = geometry.index(), .instance = instance};
     return add_entry("Scene::add_hit", e, &args, sizeof(Args));
   }
@@ -100,7 +101,8 @@ class Scene : public Entities {
   template <class Payload, RecordData Args, class Given>
     requires ArgumentsMatchSignature<Given, Args>
   EntryId set_default_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args) {
-    Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature.index(), .is_default = true};
+    Entry e{.ray = ray.index(), .hit_group = group.index(),
+            .local_signature = signature_index(signature, "Scene::set_default_hit"), .is_default = true};
     return add_entry("Scene::set_default_hit", e, &args, sizeof(Args));
   }
 
@@ -134,6 +136,11 @@ class Scene : public Entities {
   void reserve_entries(std::size_t entries, std::size_t data_bytes) { m_entries.reserve(entries, data_bytes); }
 
  private:
+  /// A signature the caller passed: checked even when default-constructed (invalid).
+  std::uint32_t signature_index(LocalSignatureId<> id, std::string_view op) const {
+    local_signatures().check_index(id.index(), op);
+    return id.index();
+  }
   EntryId add_raygen_entry(std::string shader, std::uint32_t signature, const void* data, std::uint32_t size) {
     if (shader.empty()) throw SceneError("Scene::add_raygen: empty raygen shader name; name the raygen shader");
     if (signature != no_index) local_signatures().check_index(signature, "Scene::add_raygen");
