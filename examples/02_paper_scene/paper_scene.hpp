@@ -10,16 +10,14 @@
 #include "../common/cli.hpp"
 #include "paper_types.hpp"
 
-#include <proceduray/scene/glsl_files.hpp>
-
 #include <string>
 
 namespace paper {
 
 inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
-/// The scene: its entities and entries.
-struct PaperScene : pr::Scene {
+/// The scene: its entities and entries, each type from its category of paper::Interface.
+struct PaperScene : pr::SceneOf<Interface> {
   PaperScene() {
     const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
     add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
@@ -41,16 +39,12 @@ struct PaperScene : pr::Scene {
     procedural("mandelbulb", mandelbulb_aabb, {mandelbulb_placement}, {mandelbulb_material});
   }
 
-  /// Shaders from this example's folder, compiled with the declarations the build wrote
-  /// (PAPER_GLSL_DIR: glsl/generate.cpp, run with no device) and the flags and AABBs after them.
+  /// Shaders from this example's folder, compiled with the declarations the build wrote into
+  /// PAPER_GLSL_DIR (glsl/generate.cpp, run with no device; defined by CMake and Meson for every
+  /// target that includes this header), then the flags and the AABBs.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    pr::vk::RendererOptions o{.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-                              .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this),
-                              .pipeline_cache = std::move(cache)};
-#ifdef PAPER_GLSL_DIR
-    o.declarations = pr::glsl_files(PAPER_GLSL_DIR);
-#endif
-    return o;
+    return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"}, .declarations = pr::glsl_files(PAPER_GLSL_DIR),
+            .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this), .pipeline_cache = std::move(cache)};
   }
 };
 

@@ -83,6 +83,10 @@ PROCEDURAY_DEFINE_STRUCT(MaterialRecord, scalar,
     (float, shininess),                  ///< Phong exponent (>= 1)
     (std::uint32_t, object_id));         ///< ObjectId, for the object-id view
 
+/// The shader compatibility layer: each struct in its category (std::variant alternatives).
+using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>, pr::RootComponent<SceneConstants>,
+                                      pr::RootArguments<MaterialRecord>, pr::Attributes<ProceduralHit>>;
+
 /// Local AABBs: Pac-man is the unit sphere; the Julia set (c near (-0.2, 0.6, 0.2, 0.2), within
 /// about 1.2 of the origin, lowest y about -1.02) and the Mandelbulb (within about 1.07) fit in
 /// theirs with a margin (checked in tests/shaders). Placements put each object's lowest point on y = 0.

@@ -14,12 +14,14 @@
 #include <proceduray/image/png.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>
+#include <proceduray/scene/glsl_files.hpp>
 #include <proceduray/scene/glsl_for.hpp>
 #include <proceduray/scene/object.hpp>
 #include <proceduray/scene/placement.hpp>
 #include <proceduray/scene/quad_mesh.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
+#include <proceduray/scene/scene_of.hpp>
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/shader.hpp>

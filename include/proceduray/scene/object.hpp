@@ -17,6 +17,7 @@
 // throw leaves the scene as it was.
 #pragma once
 
+#include <concepts>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -81,8 +82,8 @@ inline std::size_t object_instances(const Scene& scene, const GeometryDesc& g) {
 
 /// Registers the object's geometry, then its hit groups (checked first: they cannot throw then); returns the
 /// geometry and each ray's group.
-template <class Attributes>
-std::pair<GeometryId, std::vector<HitGroupId>> register_object(Scene& scene, std::string id, ObjectDesc desc,
+template <class Attributes, class AnyScene>
+std::pair<GeometryId, std::vector<HitGroupId>> register_object(AnyScene& scene, std::string id, ObjectDesc desc,
                                                                 std::size_t records) {
   const std::string where = "add_object: object \"" + id + "\"";
   const std::uint32_t rays = scene.rays().size();
@@ -123,7 +124,7 @@ std::pair<GeometryId, std::vector<HitGroupId>> register_object(Scene& scene, std
   const GeometryId geometry = scene.add_geometry(id, std::move(desc.geometry));
   std::vector<HitGroupId> ids;
   for (std::uint32_t r = 0; r < rays; ++r) {
-    ids.push_back(scene.add_hit_group<Attributes>(object_group_name(scene, id, r), std::move(groups[r])));
+    ids.push_back(scene.template add_hit_group<Attributes>(object_group_name(scene, id, r), std::move(groups[r])));
   }
   return {geometry, std::move(ids)};
 }
@@ -133,8 +134,9 @@ std::pair<GeometryId, std::vector<HitGroupId>> register_object(Scene& scene, std
 /// Registers an object whose hit records carry `records` (one for every instance, or one per
 /// instance) under `signature`; Attributes is what its intersection shader reports (void for
 /// triangles). Throws SceneError and its subclasses, naming the object, before changing anything.
-template <class Attributes = void, RecordData Args>
-GeometryId add_object(Scene& scene, std::string id, ObjectDesc desc, LocalSignatureId<Args> signature,
+/// On a SceneOf<Interface>, Attributes must be in the interface's Attributes<...> (else it does not compile).
+template <class Attributes = void, std::derived_from<Scene> AnyScene, RecordData Args>
+GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc, LocalSignatureId<Args> signature,
                       std::type_identity_t<std::vector<Args>> records) {
   if (records.empty()) {
     throw SceneError("add_object: object \"" + id + "\" has a local signature but no record; give one record for "
@@ -156,8 +158,8 @@ GeometryId add_object(Scene& scene, std::string id, ObjectDesc desc, LocalSignat
 }
 
 /// Registers an object whose hit records carry no data.
-template <class Attributes = void>
-GeometryId add_object(Scene& scene, std::string id, ObjectDesc desc) {
+template <class Attributes = void, std::derived_from<Scene> AnyScene>
+GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc) {
   const auto [geometry, groups] = detail::register_object<Attributes>(scene, std::move(id), std::move(desc), 0);
   for (std::uint32_t r = 0; r < groups.size(); ++r) scene.add_hit(RayId<>(r), groups[r], geometry);
   return geometry;

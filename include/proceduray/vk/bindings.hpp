@@ -1,0 +1,242 @@
+// The resources of a global signature on the device: descriptor sets laid out from its bindings,
+// typed uniform and storage buffers, the storage image and TLAS bindings, and push constants.
+//
+//   proceduray::vk::Bindings bindings(ctx, plan.global_signature(), structures.tlas().structure());
+//   bindings.set(constants_slot, constants);     // typed: another type does not compile
+//   bindings.set_storage(tints_slot, tints);     // an array of the slot's type
+//   bindings.set_push(knobs_slot, knobs);        // the global signature's typed push constants
+//   bindings.bind_image(image.view());           // every storage-image binding
+//   bindings.check_ready("Renderer::render");    // throws UsageError naming what was never given
+//   bindings.upload();                           // changed uniforms to their buffers, before a submit
+//
+// A slot must be the one the global signature was declared with: same set, binding and type
+// (a uniform of another type would read or write past its buffer), else UsageError.
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/scene/global_signature.hpp>
+#include <proceduray/scene/uniform_slot.hpp>
+#include <proceduray/vk/acceleration.hpp>
+#include <proceduray/vk/descriptors.hpp>
+
+#include <cstddef>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// Descriptor sets, buffers and push constants of one global signature.
+class Bindings {
+ public:
+  /// Lays out the sets of `desc` (nullptr: none) and writes `tlas` to its acceleration-structure
+  /// bindings; throws UsageError for descriptor arrays, DeviceLimitError for push constants past the device's limit.
+  Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas);
+  Bindings(const Bindings&) = delete;
+  Bindings& operator=(const Bindings&) = delete;
+
+  /// Sets a uniform's value, uploaded by upload(). Other types do not compile.
+  template <class T>
+  void set(UniformSlot<T> slot, const std::type_identity_t<T>& value, std::string_view op = "Bindings::set") {
+    Uniform& u = uniform(slot, &type_ops<T>, sizeof(T), op);
+    std::memcpy(u.value.data(), &value, sizeof(T));
+    u.dirty = true;
+  }
+  /// Sets a storage buffer's contents, an array of T (at least one element); reallocated when it grows.
+  template <class T>
+  void set_storage(StorageSlot<T> slot, std::span<const std::type_identity_t<T>> values,
+                   std::string_view op = "Bindings::set_storage") {
+    set_storage_bytes(slot, &type_ops<T>, std::as_bytes(values), op);
+  }
+  /// Sets the push constants. Other types do not compile; a slot other than the signature's throws.
+  template <class T>
+  void set_push(PushConstantSlot<T> slot, const std::type_identity_t<T>& value, std::string_view op = "Bindings::set_push") {
+    set_push_bytes(slot, &type_ops<T>, std::as_bytes(std::span<const T>(&value, 1)), op);
+  }
+  /// Writes `view` to every storage-image binding.
+  void bind_image(VkImageView view) {
+    for (auto [set, binding] : m_images) m_sets[set]->write(binding, view);
+  }
+  /// Throws UsageError, naming `op`, when a uniform, storage buffer or push constant block was never given.
+  void check_ready(std::string_view op) const;
+  /// Copies changed uniform values into their buffers.
+  void upload() {
+    for (Uniform& u : m_uniforms) {
+      if (u.dirty) u.buffer->write(std::span<const std::byte>(u.value));
+      u.dirty = false;
+    }
+  }
+
+  /// The sets, in set-number order (a gap in the numbers is an empty set).
+  std::vector<VkDescriptorSet> sets() const {
+    std::vector<VkDescriptorSet> out;
+    for (const auto& s : m_sets) out.push_back(s->get());
+    return out;
+  }
+  /// Their layouts, for the pipeline layout.
+  std::vector<VkDescriptorSetLayout> layouts() const {
+    std::vector<VkDescriptorSetLayout> out;
+    for (const auto& s : m_sets) out.push_back(s->layout());
+    return out;
+  }
+  /// Push constant bytes given so far (empty before set_push).
+  std::span<const std::byte> push() const { return m_push; }
+  /// Bytes of push constants the signature declares, typed or not.
+  std::uint32_t push_size() const { return m_push_size; }
+
+ private:
+  struct Uniform {
+    std::uint32_t set = 0, binding = 0;
+    const TypeOps* type = nullptr;
+    std::vector<std::byte> value;
+    std::unique_ptr<Buffer> buffer;
+    bool dirty = false;
+  };
+  struct Storage {
+    std::uint32_t set = 0, binding = 0;
+    const TypeOps* type = nullptr;
+    std::unique_ptr<Buffer> buffer;
+  };
+  Uniform& uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op);
+  void set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes, std::string_view op);
+  void set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,
+                      std::string_view op);
+  static std::string where(const proceduray::Binding& b) {
+    return "set " + std::to_string(b.set) + " binding " + std::to_string(b.binding);
+  }
+  static void check_type(const TypeOps* declared, const TypeOps* given, const proceduray::Binding& slot, std::string_view op) {
+    if (declared == nullptr || declared == given) return;
+    throw UsageError(std::string(op) + ": " + where(slot) + " holds " + std::string(declared->glsl_name) +
+                     " in the global signature, not " + std::string(given->glsl_name) +
+                     "; pass the slot the signature was declared with");
+  }
+
+  const Context* m_ctx;
+  std::vector<std::unique_ptr<DescriptorSet>> m_sets;  // index = set number
+  std::vector<Uniform> m_uniforms;
+  std::vector<Storage> m_storage;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> m_images;  // (set, binding) of storage images
+  PushConstantBlock m_push_block;
+  std::uint32_t m_push_size = 0;
+  std::vector<std::byte> m_push;
+};
+
+inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas)
+    : m_ctx(&ctx) {
+  if (desc == nullptr) return;
+  m_push_block = desc->push_constants;
+  m_push_size = desc->push_bytes();
+  const std::uint32_t limit = ctx.properties().limits.maxPushConstantsSize;
+  if (m_push_size > limit) {  // checked before any pipeline work: it is the clearer error
+    throw DeviceLimitError("Renderer: the global signature declares " + std::to_string(m_push_size) +
+                           " bytes of push constants, " + ctx.name() + " allows " + std::to_string(limit) +
+                           " (maxPushConstantsSize; every device allows 128); move the rest to a uniform");
+  }
+  std::map<std::uint32_t, std::vector<vk::Binding>> by_set;
+  std::uint32_t last_set = 0;
+  for (const proceduray::Binding& b : desc->bindings) {
+    if (b.count != 1) {
+      throw UsageError("Renderer: " + where(b) + " is an array of " + std::to_string(b.count) +
+                       "; descriptor arrays are not supported yet: use one binding per resource");
+    }
+    static constexpr VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR,
+                                                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    by_set[b.set].push_back({b.binding, types[static_cast<std::uint32_t>(b.kind)]});
+    last_set = std::max(last_set, b.set);
+  }
+  // Set numbers in the pipeline layout are positions: a gap gets an empty set.
+  for (std::uint32_t s = 0; s <= last_set && !by_set.empty(); ++s) {
+    m_sets.push_back(std::make_unique<DescriptorSet>(ctx, by_set[s]));
+  }
+  for (const proceduray::Binding& b : desc->bindings) {
+    switch (b.kind) {
+      case BindingKind::acceleration_structure: m_sets[b.set]->write(b.binding, tlas); break;
+      case BindingKind::storage_image: m_images.emplace_back(b.set, b.binding); break;
+      case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false}); break;
+      case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr}); break;
+    }
+  }
+}
+
+inline Bindings::Uniform& Bindings::uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op) {
+  for (Uniform& u : m_uniforms) {
+    if (u.set != slot.set || u.binding != slot.binding) continue;
+    check_type(u.type, type, slot, op);
+    if (!u.buffer) {
+      u.value.resize(size);
+      u.buffer = std::make_unique<Buffer>(*m_ctx, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      m_sets[u.set]->write(u.binding, *u.buffer);
+    }
+    if (u.value.size() != size) {  // an untyped binding given two types
+      throw UsageError(std::string(op) + ": " + where(slot) + " was given " + std::to_string(u.value.size()) +
+                       " bytes before and " + std::to_string(size) + " now; keep one type per uniform");
+    }
+    return u;
+  }
+  throw UsageError(std::string(op) + ": " + where(slot) + " is not a uniform buffer of the global signature; "
+                   "declare it there (a UniformSlot converts to its Binding)");
+}
+
+inline void Bindings::set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes,
+                                        std::string_view op) {
+  for (Storage& s : m_storage) {
+    if (s.set != slot.set || s.binding != slot.binding) continue;
+    check_type(s.type, type, slot, op);
+    if (bytes.empty()) {
+      throw UsageError(std::string(op) + ": no elements given for " + where(slot) + "; a storage buffer needs at least one");
+    }
+    if (!s.buffer || s.buffer->size() < bytes.size()) {
+      s.buffer = std::make_unique<Buffer>(*m_ctx, bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      m_sets[s.set]->write(s.binding, *s.buffer);
+    }
+    s.buffer->write(bytes);
+    return;
+  }
+  throw UsageError(std::string(op) + ": " + where(slot) + " is not a storage buffer of the global signature; "
+                   "declare it there (a StorageSlot converts to its Binding)");
+}
+
+inline void Bindings::set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,
+                                     std::string_view op) {
+  if (m_push_block.type == nullptr) {
+    throw UsageError(std::string(op) + ": the global signature declares no typed push constants (" +
+                     std::to_string(m_push_size) + " untyped bytes); declare them with "
+                     "GlobalSignatureDesc::push_constants = a PushConstantSlot<" + std::string(type->glsl_name) + ">");
+  }
+  if (m_push_block.type != type || m_push_block.name != slot.name) {
+    throw UsageError(std::string(op) + ": the slot holds " + std::string(type->glsl_name) + " \"" + slot.name +
+                     "\" but the global signature declares " + std::string(m_push_block.type->glsl_name) + " \"" +
+                     m_push_block.name + "\"; pass the slot the signature was declared with");
+  }
+  m_push.assign(bytes.begin(), bytes.end());
+}
+
+inline void Bindings::check_ready(std::string_view op) const {
+  for (const Uniform& u : m_uniforms) {
+    if (!u.buffer) {
+      throw UsageError(std::string(op) + ": the uniform at set " + std::to_string(u.set) + " binding " +
+                       std::to_string(u.binding) + " was never given a value; call set(slot, value) first");
+    }
+  }
+  for (const Storage& s : m_storage) {
+    if (!s.buffer) {
+      throw UsageError(std::string(op) + ": the storage buffer at set " + std::to_string(s.set) + " binding " +
+                       std::to_string(s.binding) + " was never given data; call set_storage(slot, values) first");
+    }
+  }
+  if (m_push_size != m_push.size()) {
+    throw UsageError(std::string(op) + ": the global signature declares " + std::to_string(m_push_size) +
+                     " bytes of push constants but " +
+                     (m_push_block.type != nullptr
+                          ? std::string("they were never given a value; call set_push(slot, value) first")
+                          : std::string("they are untyped, so the renderer cannot fill them; declare them with a "
+                                        "PushConstantSlot<T>")));
+  }
+}
+
+}  // namespace proceduray::vk

@@ -1,0 +1,35 @@
+// What a traced frame reports: its pixels, its times and the acceleration-structure work done
+// before its trace.
+//
+//   proceduray::vk::Frame frame = renderer.render(1024, 768);
+//   frame.rgba;          // width * height RGBA8 pixels (empty without readback)
+//   frame.trace_ms;      // GPU time of vkCmdTraceRaysKHR
+//   frame.work == proceduray::vk::FrameWork{.tlas_updates = 1};   // a DynamicTransform frame
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// Acceleration-structure work a frame did before its trace, as the update policies allowed.
+struct FrameWork {
+  std::uint32_t blas_builds = 0;   ///< DynamicGeometry BLASes rebuilt (topology changed)
+  std::uint32_t blas_refits = 0;   ///< DynamicGeometry BLASes refit in place
+  std::uint32_t tlas_builds = 0;   ///< TLAS rebuilt (a BLAS it references was rebuilt, or a mask changed)
+  std::uint32_t tlas_updates = 0;  ///< TLAS refit (instances moved or a BLAS was refit)
+  friend bool operator==(const FrameWork&, const FrameWork&) = default;
+};
+
+/// One traced frame.
+struct Frame {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgba;  ///< width * height RGBA8 pixels, rows top to bottom; empty without readback
+  double trace_ms = 0;  ///< GPU time between timestamps around vkCmdTraceRaysKHR (wall time if the queue has none)
+  double host_ms = 0;   ///< host work before submit: uniform uploads, BLAS input and TLAS instance writes, recording
+  bool tlas_refit = false;  ///< the frame refit or rebuilt the TLAS (work.tlas_updates + work.tlas_builds > 0)
+  FrameWork work;           ///< acceleration-structure work done for this frame
+};
+
+}  // namespace proceduray::vk

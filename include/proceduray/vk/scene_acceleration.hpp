@@ -1,0 +1,334 @@
+// The acceleration structures of a compiled scene and their updates: one BLAS per planned BLAS
+// (compacted when Static, refittable when DynamicGeometry), the TLAS over the planned instances
+// (refittable when anything is dynamic), and the per-frame work the update policies allow.
+//
+//   proceduray::vk::SceneAcceleration structures(ctx, scene, plan);   // reads the scene here only
+//   structures.set_transform(ball, 1, moved);          // DynamicTransform: TLAS refit next frame
+//   structures.set_aabbs(blob, boxes);                 // DynamicGeometry: BLAS refit, or rebuild
+//   ctx.submit([&](VkCommandBuffer cmd) {
+//     proceduray::vk::FrameWork work = structures.record(cmd);   // refits and the TLAS update, then a barrier
+//     // ... vkCmdTraceRaysKHR over structures.tlas() ...
+//   });
+//
+// `plan` must outlive it (it resolves geometry ids through the plan). Setters take the name of
+// the call the user made, for messages (the Renderer passes "Renderer::set_transform", say).
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/scene/plan.hpp>
+#include <proceduray/scene/scene.hpp>
+#include <proceduray/vk/acceleration.hpp>
+#include <proceduray/vk/frame.hpp>
+#include <proceduray/vk/refittable_blas.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// A compiled scene's BLASes and TLAS, and their updates.
+class SceneAcceleration {
+ public:
+  /// Builds every BLAS (Static ones compacted; all waits) and the TLAS from `plan` and the
+  /// geometry data of `scene` (not copied for Static geometry).
+  SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
+                    const BuildOptions& options = {});
+  SceneAcceleration(const SceneAcceleration&) = delete;
+  SceneAcceleration& operator=(const SceneAcceleration&) = delete;
+
+  /// Moves instance `instance` of `geometry`: TLAS refit at the next record(). Throws for a Static geometry.
+  void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
+                     std::string_view op = "SceneAcceleration::set_transform");
+  /// Moves every instance of `geometry` (one matrix each, in order): one TLAS refit. Nothing moves if one is bad.
+  void set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
+                      std::string_view op = "SceneAcceleration::set_transforms");
+  /// Changes one instance's mask, any policy: TLAS rebuild at the next record().
+  void set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask,
+                std::string_view op = "SceneAcceleration::set_mask");
+  /// New boxes for a DynamicGeometry procedural geometry: refit for the same count, else rebuild.
+  void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op = "SceneAcceleration::set_aabbs");
+  /// New positions (same count) for a DynamicGeometry triangle geometry: refit.
+  void set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices,
+                    std::string_view op = "SceneAcceleration::set_vertices");
+  /// A new mesh for a DynamicGeometry triangle geometry: refit for the same indices, else rebuild.
+  void set_mesh(GeometryId geometry, TriangleMesh mesh, std::string_view op = "SceneAcceleration::set_mesh");
+
+  /// Rebuilds what changed topology (each rebuild waits), then records into `cmd` the refits and
+  /// the TLAS update or rebuild the changes since the last call need, each followed by a barrier
+  /// for ray tracing. Returns the work; FrameWork{} when nothing changed.
+  FrameWork record(VkCommandBuffer cmd);
+
+  /// The TLAS (its handle stays the same across updates and rebuilds).
+  const Tlas& tlas() const noexcept { return m_tlas; }
+  /// Bytes of every BLAS (Static ones after compaction).
+  VkDeviceSize blas_bytes() const noexcept {
+    VkDeviceSize total = 0;
+    for (const auto& b : m_blases) total += b.get().size();
+    return total;
+  }
+
+ private:
+  /// One scene BLAS: a compacted Static one, or a refittable one with the data it was given.
+  struct BlasSlot {
+    AccelerationStructure fixed;
+    std::unique_ptr<RefittableBlas> dynamic;
+    std::vector<std::vector<VkAabbPositionsKHR>> boxes;  // DynamicGeometry procedural: per geometry
+    std::vector<TriangleMesh> meshes;                    // DynamicGeometry triangles: per geometry
+    bool changed = false;                                // set_* since the last frame
+    const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
+  };
+  const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, std::string_view operation) const;
+  void check_movable(GeometryId geometry, std::string_view operation) const;
+  /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
+  std::vector<std::uint32_t> prepare_blases(FrameWork& work);
+  void record_refit(VkCommandBuffer cmd, std::uint32_t blas);
+  std::vector<AabbGeometry> aabb_geometries(std::uint32_t blas) const;
+  std::vector<TriangleGeometry> triangle_geometries(std::uint32_t blas) const;
+
+  const Context* m_ctx;
+  const proceduray::Plan* m_plan;
+  std::vector<BlasSlot> m_blases;  // index = planned BLAS; never reallocated (instances point into it)
+  std::vector<Instance> m_instances;
+  Tlas m_tlas;
+  bool m_transforms_dirty = false;
+  bool m_tlas_rebuild = false;  // a BLAS was rebuilt, or a mask changed: the TLAS is built again
+};
+
+// The scene's boxes go to the BLAS build as they are: an Aabb is six floats, min then max, like
+// VkAabbPositionsKHR.
+static_assert(sizeof(Aabb) == sizeof(VkAabbPositionsKHR) && offsetof(Aabb, max) == offsetof(VkAabbPositionsKHR, maxX));
+
+inline SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
+                                            const BuildOptions& options)
+    : m_ctx(&ctx), m_plan(&plan) {
+  const auto blases = plan.blases();
+  m_blases.resize(blases.size());
+  bool any_dynamic = false;
+  for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
+    const PlannedBlas& blas = blases[b];
+    BlasSlot& slot = m_blases[b];
+    any_dynamic = any_dynamic || blas.update != UpdatePolicy::Static;
+    const bool refittable = blas.update == UpdatePolicy::DynamicGeometry;
+    if (blas.kind == GeometryKind::procedural) {
+      std::vector<AabbGeometry> geometries;
+      for (std::uint32_t g : blas.geometries) {
+        const auto& boxes = scene.geometry(GeometryId(g)).desc.aabbs;
+        geometries.push_back({std::span(reinterpret_cast<const VkAabbPositionsKHR*>(boxes.data()), boxes.size()),
+                              m_plan->geometries()[g].opaque});
+        if (refittable) slot.boxes.emplace_back(geometries.back().boxes.begin(), geometries.back().boxes.end());
+      }
+      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(aabb_geometries(b)));
+      else slot.fixed = build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), options);
+      continue;
+    }
+    std::vector<TriangleGeometry> geometries;  // straight from the scene: a Static mesh is not copied
+    for (std::uint32_t g : blas.geometries) {
+      const TriangleMesh& mesh = scene.geometry(GeometryId(g)).desc.mesh;
+      if (refittable) slot.meshes.push_back(mesh);  // the renderer's own copy: set_vertices and set_mesh change it
+      geometries.push_back({mesh.vertices, mesh.indices, m_plan->geometries()[g].opaque});
+    }
+    if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
+    else slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), options);
+  }
+  const auto instances = m_plan->instances();
+  for (std::uint32_t k = 0; k < instances.size(); ++k) {
+    const InstanceTransform& t = instances[k].transform;
+    glm::mat4 m(1.0f);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];  // InstanceTransform holds the rows of the 3x4 matrix
+    m_instances.push_back({.blas = &m_blases[instances[k].blas].get(), .transform = m, .custom_index = k,
+                           .sbt_offset = instances[k].sbt_offset, .mask = instances[k].mask});
+  }
+  // Only a scene that changes pays for a refittable TLAS.
+  m_tlas = Tlas(*m_ctx, m_instances, {.allow_update = any_dynamic});
+}
+
+inline std::vector<AabbGeometry> SceneAcceleration::aabb_geometries(std::uint32_t b) const {
+  const PlannedBlas& blas = m_plan->blases()[b];
+  std::vector<AabbGeometry> out;
+  for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
+    out.push_back({m_blases[b].boxes[g], m_plan->geometries()[blas.geometries[g]].opaque});
+  }
+  return out;
+}
+
+inline std::vector<TriangleGeometry> SceneAcceleration::triangle_geometries(std::uint32_t b) const {
+  const PlannedBlas& blas = m_plan->blases()[b];
+  std::vector<TriangleGeometry> out;
+  for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
+    const TriangleMesh& mesh = m_blases[b].meshes[g];
+    out.push_back({mesh.vertices, mesh.indices, m_plan->geometries()[blas.geometries[g]].opaque});
+  }
+  return out;
+}
+
+inline void SceneAcceleration::check_movable(GeometryId geometry, std::string_view operation) const {
+  const PlannedGeometry& g = m_plan->geometry(geometry, operation);
+  if (m_plan->blases()[g.blas].update == UpdatePolicy::Static) {
+    throw UsageError(std::string(operation) + ": geometry \"" + g.name +
+                                "\" is Static, so its instances were built not to move; declare it with "
+                                "update = UpdatePolicy::DynamicTransform");
+  }
+}
+
+inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
+                                              std::string_view op) {
+  check_movable(geometry, op);
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);
+  const std::size_t count = m_plan->blases()[g.blas].instance_count;
+  if (object_to_world.size() != count) {
+    throw UsageError(std::string(op) + ": geometry \"" + g.name + "\" has " +
+                                std::to_string(count) + " instances, " + std::to_string(object_to_world.size()) +
+                                " transforms given; give one per instance");
+  }
+  // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
+  // matrix leaves every instance where it was.
+  const std::uint32_t first = m_plan->tlas_index(geometry, 0, op);
+  for (std::size_t i = 0; i < count; ++i) {
+    Instance probe = m_instances[first + i];
+    probe.transform = object_to_world[i];
+    detail::check_instance(probe, first + i);  // throws for a non-finite or singular transform
+  }
+  for (std::size_t i = 0; i < count; ++i) m_instances[first + i].transform = object_to_world[i];
+  m_transforms_dirty = true;
+}
+
+inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask,
+                                        std::string_view op) {
+  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
+  if (m_instances[k].mask == mask) return;
+  m_instances[k].mask = mask;
+  m_tlas_rebuild = true;
+}
+
+inline void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
+                                             std::string_view op) {
+  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
+  check_movable(geometry, op);
+  Instance moved = m_instances[k];
+  moved.transform = object_to_world;
+  detail::check_instance(moved, k);  // throws for a non-finite or singular transform
+  m_instances[k] = moved;
+  m_transforms_dirty = true;
+}
+
+inline const PlannedBlas& SceneAcceleration::dynamic_geometry(GeometryId geometry, GeometryKind kind,
+                                                                std::string_view operation) const {
+  const PlannedGeometry& g = m_plan->geometry(geometry, operation);
+  const PlannedBlas& blas = m_plan->blases()[g.blas];
+  const std::string& name = g.name;
+  if (blas.update != UpdatePolicy::DynamicGeometry) {
+    throw UsageError(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.update) +
+                                ", so its BLAS was built not to change; declare it with "
+                                "update = UpdatePolicy::DynamicGeometry");
+  }
+  if (blas.kind != kind) {
+    throw UsageError(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.kind) +
+                                (kind == GeometryKind::procedural ? "; change its vertices with set_vertices or set_mesh"
+                                                                  : "; change its boxes with set_aabbs"));
+  }
+  return blas;
+}
+
+inline void SceneAcceleration::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op) {
+  dynamic_geometry(geometry, GeometryKind::procedural, op);
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);
+  const std::string where = std::string(op) + ": geometry \"" + g.name + "\"";
+  if (boxes.empty()) throw InvalidGeometryError(where + " given no boxes; give it at least one AABB");
+  std::vector<VkAabbPositionsKHR> list;
+  list.reserve(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (!proceduray::detail::valid_box(boxes[i])) validate(boxes[i], where + " AABB " + std::to_string(i));  // throws
+    const Aabb& a = boxes[i];
+    list.push_back({a.min.x, a.min.y, a.min.z, a.max.x, a.max.y, a.max.z});
+  }
+  BlasSlot& slot = m_blases[g.blas];
+  slot.boxes[g.geometry_index] = std::move(list);
+  slot.changed = true;
+}
+
+inline void SceneAcceleration::set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices,
+                                            std::string_view op) {
+  dynamic_geometry(geometry, GeometryKind::triangles, op);
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);
+  TriangleMesh mesh = m_blases[g.blas].meshes[g.geometry_index];
+  if (vertices.size() != mesh.vertices.size()) {
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name +
+                               "\" has " + std::to_string(mesh.vertices.size()) + " vertices, " +
+                               std::to_string(vertices.size()) + " given; new positions keep the count: "
+                               "call set_mesh to change the topology");
+  }
+  mesh.vertices.assign(vertices.begin(), vertices.end());
+  set_mesh(geometry, std::move(mesh), op);
+}
+
+inline void SceneAcceleration::set_mesh(GeometryId geometry, TriangleMesh mesh, std::string_view op) {
+  dynamic_geometry(geometry, GeometryKind::triangles, op);
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);
+  GeometryDesc check = GeometryDesc::triangles(mesh, {});
+  validate(check, g.name, op);  // throws InvalidGeometryError naming the geometry
+  BlasSlot& slot = m_blases[g.blas];
+  slot.meshes[g.geometry_index] = std::move(mesh);
+  slot.changed = true;
+}
+
+inline void SceneAcceleration::record_refit(VkCommandBuffer cmd, std::uint32_t b) {
+  RefittableBlas& blas = *m_blases[b].dynamic;
+  if (m_plan->blases()[b].kind == GeometryKind::procedural) {
+    blas.record_refit(*m_ctx, cmd, std::span<const AabbGeometry>(aabb_geometries(b)));
+  } else {
+    blas.record_refit(*m_ctx, cmd, std::span<const TriangleGeometry>(triangle_geometries(b)));
+  }
+}
+
+inline std::vector<std::uint32_t> SceneAcceleration::prepare_blases(FrameWork& work) {
+  std::vector<std::uint32_t> refits;
+  for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
+    BlasSlot& slot = m_blases[b];
+    if (!slot.changed) continue;
+    slot.changed = false;
+    const bool procedural = m_plan->blases()[b].kind == GeometryKind::procedural;
+    const auto boxes = procedural ? aabb_geometries(b) : std::vector<AabbGeometry>{};
+    const auto meshes = procedural ? std::vector<TriangleGeometry>{} : triangle_geometries(b);
+    const bool refit = procedural ? slot.dynamic->same_topology(std::span<const AabbGeometry>(boxes))
+                                  : slot.dynamic->same_topology(std::span<const TriangleGeometry>(meshes));
+    if (refit) {
+      refits.push_back(b);
+      ++work.blas_refits;
+      m_transforms_dirty = true;  // the TLAS holds the old bounds: refit it
+    } else {
+      // A new structure (the old one is freed whole, handle before memory); its instances point at it.
+      slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes))
+                                : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes));
+      const PlannedBlas& blas = m_plan->blases()[b];
+      for (std::uint32_t k = 0; k < blas.instance_count; ++k) {
+        m_instances[blas.first_instance + k].blas = &slot.dynamic->structure();
+      }
+      ++work.blas_builds;
+      m_tlas_rebuild = true;
+    }
+  }
+  return refits;
+}
+
+inline FrameWork SceneAcceleration::record(VkCommandBuffer cmd) {
+  FrameWork work;
+  const std::vector<std::uint32_t> refits = prepare_blases(work);
+  for (std::uint32_t b : refits) record_refit(cmd, b);  // each ends with a barrier for the TLAS build
+  if (m_tlas_rebuild) {
+    m_tlas.record_build(*m_ctx, cmd, m_instances);
+    ++work.tlas_builds;
+  } else if (m_transforms_dirty) {
+    m_tlas.record_update(*m_ctx, cmd, m_instances);
+    ++work.tlas_updates;
+  }
+  m_transforms_dirty = false;
+  m_tlas_rebuild = false;
+  return work;
+}
+
+}  // namespace proceduray::vk

@@ -1,0 +1,98 @@
+// The ray-tracing pipeline of a compiled scene: each planned stage's GLSL read from the shader
+// folders and compiled after its declarations, the planned groups, the plan's recursion depth,
+// and a disk pipeline cache when asked.
+//
+//   proceduray::vk::PipelineTimings timings;
+//   std::unique_ptr<proceduray::vk::Pipeline> pipeline = proceduray::vk::make_scene_pipeline(
+//       ctx, plan, bindings.layouts(), bindings.push_size(), {.shader_dirs = {"shaders"}}, &timings);
+//   timings.compile_ms;   // glslang, all stages
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/scene/plan.hpp>
+#include <proceduray/vk/pipeline.hpp>
+#include <proceduray/vk/pipeline_cache.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// Where a scene's shaders are found and what they are compiled with. Every member has a default.
+struct PipelineOptions {
+  std::vector<std::filesystem::path> shader_dirs;  ///< where the plan's shader names are read; default: the current folder
+  /// Replaces the plan's declarations when set, e.g. with files written at build time (glsl_files);
+  /// extra_declarations still follow.
+  std::function<std::string(ShaderStage, const std::string& name)> declarations;
+  /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
+  std::string extra_declarations;
+  std::filesystem::path pipeline_cache;  ///< cache file; empty (default): none
+};
+
+/// What making the pipeline cost, in milliseconds of wall time.
+struct PipelineTimings {
+  double compile_ms = 0;         ///< GLSL to SPIR-V (glslang)
+  double pipeline_ms = 0;        ///< vkCreateRayTracingPipelinesKHR
+  bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
+};
+
+/// The path of shader `name` in the first of `dirs` that has it; throws EnvironmentError listing the folders.
+inline std::string find_shader(std::span<const std::filesystem::path> dirs, const std::string& name) {
+  std::string tried;
+  for (const auto& dir : dirs) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(dir / name, ec)) return (dir / name).string();
+    tried += " '" + dir.string() + "'";
+  }
+  throw EnvironmentError("Renderer: shader '" + name + "' is not in any shader folder (searched" + tried +
+                         "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
+}
+
+/// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push constants.
+inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
+                                                     std::span<const VkDescriptorSetLayout> set_layouts,
+                                                     std::uint32_t push_size, PipelineOptions options,
+                                                     PipelineTimings* timings = nullptr) {
+  using Clock = std::chrono::steady_clock;
+  auto ms_since = [](Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
+  if (options.shader_dirs.empty()) options.shader_dirs.push_back(std::filesystem::current_path());
+  const PipelinePlan& planned = plan.pipeline();
+  PipelineTimings t;
+  PipelineDesc desc;
+  auto start = Clock::now();
+  for (const PlannedStage& stage : planned.stages) {
+    const std::string path = find_shader(options.shader_dirs, stage.shader);
+    std::string preamble = (options.declarations ? options.declarations(stage.stage, stage.shader)
+                                                 : stage.declarations) + options.extra_declarations;
+    desc.add_shader(stage.stage, compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
+                                               .preamble = std::move(preamble)}));
+  }
+  t.compile_ms = ms_since(start);
+  for (const PlannedGroup& g : planned.groups) {
+    static constexpr VkRayTracingShaderGroupTypeKHR types[] = {VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR,
+                                                               VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR,
+                                                               VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR};
+    desc.groups.push_back({types[static_cast<std::uint32_t>(g.type)], g.general, g.closest_hit, g.any_hit, g.intersection});
+  }
+  desc.set_layouts.assign(set_layouts.begin(), set_layouts.end());
+  desc.push_constant_size = push_size;
+  desc.max_recursion_depth = planned.max_recursion_depth;
+  PipelineCache cache(ctx, options.pipeline_cache);
+  desc.cache = cache.get();
+  start = Clock::now();
+  auto pipeline = std::make_unique<Pipeline>(ctx, desc);
+  t.pipeline_ms = ms_since(start);
+  t.pipeline_cached = cache.loaded();
+  cache.save();
+  if (timings != nullptr) *timings = t;
+  return pipeline;
+}
+
+}  // namespace proceduray::vk
