@@ -1,4 +1,5 @@
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/scene.hpp"
 
 #include <doctest/doctest.h>
 
@@ -22,5 +23,14 @@ TEST_CASE("errors are logic errors") {
   CHECK_THROWS_AS(throw UnknownIdError("x"), std::logic_error);
   CHECK_THROWS_AS(throw MissingEntryError("x"), SceneError);
   CHECK_THROWS_AS(throw DeviceLimitError("x"), std::logic_error);
-  CHECK_THROWS_WITH(throw InvalidGeometryError("message"), "message");
+}
+
+TEST_CASE("errors a library call's message names the call, the id, the nearest ids and the fix") {
+  Scene scene;
+  scene.add_geometry("Pacman", GeometryDesc::procedural({{glm::vec3(-1.0f), glm::vec3(1.0f)}}));
+  scene.add_geometry("Plane", GeometryDesc::procedural({{glm::vec3(-2.0f), glm::vec3(2.0f)}}));
+  CHECK_THROWS_WITH_AS(scene.geometry_id("Pacmn"),
+                       "Scene::geometry_id: unknown geometry id \"Pacmn\"; nearest known ids: \"Pacman\", \"Plane\""
+                       "; register it first or fix the spelling",
+                       UnknownIdError);
 }

@@ -6,7 +6,7 @@
 //       auto material = scene.add_local_signature<Material>("material");
 //       set_global_signature(proceduray::default_global_signature({constants_slot}));
 //       table.add_raygen("raygen.rgen");
-//       add_object<SphereHit>("sphere", {.geometry = ..., .intersection = "sphere.rint",
+//       add_object<SphereHit>("sphere", {.geometry = sphere_geometry, .intersection = "sphere.rint",
 //                                        .closest_hit = {{radiance, "shade.rchit"}}}, material, {red});
 //     }
 //   };

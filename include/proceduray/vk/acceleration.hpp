@@ -1,16 +1,19 @@
 // Bottom-level (AABB) and top-level acceleration structures, built on the device and waited for.
 //
 //   VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
-//   auto blas = proceduray::vk::build_blas(ctx, {{.boxes = {&box, 1}}});
+//   const proceduray::vk::AabbGeometry boxes{.boxes = {&box, 1}};
+//   auto blas = proceduray::vk::build_blas(ctx, {&boxes, 1});
 //   std::vector<proceduray::vk::Instance> instances{
 //       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {-1.5f, 0, 0}), .sbt_offset = 0},
 //       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {+1.5f, 0, 0}), .sbt_offset = 1}};
 //   auto tlas = proceduray::vk::build_tlas(ctx, instances);
 //
-//   const glm::vec3 quad[] = {...};  const std::uint32_t tris[] = {0, 1, 2, 0, 2, 3};
-//   auto plane = proceduray::vk::build_blas(ctx, {{.vertices = quad, .indices = tris}});   // triangles
-//   proceduray::vk::Tlas tlas(ctx, instances, {.allow_update = true});
-//   instances[0].transform = moved;  tlas.update(ctx, instances);                          // refit
+//   const glm::vec3 quad[] = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+//   const std::uint32_t tris[] = {0, 1, 2, 0, 2, 3};
+//   const proceduray::vk::TriangleGeometry mesh{.vertices = quad, .indices = tris};
+//   auto plane = proceduray::vk::build_blas(ctx, {&mesh, 1});                             // triangles
+//   proceduray::vk::Tlas moving(ctx, instances, {.allow_update = true});
+//   instances[0].transform = moved;  moving.update(ctx, instances);                       // refit
 //
 // build_* record the build, submit it and wait: the result is ready to trace when they return.
 // Static BLASes are compacted by default (BuildOptions::compact): the copy is what stays.

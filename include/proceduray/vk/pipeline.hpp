@@ -1,11 +1,11 @@
 // A ray-tracing pipeline from compiled shaders and the groups that use them.
 //
 //   proceduray::vk::PipelineDesc desc;
-//   auto rgen = desc.add_shader(ShaderStage::raygen, compile_glsl(...));
-//   auto miss = desc.add_shader(ShaderStage::miss, compile_glsl(...));
-//   auto hit  = desc.add_shader(ShaderStage::closest_hit, compile_glsl(...));
-//   auto isec = desc.add_shader(ShaderStage::intersection, compile_glsl(...));
-//   desc.groups = {ShaderGroup::general(rgen), ShaderGroup::general(miss),
+//   auto rgen = desc.add_shader(ShaderStage::raygen, compile_glsl({.stage = ShaderStage::raygen, .name = "raygen.rgen", .code = rgen_glsl}));
+//   auto miss = desc.add_shader(ShaderStage::miss, miss_spirv);             // SPIR-V from compile_glsl
+//   auto hit  = desc.add_shader(ShaderStage::closest_hit, hit_spirv);
+//   auto isec = desc.add_shader(ShaderStage::intersection, isec_spirv);
+//   desc.groups = {ShaderGroup::general_shader(rgen), ShaderGroup::general_shader(miss),
 //                  ShaderGroup::procedural(hit, isec)};
 //   desc.set_layouts = {set.layout()};
 //   desc.push_constant_size = sizeof(Camera);

@@ -1,7 +1,7 @@
 // A VkPipelineCache kept on disk, so a second run skips shader compilation.
 //
 //   proceduray::vk::PipelineCache cache(ctx, "proceduray.cache");   // loads it if valid
-//   ... create pipelines with cache.get() ...
+//   // ... create pipelines with cache.get() ...
 //   cache.save();                                                    // writes it back
 //
 // The file is this library's own: a magic, the data size and an FNV-1a checksum, then the

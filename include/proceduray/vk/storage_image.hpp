@@ -2,7 +2,7 @@
 //
 //   proceduray::vk::StorageImage image(ctx, 640, 480);   // in VK_IMAGE_LAYOUT_GENERAL
 //   set.write(1, image.view());
-//   ... trace ...
+//   // ... trace ...
 //   std::vector<std::uint8_t> rgba = image.read();        // width * height * 4 bytes, rows top to bottom
 #pragma once
 

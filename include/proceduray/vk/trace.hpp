@@ -1,6 +1,7 @@
 // Records and runs one vkCmdTraceRaysKHR over a width x height grid.
 //
-//   proceduray::vk::trace(ctx, pipeline, set, sbt, 640, 480, proceduray::vk::bytes_of(camera));
+//   proceduray::vk::trace(ctx, pipeline, set, sbt, 640, 480, proceduray::vk::bytes_of(camera));   // waits
+//   ctx.submit([&](VkCommandBuffer cmd) { proceduray::vk::record_trace(ctx, cmd, pipeline, sets, sbt, 640, 480); });
 //
 // The size is checked against the device's dispatch limits before anything is recorded.
 #pragma once
@@ -24,7 +25,6 @@ inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint3
   }
 }
 
-/// Binds the pipeline, set 0 and the push constants, traces, and waits for the queue.
 /// Records the binds (pipeline, sets 0..n-1, push constants), the stack size and one trace into `cmd`;
 /// `before` and `after` run right around vkCmdTraceRaysKHR (timestamps, say).
 template <class Around = void (*)(VkCommandBuffer)>
@@ -57,6 +57,7 @@ inline void trace(const Context& ctx, const Pipeline& pipeline, const Descriptor
                   const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
                   std::span<const std::byte> push_constants = {}) {
   check_trace_size(ctx, width, height);
+/// Checks the size, then records the binds and one trace, submits them and waits for the queue.
   const VkDescriptorSet raw = set.get();
   ctx.submit([&](VkCommandBuffer cmd) {
     record_trace(ctx, cmd, pipeline, {&raw, 1}, sbt, width, height, push_constants);
