@@ -13,7 +13,7 @@ static_assert(alignof(proceduray::DeviceAddress<float>) == 8);
 static_assert(std::is_trivially_copyable_v<proceduray::DeviceAddress<float>>);
 static_assert(std::is_standard_layout_v<proceduray::DeviceAddress<float>>);
 
-TEST_CASE("a device address's bytes are its value's, as a buffer_reference reads them") {
+TEST_CASE("a device address's bytes are its value's as a buffer_reference reads them") {
   const std::uint64_t value = 0x0123'4567'89ab'cdefull;
   proceduray::DeviceAddress<float> a;
   a.value = value;
