@@ -2,6 +2,6 @@
 #include <cstdio>
 using namespace doc_vk;
 // @declarations
-void usage(proceduray::vk::Renderer& renderer, proceduray::GeometryId pacman, proceduray::InstanceTransform moved) {
+void usage(proceduray::vk::Renderer& renderer, proceduray::GeometryId pacman, const glm::mat4& moved) {
   // @statements
 }

@@ -103,7 +103,7 @@ TEST_CASE("context gpu preference finds a gpu exactly when one can ray trace, el
 
 TEST_CASE("context rejects an unknown PROCEDURAY_DEVICE value") {
   ScopedEnv env("PROCEDURAY_DEVICE", "tpu");
-  CHECK_THROWS_WITH_AS(vk::Context(), doctest::Contains("PROCEDURAY_DEVICE='tpu'"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::Context(), doctest::Contains("PROCEDURAY_DEVICE='tpu'"), UsageError);
 }
 
 TEST_CASE("context PROCEDURAY_DEVICE=cpu selects the cpu device") {

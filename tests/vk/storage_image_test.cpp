@@ -50,8 +50,8 @@ TEST_CASE("storage image reads back the pixels a shader wrote, row by row from t
 
 TEST_CASE("storage image rejects sizes outside the device's limit") {
   TestContext t;
-  CHECK_THROWS_WITH_AS(vk::StorageImage(t.ctx, 0, 4), doctest::Contains("size 0x4"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::StorageImage(t.ctx, 0, 4), doctest::Contains("size 0x4"), UsageError);
   const auto limit = t.ctx.properties().limits.maxImageDimension2D;
   CHECK_THROWS_WITH_AS(vk::StorageImage(t.ctx, limit + 1, 4), doctest::Contains(std::to_string(limit).c_str()),
-                       std::invalid_argument);
+                       DeviceLimitError);
 }

@@ -5,7 +5,9 @@
 //     // Scene::geometry_id: unknown geometry id "Pacmn"; nearest known ids: "Pacman", ...
 //   }
 //
-// All derive from SceneError, itself a std::logic_error: they are bugs in the calling code.
+// All derive from SceneError, a proceduray::UsageError (std::logic_error): they are bugs in the
+// calling code. A scene that does not fit a device throws proceduray::DeviceLimitError (error.hpp),
+// a runtime error, not a SceneError.
 #pragma once
 
 #include <algorithm>
@@ -16,12 +18,14 @@
 #include <utility>
 #include <vector>
 
+#include "proceduray/error.hpp"
+
 namespace proceduray {
 
 /// Base of every scene usage error.
-class SceneError : public std::logic_error {
+class SceneError : public UsageError {
  public:
-  using std::logic_error::logic_error;
+  using UsageError::UsageError;
 };
 /// An id registered twice, or two entries bound to the same (ray, geometry, instance).
 class DuplicateIdError : public SceneError {
@@ -50,11 +54,6 @@ class HitGroupKindError : public SceneError {
 };
 /// (ray, geometry) pairs with no hit entry and no default entry; the message lists them.
 class MissingEntryError : public SceneError {
- public:
-  using SceneError::SceneError;
-};
-/// A scene that exceeds a device limit (instances, geometries, recursion, attribute size, offsets).
-class DeviceLimitError : public SceneError {
  public:
   using SceneError::SceneError;
 };

@@ -47,6 +47,9 @@ struct PipelinePlan {
   std::vector<PlannedStage> stages;               ///< used stages, each once: raygen, miss, then hit stages
   std::vector<PlannedGroup> groups;               ///< used groups: raygen, miss, hit groups, callables; handle order
   std::uint32_t max_recursion_depth = 1;          ///< as declared by ShaderTable::set_max_recursion_depth
+  /// Whether the depth was declared (ShaderTable::set_max_recursion_depth); default false: the
+  /// backend refuses a pipeline whose non-raygen stages trace rays at an undeclared depth.
+  bool recursion_depth_declared = false;
   std::uint32_t max_payload_size = 0;             ///< largest ray payload (bytes)
   std::uint32_t max_attribute_size = 0;           ///< largest hit attributes of a used hit group (bytes)
   std::array<std::uint32_t, 4> max_record_data_size{};  ///< per region (SbtRegionKind order), bytes after the handle

@@ -125,12 +125,14 @@ class ShaderTable {
     m_scene->global_signatures().check_index(id.index(), "ShaderTable::set_global_signature");
     m_global_signature = id;
   }
-  /// Sets the deepest traceRayEXT nesting the shaders do (1 = rays from raygen only); default 1.
+  /// Sets the deepest traceRayEXT nesting the shaders do (1 = rays from raygen only); default 1,
+  /// undeclared: a pipeline whose closest-hit, miss, ... shaders trace rays needs it declared (>= 2).
   void set_max_recursion_depth(std::uint32_t depth) {
     if (depth == 0) {
       throw SceneError("ShaderTable::set_max_recursion_depth: depth 0 allows no traceRayEXT at all; use >= 1");
     }
     m_max_recursion_depth = depth;
+    m_recursion_depth_declared = true;
   }
 
   /// All entries in the order they were added.
@@ -153,7 +155,7 @@ class ShaderTable {
   }
 
   /// Pass two: checks the entries against the scene and `limits` and lays out the table.
-  /// Throws MissingEntryError, DuplicateIdError, DeviceLimitError, std::length_error (stride).
+  /// Throws MissingEntryError, DuplicateIdError, DeviceLimitError (stride and other limits).
   /// This table must outlive the result and must not be moved while it is used.
   ShaderBindingTable build(const DeviceLimits& limits) const;
 
@@ -267,6 +269,7 @@ class ShaderTable {
   std::vector<std::string> m_raygen_shaders;
   GlobalSignatureId m_global_signature;
   std::uint32_t m_max_recursion_depth = 1;
+  bool m_recursion_depth_declared = false;
 };
 
 inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
@@ -310,7 +313,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
                            " instances, the device allows " + std::to_string(limits.max_instance_count) +
                            " (maxInstanceCount); merge geometry into fewer instances");
   }
-  if (instance_total > max_instance_sbt_offset + std::uint64_t{1}) {
+  if (instance_total > 0 && !fits_instance_field(instance_total - 1)) {  // the last instanceCustomIndex
     throw DeviceLimitError(std::string(op) + ": the scene has " + std::to_string(instance_total) +
                            " instances, more than instanceCustomIndex's 24 bits (" +
                            std::to_string(max_instance_sbt_offset + 1) + "); merge geometry into fewer instances");
@@ -383,7 +386,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
       }
     };
     auto check_offset = [&](std::uint64_t offset) {
-      if (offset > max_instance_sbt_offset) {
+      if (!fits_instance_field(offset)) {
         throw DeviceLimitError(std::string(op) + ": BLAS \"" + blas.name + "\" needs instance SBT offset " +
                                std::to_string(offset) + ", above the 24-bit maximum " +
                                std::to_string(max_instance_sbt_offset) +
@@ -449,6 +452,7 @@ inline ShaderBindingTable ShaderTable::build(const DeviceLimits& limits) const {
   // Pipeline plan: only the stages and groups records use.
   PipelinePlan& plan = out.m_plan;
   plan.max_recursion_depth = m_max_recursion_depth;
+  plan.recursion_depth_declared = m_recursion_depth_declared;
   plan.global_signature = m_global_signature;
   // A stage is shared by every group that names it, except that an intersection shader gets one
   // stage per any-hit shader it is paired with: lavapipe (Mesa 25.0) binds the any-hit of the

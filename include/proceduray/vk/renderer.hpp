@@ -20,6 +20,11 @@
 // the plan (shaders read from shader_dirs, compiled with the declarations glsl_for derives, the
 // stack size from the groups' own sizes, a disk cache when asked), and the SBT bytes.
 // The table and its scene must outlive the renderer.
+//
+// Errors are proceduray::Error (error.hpp): a bad matrix, box or instance index given to set_*
+// throws InvalidGeometryError naming the call, the geometry and the instance; a closest-hit (or
+// other non-raygen) shader that traces rays at an undeclared depth throws UsageError at
+// construction (ShaderTable::set_max_recursion_depth); a limit of the device, DeviceLimitError.
 #pragma once
 
 #include <proceduray/scene/glsl_for.hpp>
@@ -151,6 +156,10 @@ class Renderer {
   };
   const Blas& dynamic_geometry(GeometryId geometry, GeometryKind kind, const char* operation) const;
   void check_movable(GeometryId geometry, const char* operation) const;
+  /// The TLAS index of (geometry, instance); InvalidGeometryError naming `operation` when the geometry has no such instance.
+  std::uint32_t movable_instance(GeometryId geometry, std::uint32_t instance, const char* operation) const;
+  /// InvalidGeometryError naming `operation`, the geometry and the instance for a non-finite or singular matrix.
+  void check_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& m, const char* operation) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit,
   /// which the frame's command buffer records before the TLAS work and the trace.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
@@ -300,9 +309,9 @@ inline void Renderer::build_descriptor_sets() {
   std::uint32_t last_set = 0;
   for (const proceduray::Binding& b : desc.bindings) {
     if (b.count != 1) {
-      throw std::invalid_argument("Renderer: set " + std::to_string(b.set) + " binding " + std::to_string(b.binding) +
-                                  " is an array of " + std::to_string(b.count) +
-                                  "; descriptor arrays are not supported yet: use one binding per resource");
+      throw UsageError("Renderer: set " + std::to_string(b.set) + " binding " + std::to_string(b.binding) +
+                       " is an array of " + std::to_string(b.count) +
+                       "; descriptor arrays are not supported yet: use one binding per resource");
     }
     static constexpr VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR,
                                                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
@@ -329,8 +338,8 @@ inline std::string Renderer::find_shader(const std::string& name) const {
     if (std::filesystem::is_regular_file(dir / name, ec)) return (dir / name).string();
     tried += " '" + dir.string() + "'";
   }
-  throw std::runtime_error("Renderer: shader '" + name + "' is not in any shader folder (searched" + tried +
-                           "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
+  throw UsageError("Renderer: shader '" + name + "' is not in any shader folder (searched" + tried +
+                   "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
 }
 
 inline void Renderer::build_pipeline() {
@@ -340,9 +349,9 @@ inline void Renderer::build_pipeline() {
     const std::uint32_t bytes = m_table->scene().global_signature(plan.global_signature).desc.push_bytes();
     const std::uint32_t limit = m_ctx->properties().limits.maxPushConstantsSize;
     if (bytes > limit) {
-      throw std::invalid_argument("Renderer: the global signature declares " + std::to_string(bytes) +
-                                  " bytes of push constants, " + m_ctx->name() + " allows " + std::to_string(limit) +
-                                  " (maxPushConstantsSize; every device allows 128); move the rest to a uniform");
+      throw DeviceLimitError("Renderer: the global signature declares " + std::to_string(bytes) +
+                             " bytes of push constants, " + m_ctx->name() + " allows " + std::to_string(limit) +
+                             " (maxPushConstantsSize; every device allows 128); move the rest to a uniform");
     }
   }
   auto start = Clock::now();
@@ -350,8 +359,11 @@ inline void Renderer::build_pipeline() {
     const std::string path = find_shader(stage.shader);
     std::string preamble = m_options.declarations ? m_options.declarations(stage.stage, stage.shader)
                                                   : glsl_for(*m_table, stage.stage, stage.shader) + m_options.extra_declarations;
-    desc.add_shader(stage.stage, compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
-                                               .preamble = std::move(preamble)}));
+    std::vector<std::uint32_t> spirv = compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
+                                                     .preamble = std::move(preamble)});
+    check_recursion_depth("Renderer", stage.stage, stage.shader, spirv, plan.max_recursion_depth,
+                          plan.recursion_depth_declared, "call ShaderTable::set_max_recursion_depth(n)");  // throws
+    desc.add_shader(stage.stage, std::move(spirv));
   }
   m_timings.compile_ms = ms_since(start);
   for (const PlannedGroup& g : plan.groups) {
@@ -385,9 +397,9 @@ inline Renderer::Uniform& Renderer::uniform(std::uint32_t set, std::uint32_t bin
     }
     return u;
   }
-  throw std::invalid_argument(std::string(operation) + ": set " + std::to_string(set) + " binding " +
-                              std::to_string(binding) + " is not a uniform buffer of the global signature; "
-                              "declare it there (a UniformSlot converts to its Binding)");
+  throw UsageError(std::string(operation) + ": set " + std::to_string(set) + " binding " +
+                   std::to_string(binding) + " is not a uniform buffer of the global signature; "
+                   "declare it there (a UniformSlot converts to its Binding)");
 }
 
 inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding, std::span<const std::byte> bytes,
@@ -395,8 +407,8 @@ inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding
   for (Storage& s : m_storage) {
     if (s.set != set || s.binding != binding) continue;
     if (bytes.empty()) {
-      throw std::invalid_argument(std::string(operation) + ": no elements given for set " + std::to_string(set) +
-                                  " binding " + std::to_string(binding) + "; a storage buffer needs at least one");
+      throw UsageError(std::string(operation) + ": no elements given for set " + std::to_string(set) +
+                       " binding " + std::to_string(binding) + "; a storage buffer needs at least one");
     }
     if (!s.buffer || s.buffer->size() < bytes.size()) {
       s.buffer = std::make_unique<Buffer>(*m_ctx, bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -405,9 +417,9 @@ inline void Renderer::set_storage_bytes(std::uint32_t set, std::uint32_t binding
     s.buffer->write(bytes);
     return;
   }
-  throw std::invalid_argument(std::string(operation) + ": set " + std::to_string(set) + " binding " +
-                              std::to_string(binding) + " is not a storage buffer of the global signature; "
-                              "declare it there (a StorageSlot converts to its Binding)");
+  throw UsageError(std::string(operation) + ": set " + std::to_string(set) + " binding " +
+                   std::to_string(binding) + " is not a storage buffer of the global signature; "
+                   "declare it there (a StorageSlot converts to its Binding)");
 }
 
 inline const PushConstantBlock* Renderer::push_block() const {
@@ -419,14 +431,14 @@ inline const PushConstantBlock* Renderer::push_block() const {
 inline void Renderer::set_push_bytes(PushConstantBlock slot, const TypeOps* type, std::span<const std::byte> bytes) {
   const PushConstantBlock* block = push_block();
   if (block == nullptr || block->type == nullptr) {
-    throw std::invalid_argument(std::string("Renderer::set_push: the global signature declares no typed push constants (") +
-                                std::to_string(m_pipeline->push_constant_size()) + " untyped bytes); declare them with "
-                                "GlobalSignatureDesc::push_constants = a PushConstantSlot<" + std::string(type->glsl_name) + ">");
+    throw UsageError(std::string("Renderer::set_push: the global signature declares no typed push constants (") +
+                     std::to_string(m_pipeline->push_constant_size()) + " untyped bytes); declare them with "
+                     "GlobalSignatureDesc::push_constants = a PushConstantSlot<" + std::string(type->glsl_name) + ">");
   }
   if (block->type != type || block->name != slot.name) {
-    throw std::invalid_argument("Renderer::set_push: the slot holds " + std::string(type->glsl_name) + " \"" + slot.name +
-                                "\" but the global signature declares " + std::string(block->type->glsl_name) + " \"" +
-                                block->name + "\"; pass the slot the signature was declared with");
+    throw UsageError("Renderer::set_push: the slot holds " + std::string(type->glsl_name) + " \"" + slot.name +
+                     "\" but the global signature declares " + std::string(block->type->glsl_name) + " \"" +
+                     block->name + "\"; pass the slot the signature was declared with");
   }
   m_push.assign(bytes.begin(), bytes.end());
 }
@@ -434,10 +446,31 @@ inline void Renderer::set_push_bytes(PushConstantBlock slot, const TypeOps* type
 inline void Renderer::check_movable(GeometryId geometry, const char* operation) const {
   const Scene& scene = m_table->scene();
   if (scene.blas_of(geometry).update == UpdatePolicy::Static) {
-    throw std::invalid_argument(std::string(operation) + ": geometry \"" + scene.geometries().name(geometry.index()) +
-                                "\" is Static, so its instances were built not to move; declare it with "
-                                "update = UpdatePolicy::DynamicTransform");
+    throw UsageError(std::string(operation) + ": geometry \"" + scene.geometries().name(geometry.index()) +
+                     "\" is Static, so its instances were built not to move; declare it with "
+                     "update = UpdatePolicy::DynamicTransform");
   }
+}
+
+inline std::uint32_t Renderer::movable_instance(GeometryId geometry, std::uint32_t instance, const char* operation) const {
+  const Scene& scene = m_table->scene();
+  const std::size_t count = scene.blas_of(geometry).instances.size();
+  if (instance >= count) {
+    throw InvalidGeometryError(std::string(operation) + ": geometry \"" + scene.geometries().name(geometry.index()) +
+                               "\" has " + std::to_string(count) + " instances, no instance " + std::to_string(instance) +
+                               "; pass an instance index below " + std::to_string(count) +
+                               " (the order of GeometryDesc::instances)");
+  }
+  check_movable(geometry, operation);
+  return m_table->tlas_index(geometry, instance, operation);
+}
+
+inline void Renderer::check_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
+                                      const char* operation) const {
+  detail::check_matrix(m, [&] {
+    return std::string(operation) + ": geometry \"" + m_table->scene().geometries().name(geometry.index()) +
+           "\" instance " + std::to_string(instance) + " transform";
+  });
 }
 
 inline void Renderer::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world) {
@@ -446,18 +479,14 @@ inline void Renderer::set_transforms(GeometryId geometry, std::span<const glm::m
   check_movable(geometry, op);
   const std::size_t count = scene.blas_of(geometry).instances.size();
   if (object_to_world.size() != count) {
-    throw std::invalid_argument(std::string(op) + ": geometry \"" + scene.geometries().name(geometry.index()) + "\" has " +
-                                std::to_string(count) + " instances, " + std::to_string(object_to_world.size()) +
-                                " transforms given; give one per instance");
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + scene.geometries().name(geometry.index()) +
+                               "\" has " + std::to_string(count) + " instances, " +
+                               std::to_string(object_to_world.size()) + " transforms given; give one per instance");
   }
   // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
   // matrix leaves every instance where it was.
   const std::uint32_t first = m_table->tlas_index(geometry, 0, op);
-  for (std::size_t i = 0; i < count; ++i) {
-    Instance probe = m_instances[first + i];
-    probe.transform = object_to_world[i];
-    detail::check_instance(probe, first + i);  // throws for a non-finite or singular transform
-  }
+  for (std::uint32_t i = 0; i < count; ++i) check_transform(geometry, i, object_to_world[i], op);  // throws
   for (std::size_t i = 0; i < count; ++i) m_instances[first + i].transform = object_to_world[i];
   m_transforms_dirty = true;
 }
@@ -470,12 +499,10 @@ inline void Renderer::set_mask(GeometryId geometry, std::uint32_t instance, std:
 }
 
 inline void Renderer::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
-  const std::uint32_t k = m_table->tlas_index(geometry, instance, "Renderer::set_transform");
-  check_movable(geometry, "Renderer::set_transform");
-  Instance moved = m_instances[k];
-  moved.transform = object_to_world;
-  detail::check_instance(moved, k);  // throws for a non-finite or singular transform
-  m_instances[k] = moved;
+  constexpr const char* op = "Renderer::set_transform";
+  const std::uint32_t k = movable_instance(geometry, instance, op);
+  check_transform(geometry, instance, object_to_world, op);  // throws
+  m_instances[k].transform = object_to_world;
   m_transforms_dirty = true;
 }
 
@@ -485,14 +512,14 @@ inline const Blas& Renderer::dynamic_geometry(GeometryId geometry, GeometryKind 
   const Blas& blas = scene.blases()[g.blas];
   const std::string name = scene.geometries().name(geometry.index());
   if (blas.update != UpdatePolicy::DynamicGeometry) {
-    throw std::invalid_argument(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.update) +
-                                ", so its BLAS was built not to change; declare it with "
-                                "update = UpdatePolicy::DynamicGeometry");
+    throw UsageError(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.update) +
+                     ", so its BLAS was built not to change; declare it with "
+                     "update = UpdatePolicy::DynamicGeometry");
   }
   if (blas.kind != kind) {
-    throw std::invalid_argument(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.kind) +
-                                (kind == GeometryKind::procedural ? "; change its vertices with set_vertices or set_mesh"
-                                                                  : "; change its boxes with set_aabbs"));
+    throw UsageError(std::string(operation) + ": geometry \"" + name + "\" is " + to_string(blas.kind) +
+                     (kind == GeometryKind::procedural ? "; change its vertices with set_vertices or set_mesh"
+                                                       : "; change its boxes with set_aabbs"));
   }
   return blas;
 }
@@ -592,24 +619,24 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   check_trace_size(*m_ctx, width, height);
   for (const Uniform& u : m_uniforms) {
     if (!u.buffer) {
-      throw std::logic_error("Renderer::render: the uniform at set " + std::to_string(u.set) + " binding " +
-                             std::to_string(u.binding) + " was never given a value; call set(slot, value) first");
+      throw UsageError("Renderer::render: the uniform at set " + std::to_string(u.set) + " binding " +
+                       std::to_string(u.binding) + " was never given a value; call set(slot, value) first");
     }
   }
   for (const Storage& s : m_storage) {
     if (!s.buffer) {
-      throw std::logic_error("Renderer::render: the storage buffer at set " + std::to_string(s.set) + " binding " +
-                             std::to_string(s.binding) + " was never given data; call set_storage(slot, values) first");
+      throw UsageError("Renderer::render: the storage buffer at set " + std::to_string(s.set) + " binding " +
+                       std::to_string(s.binding) + " was never given data; call set_storage(slot, values) first");
     }
   }
   if (m_pipeline->push_constant_size() != m_push.size()) {
     const PushConstantBlock* block = push_block();
-    throw std::logic_error(
+    throw UsageError(
         "Renderer::render: the global signature declares " + std::to_string(m_pipeline->push_constant_size()) +
         " bytes of push constants but " +
         (block != nullptr && block->type != nullptr
-             ? std::string("they were never given a value; call set_push(slot, value) first")
-             : std::string("they are untyped, so the renderer cannot fill them; declare them with a PushConstantSlot<T>")));
+       ? std::string("they were never given a value; call set_push(slot, value) first")
+       : std::string("they are untyped, so the renderer cannot fill them; declare them with a PushConstantSlot<T>")));
   }
   prepare_image(width, height);
   Frame frame{width, height, {}, 0, 0, false, {}};
