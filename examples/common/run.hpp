@@ -1,14 +1,14 @@
 // What every example does around its scene: time the build, trace frames, report medians,
 // write the last frame.
 //
-//   examples::print_build(renderer);
-//   auto run = examples::run_frames(renderer, o, [&](std::uint32_t f) { renderer.set(slot, constants(f)); });
+//   examples::print_build(ctx, renderer);
+//   auto run = examples::run_frames(renderer, o, [&](std::uint32_t f) { renderer.set(slot, constants(o, f)); });
 //   examples::print_run(run, o);
 //   examples::write_last(run, o);   // PNG, then its path
 //
 //   // or all of the above for a proceduray::Scene type with renderer_options(cache), in one call:
 //   return examples::run_scene<MyScene>(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
-//                                       [](const examples::Options& o, std::uint32_t frame) { return constants; });
+//                                       [](const examples::Options& o, std::uint32_t frame) { return constants(o, frame); });
 #pragma once
 
 #include "cli.hpp"

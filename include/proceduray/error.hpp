@@ -6,6 +6,7 @@
 //   catch (const proceduray::DeviceLimitError& e) { /* the scene does not fit this device */ }
 //   catch (const proceduray::Error& e) { std::puts(e.what()); /* anything else the library threw */ }
 //
+// The hierarchy:
 //   Error                                    common base (no std base of its own)
 //   ├─ UsageError        : std::logic_error   bad input: unknown id, bad AABB, singular transform, ...
 //   │   └─ SceneError, vk::ShaderCompileError, GlslNameError, ...

@@ -7,7 +7,8 @@
 //   auto blas = proceduray::vk::build_blas(ctx, ...);  // or the thin layer alone: examples/01_hello_sphere
 //
 // Layers: scene/ (pure, no Vulkan) and shader/ (pure) under vk/ (the thin backend), and
-// image/ for output. Each header also compiles on its own.
+// image/ for output. Each header also compiles on its own. Every exception the library throws
+// is a proceduray::Error (error.hpp): catch (const proceduray::Error& e) reaches them all.
 #pragma once
 
 #include <proceduray/error.hpp>

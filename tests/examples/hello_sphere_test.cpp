@@ -107,5 +107,5 @@ TEST_CASE("hello sphere renders are byte identical") {
 TEST_CASE("hello sphere rejects an empty image size") {
   TestContext t;
   hello_sphere::HelloSphere scene(t.ctx);
-  CHECK_THROWS_WITH_AS(scene.render(0, 90), doctest::Contains("size 0x90"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(scene.render(0, 90), doctest::Contains("size 0x90"), proceduray::UsageError);
 }

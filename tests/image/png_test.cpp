@@ -35,13 +35,13 @@ TEST_CASE("write_png writes pixels that read back unchanged") {
 TEST_CASE("write_png rejects a pixel count that does not match the size") {
   std::vector<std::uint8_t> rgba(10);
   CHECK_THROWS_WITH_AS(write_png(scratch_dir() / "bad.png", 2, 2, rgba), doctest::Contains("needs 16"),
-                       std::invalid_argument);
+                       UsageError);
 }
 
 TEST_CASE("check_writable names an unwritable path and leaves no file") {
   CHECK_THROWS_WITH_AS(check_writable("/nonexistent-dir/out.png"), doctest::Contains("/nonexistent-dir/out.png"),
-                       std::runtime_error);
-  CHECK_THROWS_WITH_AS(check_writable(scratch_dir()), doctest::Contains("is a directory"), std::runtime_error);
+                       EnvironmentError);
+  CHECK_THROWS_WITH_AS(check_writable(scratch_dir()), doctest::Contains("is a directory"), EnvironmentError);
   const auto fresh = scratch_dir() / "fresh.png";
   std::filesystem::remove(fresh);
   CHECK_NOTHROW(check_writable(fresh));

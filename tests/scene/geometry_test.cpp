@@ -56,6 +56,26 @@ TEST_CASE("geometry non-finite or singular transforms throw") {
   CHECK_THROWS_AS(validate(InstanceTransform(0.0f), "t"), InvalidGeometryError);
 }
 
+TEST_CASE("geometry one transform rule: relative flatness and an absolute determinant floor") {
+  auto uniform = [](float s) { return instance_transform(glm::scale(glm::mat4(1.0f), glm::vec3(s))); };
+  // 1e-11: |det| = 1e-33 is not flat relative to its scale, but under the 1e-30 floor.
+  CHECK(detail::check_transform(uniform(1e-11f)).singular);
+  CHECK_THROWS_WITH_AS(validate(uniform(1e-11f), "t"), doctest::Contains("t is singular (determinant 1e-33"),
+                       InvalidGeometryError);
+  CHECK_FALSE(detail::check_transform(uniform(1e-9f)).singular);  // |det| = 1e-27: above the floor
+  CHECK_FALSE(detail::check_transform(uniform(1e6f)).singular);   // large scales stay valid
+  // Relative: a matrix flattened along one axis by 1e-10 of its size, whatever the units.
+  CHECK(detail::check_transform(instance_transform(glm::scale(glm::mat4(1.0f), glm::vec3(1e4f, 1e4f, 1e-6f)))).singular);
+  // The rule reads elements through an accessor, so the backend applies it to a glm::mat4 in place.
+  const glm::mat4 m = glm::scale(glm::mat4(1.0f), glm::vec3(1e-11f));
+  CHECK(detail::check_transform_at([&m](int r, int c) { return m[c][r]; }).singular);
+  glm::mat4 moved(1.0f);
+  moved[3][1] = k_nan;  // column 3 (translation), row 1
+  const detail::TransformCheck nan = detail::check_transform_at([&moved](int r, int c) { return moved[c][r]; });
+  CHECK(nan.row == 1);
+  CHECK(nan.column == 3);
+}
+
 TEST_CASE("geometry descriptions are validated as a whole") {
   const TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
   CHECK_NOTHROW(validate(GeometryDesc::triangles(tri), "Plane", "op"));

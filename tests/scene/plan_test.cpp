@@ -173,20 +173,20 @@ TEST_CASE("plan layout checks device limits naming the limit the value and the d
   DeviceLimits limits = test::lavapipe_limits;
   limits.max_instance_count = 6;
   CHECK_THROWS_WITH_AS(t.layout(limits),
-                       doctest::Contains("Plan::layout: the scene has instances: 7, llvmpipe allows 6 (maxInstanceCount)"),
+                       doctest::Contains("Plan::layout: the scene's instance count is 7, llvmpipe allows 6 (maxInstanceCount)"),
                        DeviceLimitError);
   limits.device.clear();  // an unnamed device
-  CHECK_THROWS_WITH_AS(t.layout(limits), doctest::Contains("the scene has instances: 7, the device allows 6 (maxInstanceCount)"),
+  CHECK_THROWS_WITH_AS(t.layout(limits), doctest::Contains("the scene's instance count is 7, the device allows 6 (maxInstanceCount)"),
                        DeviceLimitError);
   limits = test::h100_limits;
   limits.max_ray_recursion_depth = 2;
   CHECK_THROWS_WITH_AS(t.layout(limits),
-                       doctest::Contains("the scene nests rays 3, NVIDIA H100 80GB HBM3 allows 2 (maxRayRecursionDepth)"),
+                       doctest::Contains("the scene's max recursion depth is 3, NVIDIA H100 80GB HBM3 allows 2 (maxRayRecursionDepth)"),
                        DeviceLimitError);
   limits = test::lavapipe_limits;
   limits.max_ray_hit_attribute_size = 8;
   CHECK_THROWS_WITH_AS(t.layout(limits),
-                       doctest::Contains("hit group \"Pacman\" reports bytes of hit attributes: 16, llvmpipe allows 8 "
+                       doctest::Contains("the hit attribute size (bytes) of hit group \"Pacman\" is 16, llvmpipe allows 8 "
                                          "(maxRayHitAttributeSize)"),
                        DeviceLimitError);
   limits = test::lavapipe_limits;
@@ -195,7 +195,7 @@ TEST_CASE("plan layout checks device limits naming the limit the value and the d
   limits = test::lavapipe_limits;
   limits.max_geometry_count = 0;
   CHECK_THROWS_WITH_AS(t.layout(limits),
-                       doctest::Contains("BLAS \"GlobalGeometry\" holds geometries: 1, llvmpipe allows 0 (maxGeometryCount)"),
+                       doctest::Contains("the geometry count of BLAS \"GlobalGeometry\" is 1, llvmpipe allows 0 (maxGeometryCount)"),
                        DeviceLimitError);
   // A scene that does not fit a device is no bug in the calling code: a runtime error, not a SceneError.
   CHECK_THROWS_AS(t.layout(limits), std::runtime_error);

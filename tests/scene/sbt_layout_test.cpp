@@ -94,34 +94,34 @@ TEST_CASE("sbt_layout record data written at data offsets never overlaps another
 
 TEST_CASE("sbt_layout stride above the device maximum names both numbers") {
   CHECK_THROWS_WITH_AS(layout_sbt(test::h100_limits.sbt, {{{1, 0}, {1, 0}, {1, 4096}, {}}}),
-                       doctest::Contains("hit record stride 4128 bytes"), std::length_error);
+                       doctest::Contains("hit record stride 4128 bytes"), DeviceLimitError);
   CHECK_THROWS_WITH_AS(layout_sbt(test::h100_limits.sbt, {{{1, 0}, {1, 0}, {1, 4096}, {}}}),
-                       doctest::Contains("maxShaderGroupStride 4096"), std::length_error);
+                       doctest::Contains("maxShaderGroupStride 4096"), DeviceLimitError);
   // The same data fits lavapipe's 16384.
   CHECK(layout_sbt(test::lavapipe_limits.sbt, {{{1, 0}, {1, 0}, {1, 4096}, {}}}).region(SbtRegionKind::hit).stride == 4128);
   // Raygen strides round to the base alignment: 4064 + 32 fits 4096 on H100, 4065 does not.
   CHECK(layout_sbt(test::h100_limits.sbt, {{{1, 4032}, {}, {}, {}}}).region(SbtRegionKind::raygen).stride == 4096);
-  CHECK_THROWS_AS(layout_sbt(test::h100_limits.sbt, {{{1, 4065}, {}, {}, {}}}), std::length_error);
+  CHECK_THROWS_AS(layout_sbt(test::h100_limits.sbt, {{{1, 4065}, {}, {}, {}}}), DeviceLimitError);
 }
 
 TEST_CASE("sbt_layout rejects impossible properties and an empty raygen region") {
   CHECK_THROWS_WITH_AS(layout_sbt({.handle_size = 32, .handle_alignment = 24, .base_alignment = 64, .max_stride = 4096},
                                   {{{1, 0}, {}, {}, {}}}),
-                       doctest::Contains("powers of two"), std::invalid_argument);
+                       doctest::Contains("powers of two"), UsageError);
   CHECK_THROWS_AS(layout_sbt({.handle_size = 32, .handle_alignment = 64, .base_alignment = 32, .max_stride = 4096},
                              {{{1, 0}, {}, {}, {}}}),
-                  std::invalid_argument);
-  CHECK_THROWS_AS(layout_sbt({.handle_size = 0}, {{{1, 0}, {}, {}, {}}}), std::invalid_argument);
+                  UsageError);
+  CHECK_THROWS_AS(layout_sbt({.handle_size = 0}, {{{1, 0}, {}, {}, {}}}), UsageError);
   CHECK_THROWS_WITH_AS(layout_sbt(test::lavapipe_limits.sbt, {{{0, 0}, {1, 0}, {1, 0}, {}}}),
-                       doctest::Contains("raygen region is empty"), std::invalid_argument);
+                       doctest::Contains("raygen region is empty"), UsageError);
 }
 
 TEST_CASE("sbt_layout record_offset past the region count throws") {
   const SbtLayout l = layout_sbt(test::lavapipe_limits.sbt, {{{1, 0}, {2, 0}, {}, {}}});
   CHECK(l.record_offset(SbtRegionKind::miss, 1) == 64);
   CHECK_THROWS_WITH_AS(l.record_offset(SbtRegionKind::miss, 2), doctest::Contains("miss record 2 does not exist"),
-                       std::out_of_range);
-  CHECK_THROWS_AS(l.data_offset(SbtRegionKind::hit, 0), std::out_of_range);
+                       UsageError);
+  CHECK_THROWS_AS(l.data_offset(SbtRegionKind::hit, 0), UsageError);
 }
 
 namespace {

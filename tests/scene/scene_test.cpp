@@ -8,8 +8,11 @@
 #include "proceduray/shader/field_list.hpp"
 #include "scene_fixtures.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 #include <limits>
+#include <string>
 
 using namespace proceduray;
 
@@ -145,6 +148,34 @@ TEST_CASE("scene geometries sharing a BLAS get consecutive geometry indices") {
   GeometryDesc other = GeometryDesc::procedural({Aabb{}}, {identity_transform()});
   other.blas = "Shared";
   CHECK_THROWS_WITH_AS(s.add_geometry("C", other), doctest::Contains("instances belong to the BLAS"), InvalidGeometryError);
+}
+
+TEST_CASE("scene add_geometry refuses a tiny scale, a NaN transform and an inverted AABB naming call, id, index, fix") {
+  Scene s;
+  const InstanceTransform ok = identity_transform();
+  const InstanceTransform tiny = instance_transform(glm::scale(glm::mat4(1.0f), glm::vec3(1e-11f)));
+  InstanceTransform nan = identity_transform();
+  nan[2][3] = std::numeric_limits<float>::quiet_NaN();
+  auto message = [&](const GeometryDesc& desc) -> std::string {
+    try {
+      s.add_geometry("Pacman", desc);
+    } catch (const InvalidGeometryError& e) {
+      return e.what();
+    }
+    return "(no exception)";
+  };
+  const std::string small = message(GeometryDesc::procedural({Aabb{}}, {ok, ok, tiny}));
+  CHECK_MESSAGE(small.find("Scene::add_geometry: geometry \"Pacman\" instance 2 transform is singular") !=
+                    std::string::npos, small);
+  CHECK_MESSAGE(small.find("check for a zero or tiny (< 1e-10) scale") != std::string::npos, small);
+  const std::string not_finite = message(GeometryDesc::procedural({Aabb{}}, {ok, nan}));
+  CHECK_MESSAGE(not_finite.find("Scene::add_geometry: geometry \"Pacman\" instance 1 transform has a non-finite "
+                                "element at row 2 column 3") != std::string::npos, not_finite);
+  CHECK_MESSAGE(not_finite.find("give a finite affine transform") != std::string::npos, not_finite);
+  const std::string inverted = message(GeometryDesc::procedural({Aabb{}, Aabb{glm::vec3(1.0f), glm::vec3(-1.0f)}}));
+  CHECK_MESSAGE(inverted.find("Scene::add_geometry: geometry \"Pacman\" AABB 1 has min") != std::string::npos, inverted);
+  CHECK_MESSAGE(inverted.find("swap the corners so min <= max on every axis") != std::string::npos, inverted);
+  CHECK(s.geometries().size() == 0);  // nothing was added
 }
 
 TEST_CASE("scene add_geometry that throws leaves the scene unchanged") {

@@ -22,8 +22,8 @@ TEST_CASE("camera project puts points right of the target to the right and above
 }
 
 TEST_CASE("camera look_at rejects degenerate cameras") {
-  CHECK_THROWS_WITH_AS(look_at({0, 0, 0}, {0, 0, 0}, 45.0f, 8, 8), doctest::Contains("degenerate"), std::invalid_argument);
-  CHECK_THROWS_AS(look_at({0, 5, 0}, {0, 0, 0}, 45.0f, 8, 8), std::invalid_argument);  // looking straight down
-  CHECK_THROWS_AS(look_at({0, 0, 5}, {0, 0, 0}, 0.0f, 8, 8), std::invalid_argument);
-  CHECK_THROWS_AS(look_at({0, 0, 5}, {0, 0, 0}, 45.0f, 0, 8), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(look_at({0, 0, 0}, {0, 0, 0}, 45.0f, 8, 8), doctest::Contains("degenerate"), UsageError);
+  CHECK_THROWS_AS(look_at({0, 5, 0}, {0, 0, 0}, 45.0f, 8, 8), UsageError);  // looking straight down
+  CHECK_THROWS_AS(look_at({0, 0, 5}, {0, 0, 0}, 0.0f, 8, 8), UsageError);
+  CHECK_THROWS_AS(look_at({0, 0, 5}, {0, 0, 0}, 45.0f, 0, 8), UsageError);
 }

@@ -22,12 +22,12 @@ TEST_CASE("build_blas rejects inverted and non-finite boxes") {
   TestContext t;
   const VkAabbPositionsKHR inverted{1, 0, 0, -1, 1, 1};
   const vk::AabbGeometry g1{{&inverted, 1}};
-  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&g1, 1}), doctest::Contains("box 0"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&g1, 1}), doctest::Contains("box 0"), InvalidGeometryError);
   const VkAabbPositionsKHR nan{0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 1, 1};
   const vk::AabbGeometry g2{{&nan, 1}};
-  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&g2, 1}), doctest::Contains("finite"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&g2, 1}), doctest::Contains("finite"), InvalidGeometryError);
   const vk::AabbGeometry empty{};
-  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&empty, 1}), doctest::Contains("no boxes"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_blas(t.ctx, {&empty, 1}), doctest::Contains("no boxes"), InvalidGeometryError);
 }
 
 TEST_CASE("build_tlas rejects a missing BLAS and singular or non-finite transforms") {
@@ -36,14 +36,28 @@ TEST_CASE("build_tlas rejects a missing BLAS and singular or non-finite transfor
   const vk::AabbGeometry geometry{{&box, 1}};
   const auto blas = vk::build_blas(t.ctx, {&geometry, 1});
   vk::Instance none{};
-  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&none, 1}), doctest::Contains("has no BLAS"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&none, 1}), doctest::Contains("has no BLAS"), UsageError);
   vk::Instance flat{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1, 0, 1))};
-  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&flat, 1}), doctest::Contains("singular"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&flat, 1}), doctest::Contains("build_tlas: instance 0 transform is singular"), InvalidGeometryError);
   vk::Instance inf{.blas = &blas};
   inf.transform[3][0] = std::numeric_limits<float>::infinity();
-  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&inf, 1}), doctest::Contains("not finite"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&inf, 1}), doctest::Contains("build_tlas: instance 0 transform has a non-finite element"), InvalidGeometryError);
   vk::Instance big{.blas = &blas, .sbt_offset = 1u << 24};
-  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&big, 1}), doctest::Contains("24 bits"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&big, 1}), doctest::Contains("24 bits"), DeviceLimitError);
+}
+
+TEST_CASE("build_tlas applies the scene's transform rule: a 1e-11 uniform scale is singular, 1e-3 is not") {
+  TestContext t;
+  const VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
+  const vk::AabbGeometry geometry{{&box, 1}};
+  const auto blas = vk::build_blas(t.ctx, {&geometry, 1});
+  const vk::Instance tiny{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1e-11f))};
+  CHECK_FALSE(detail::valid_transform(instance_transform(tiny.transform)));  // the rule Scene::add_geometry applies
+  CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&tiny, 1}), doctest::Contains("build_tlas: instance 0 transform is singular"),
+                       InvalidGeometryError);
+  const vk::Instance small{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1e-3f))};
+  CHECK(detail::valid_transform(instance_transform(small.transform)));
+  CHECK_NOTHROW(vk::build_tlas(t.ctx, {&small, 1}));
 }
 
 TEST_CASE("build_tlas accepts an empty instance list") {

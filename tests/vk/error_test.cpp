@@ -3,9 +3,15 @@
 // every call site goes through is checked instead.
 #include <proceduray/vk/error.hpp>
 
+#include <proceduray/scene/compile.hpp>
+#include <proceduray/vk/shader_compiler.hpp>
+
 #include <doctest/doctest.h>
 
+#include <exception>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 
 using namespace proceduray::vk;
 
@@ -30,4 +36,61 @@ TEST_CASE("error out of memory suggests smaller work and success does not throw"
                        doctest::Contains("vkAllocateMemory failed: out of memory; render smaller images"), VulkanError);
   CHECK_THROWS_WITH_AS(check(VK_ERROR_INITIALIZATION_FAILED, "vkCreateInstance"),
                        doctest::Contains("vkCreateInstance failed"), VulkanError);
+}
+
+namespace {
+/// Runs `call` three times and checks it throws something caught as proceduray::Error, as
+/// `StdBase` and as std::exception, each time with `expected` in what().
+template <class StdBase, class Call>
+void check_caught(Call call, const std::string& expected) {
+  std::string as_error, as_std, as_exception;
+  try {
+    call();
+  } catch (const proceduray::Error& e) {
+    as_error = e.what();
+  }
+  try {
+    call();
+  } catch (const StdBase& e) {
+    as_std = e.what();
+  }
+  try {
+    call();
+  } catch (const std::exception& e) {  // unambiguous: Error has no std base of its own
+    as_exception = e.what();
+  }
+  CHECK_MESSAGE(as_error.find(expected) != std::string::npos, as_error);
+  CHECK(as_std == as_error);
+  CHECK(as_exception == as_error);
+}
+}  // namespace
+
+TEST_CASE("error every library exception is a proceduray::Error and its std base") {
+  proceduray::Scene scene;
+  check_caught<std::logic_error>([&] { (void)scene.geometry_id("Pacmn"); },
+                                 "Scene::geometry_id: unknown geometry id \"Pacmn\"");
+  scene.add_raygen("scene.rgen");
+  scene.set_max_recursion_depth(4);
+  const proceduray::Plan plan = proceduray::compile(scene);
+  proceduray::DeviceLimits shallow;
+  shallow.max_ray_recursion_depth = 2;
+  check_caught<std::runtime_error>([&] { (void)plan.layout(shallow); }, "allows 2 (maxRayRecursionDepth)");
+  check_caught<std::system_error>([] { check(VK_ERROR_DEVICE_LOST, "vkQueueSubmit"); }, "vkQueueSubmit failed");
+  check_caught<std::logic_error>(
+      [] {
+        (void)compile_glsl({.stage = proceduray::ShaderStage::miss, .name = "broken.rmiss",
+                            .code = "#version 460\nvoid main() { nope = 1; }\n"});
+      },
+      "compile_glsl: shader 'broken.rmiss' failed to compile");
+  // Usage errors and limits are told apart by their std base, and SceneError is a UsageError.
+  try {
+    (void)plan.layout(shallow);
+    FAIL("no exception");
+  } catch (const proceduray::UsageError&) {
+    FAIL("a device limit caught as a usage error");
+  } catch (const proceduray::DeviceLimitError& e) {
+    CHECK(std::string(e.what()).find("Plan::layout") != std::string::npos);
+  }
+  CHECK_THROWS_AS((void)scene.geometry_id("Pacmn"), proceduray::UsageError);
+  CHECK_THROWS_AS((void)scene.geometry_id("Pacmn"), proceduray::SceneError);
 }

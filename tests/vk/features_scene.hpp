@@ -102,6 +102,7 @@ struct Config {
   bool show_b = false;                       ///< B on the "visible" layer too
   bool cutout_opaque = false;                ///< D opaque: its any-hit shaders are skipped
   glm::vec4 tint{1.0f, 0.5f, 0.25f, 0.0f};  ///< the callable's record: floor colour factor
+  std::uint32_t recursion_depth = 2;         ///< floor.rchit traces shadow rays; 0: depth not declared
 };
 
 class FeaturesScene {
@@ -166,7 +167,7 @@ class FeaturesScene {
     pr::Scene& t = m_entries;
     t.add_raygen("scene.rgen");
     t.set_global_signature(m_scene.global_signature_id("global"));
-    t.set_max_recursion_depth(2);
+    if (m_config.recursion_depth != 0) t.set_max_recursion_depth(m_config.recursion_depth);
     t.add_hit(m_primary, m_scene.hit_group_id("floor"), m_paint, Paint{floor_colour}, m_floor);
     t.add_hit(m_shadow, m_scene.hit_group_id("floor_shadow"), m_floor);
     for (std::size_t i = 0; i < 4; ++i) {

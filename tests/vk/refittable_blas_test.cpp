@@ -27,13 +27,13 @@ TEST_CASE("refittable_blas refits boxes of the same count in place") {
   t.ctx.submit([&](VkCommandBuffer cmd) {
     CHECK_THROWS_WITH_AS(blas.record_refit(t.ctx, cmd, std::span<const AabbGeometry>(more)),
                          doctest::Contains("a refit keeps the topology: build a new RefittableBlas instead"),
-                         std::invalid_argument);
+                         proceduray::UsageError);
   });
   const std::vector<VkAabbPositionsKHR> bad{{1, 0, 0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}};
   std::vector<AabbGeometry> inverted{{bad}};
   t.ctx.submit([&](VkCommandBuffer cmd) {
     CHECK_THROWS_WITH_AS(blas.record_refit(t.ctx, cmd, std::span<const AabbGeometry>(inverted)),
-                         doctest::Contains("RefittableBlas::record_refit: geometry 0 box 0"), std::invalid_argument);
+                         doctest::Contains("RefittableBlas::record_refit: geometry 0 box 0"), proceduray::InvalidGeometryError);
   });
 }
 
@@ -55,5 +55,5 @@ TEST_CASE("refittable_blas refits vertices and refuses other indices") {
   std::vector<AabbGeometry> boxes;
   CHECK_FALSE(blas.same_topology(std::span<const AabbGeometry>(boxes)));
   CHECK_THROWS_WITH_AS(RefittableBlas(t.ctx, std::span<const TriangleGeometry>{}), doctest::Contains("no geometries given"),
-                       std::invalid_argument);
+                       proceduray::UsageError);
 }

@@ -107,6 +107,27 @@ TEST_CASE("features set_mask changes what rays see with a TLAS rebuild and no BL
   CHECK_THROWS_WITH_AS(r.renderer.set_mask(r.scene.ball(1), 1, 0), doctest::Contains("no instance 1"), SceneError);
 }
 
+TEST_CASE("features a closest-hit that traces rays needs a declared recursion depth: refused, not crashed") {
+  TestContext t;
+  // floor.rchit calls traceRayEXT (shadow rays); depth 1 would make lavapipe die at the nested trace.
+  for (const std::uint32_t depth : {0u, 1u}) {
+    CAPTURE(depth);
+    FeaturesScene undeclared({.recursion_depth = depth});
+    CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, undeclared.table(t.ctx), FeaturesScene::options()),
+                         doctest::Contains("Renderer: closest_hit shader 'floor.rchit' calls traceRayEXT"), UsageError);
+  }
+  FeaturesScene undeclared({.recursion_depth = 0});
+  CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, undeclared.table(t.ctx), FeaturesScene::options()),
+                       doctest::Contains("depth is 1 (the default: none was declared), which would crash at the nested "
+                                         "trace; call Scene::set_max_recursion_depth(n) with n >= 2"),
+                       UsageError);
+  FeaturesScene declared({.recursion_depth = 2});
+  vk::Renderer renderer(t.ctx, declared.table(t.ctx), FeaturesScene::options());
+  features_scene::prepare(renderer, width, height);
+  const vk::Frame f = renderer.render(width, height);
+  CHECK(near(pixel(f, where(shadow_point(0))), bytes(shadowed)));  // the nested shadow ray ran
+}
+
 TEST_CASE("features any-hit cut-out shows the background through its holes and its shadow has holes") {
   Rendered cut;
   Rendered solid({.cutout_opaque = true});
@@ -188,13 +209,14 @@ TEST_CASE("features DynamicTransform moves instances with TLAS refits and no BLA
   CHECK(all.work == vk::FrameWork{.tlas_updates = 1});
   CHECK(near(pixel(all, where(high)), bytes(red)));
   const glm::mat4 singular[] = {glm::mat4(0.0f)};
-  CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(0), singular), doctest::Contains("singular"),
-                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(0), singular),
+                       doctest::Contains("Renderer::set_transforms: geometry \"a\" instance 0 transform is singular"),
+                       InvalidGeometryError);
   CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(0), {}),
                        doctest::Contains("has 1 instances, 0 transforms given; give one per instance"),
-                       std::invalid_argument);
+                       InvalidGeometryError);
   CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(2), one), doctest::Contains("geometry \"c\" is Static"),
-                       std::invalid_argument);
+                       UsageError);
   CHECK(r.frame().work == vk::FrameWork{});
 }
 
@@ -230,20 +252,20 @@ TEST_CASE("features bad updates are refused with the fix") {
   CHECK_THROWS_WITH_AS(r.renderer.set_aabbs(r.scene.ball(2), {&box, 1}),
                        doctest::Contains("geometry \"c\" is Static, so its BLAS was built not to change; declare it "
                                          "with update = UpdatePolicy::DynamicGeometry"),
-                       std::invalid_argument);
+                       UsageError);
   CHECK_THROWS_WITH_AS(r.renderer.set_aabbs(r.scene.ball(0), {&box, 1}),
-                       doctest::Contains("geometry \"a\" is DynamicTransform"), std::invalid_argument);
+                       doctest::Contains("geometry \"a\" is DynamicTransform"), UsageError);
   CHECK_THROWS_WITH_AS(r.renderer.set_aabbs(r.scene.slab(), {}), doctest::Contains("given no boxes"),
                        InvalidGeometryError);
   const Aabb inverted{glm::vec3(1.0f), glm::vec3(-1.0f)};
   CHECK_THROWS_WITH_AS(r.renderer.set_aabbs(r.scene.slab(), {&inverted, 1}),
                        doctest::Contains("Renderer::set_aabbs: geometry \"slab\" AABB 0 has min"), InvalidGeometryError);
   CHECK_THROWS_WITH_AS(r.renderer.set_mesh(r.scene.slab(), {}), doctest::Contains("is procedural; change its boxes"),
-                       std::invalid_argument);
+                       UsageError);
   CHECK_THROWS_WITH_AS(r.renderer.set_vertices(r.scene.floor(), {}), doctest::Contains("geometry \"floor\" is Static"),
-                       std::invalid_argument);
+                       UsageError);
   CHECK_THROWS_WITH_AS(r.renderer.set_transform(r.scene.ball(3), 0, glm::mat4(1.0f)),
-                       doctest::Contains("geometry \"d\" is Static"), std::invalid_argument);
+                       doctest::Contains("geometry \"d\" is Static"), UsageError);
   // A refused change leaves the renderer as it was.
   CHECK(r.frame().work == vk::FrameWork{});
 }

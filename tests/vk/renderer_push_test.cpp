@@ -58,7 +58,7 @@ TEST_CASE("renderer push constants reach every stage and change without rebuildi
   vk::Renderer renderer(t.ctx, s.build(t.ctx), PushScene::options());
   CHECK(renderer.pipeline().push_constant_size() == sizeof(Knobs));
   CHECK_THROWS_WITH_AS(renderer.render(8, 8), doctest::Contains("never given a value; call set_push(slot, value) first"),
-                       std::logic_error);
+                       UsageError);
   renderer.set_push(knobs, Knobs{{1.0f, 0.0f, 0.0f, 1.0f}, 1.0f});
   const vk::Frame red = renderer.render(8, 8);
   CHECK(frame_pixels::near(frame_pixels::rgb(red, {3, 3}), glm::ivec3(255, 0, 0)));
@@ -76,7 +76,7 @@ TEST_CASE("renderer push constants refuse another slot untyped blocks and oversi
     constexpr PushConstantSlot<Other> other{.name = "knobs"};
     CHECK_THROWS_WITH_AS(renderer.set_push(other, Other{}),
                          doctest::Contains("the slot holds Other \"knobs\" but the global signature declares Knobs \"knobs\""),
-                         std::invalid_argument);
+                         UsageError);
   }
   {
     renderer_scene::RendererScene s;  // a global signature without push constants
@@ -84,7 +84,7 @@ TEST_CASE("renderer push constants refuse another slot untyped blocks and oversi
     CHECK_THROWS_WITH_AS(renderer.set_push(knobs, Knobs{}),
                          doctest::Contains("declares no typed push constants (0 untyped bytes); declare them with "
                                            "GlobalSignatureDesc::push_constants = a PushConstantSlot<Knobs>"),
-                         std::invalid_argument);
+                         UsageError);
   }
   {
     constexpr PushConstantSlot<Huge> huge{.name = "huge"};
@@ -92,6 +92,6 @@ TEST_CASE("renderer push constants refuse another slot untyped blocks and oversi
     const std::uint32_t limit = t.ctx.properties().limits.maxPushConstantsSize;
     REQUIRE(sizeof(Huge) > limit);
     CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, s.build(t.ctx), PushScene::options()),
-                         doctest::Contains("declares 512 bytes of push constants"), std::invalid_argument);
+                         doctest::Contains("declares 512 bytes of push constants"), DeviceLimitError);
   }
 }

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <string>
 
 using namespace proceduray;
 using renderer_scene::RendererScene;
@@ -71,9 +73,9 @@ TEST_CASE("renderer set_transform refits the TLAS and the image follows") {
   CHECK_FALSE(still.tlas_refit);  // nothing moved since
   CHECK(still.work == vk::FrameWork{});
   CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 2, glm::mat4(1.0f)), doctest::Contains("no instance 2"),
-                       SceneError);
+                       InvalidGeometryError);
   CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 0, glm::mat4(0.0f)), doctest::Contains("singular"),
-                       std::invalid_argument);
+                       InvalidGeometryError);
 }
 
 TEST_CASE("renderer DynamicGeometry triangles: new vertices refit and a new mesh rebuilds") {
@@ -109,7 +111,50 @@ TEST_CASE("renderer DynamicGeometry triangles: new vertices refit and a new mesh
   CHECK_THROWS_WITH_AS(renderer.set_mesh(floor, {{{0, 0, 0}}, {0, 1, 2}}), doctest::Contains("index 1 is 1 but there are 1 vertices"),
                        InvalidGeometryError);
   CHECK_THROWS_WITH_AS(renderer.set_aabbs(floor, {}), doctest::Contains("is triangles; change its vertices with set_vertices"),
-                       std::invalid_argument);
+                       UsageError);
+}
+
+TEST_CASE("renderer bad transforms, instances and boxes fail at the call with InvalidGeometryError naming it") {
+  TestContext t;
+  RendererScene s(UpdatePolicy::DynamicGeometry);  // "ball": two procedural instances that may move and reshape
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
+  const glm::mat4 tiny = glm::scale(glm::mat4(1.0f), glm::vec3(1e-11f));
+  glm::mat4 nan(1.0f);
+  nan[3][1] = std::numeric_limits<float>::quiet_NaN();
+  const std::string fix = "check for a zero or tiny (< 1e-10) scale";
+  auto message = [&](const std::string& call, int instance) {
+    return call + ": geometry \"ball\" instance " + std::to_string(instance) + " transform";
+  };
+  auto check_throws = [](auto call, const std::string& where, const std::string& what) {
+    try {
+      call();
+      FAIL("no exception");
+    } catch (const InvalidGeometryError& e) {
+      const std::string text = e.what();
+      CHECK_MESSAGE(text.find(where) != std::string::npos, text);
+      CHECK_MESSAGE(text.find(what) != std::string::npos, text);
+    }
+  };
+  check_throws([&] { renderer.set_transform(s.ball(), 1, tiny); }, message("Renderer::set_transform", 1) + " is singular",
+               fix);
+  check_throws([&] { renderer.set_transform(s.ball(), 1, nan); },
+               message("Renderer::set_transform", 1) + " has a non-finite element at row 1 column 3",
+               "give a finite affine transform");
+  check_throws([&] { renderer.set_transform(s.ball(), 5, glm::mat4(1.0f)); },
+               "Renderer::set_transform: geometry \"ball\" has 2 instances, no instance 5",
+               "pass an instance index below 2");
+  const glm::mat4 second_tiny[] = {glm::mat4(1.0f), tiny};
+  check_throws([&] { renderer.set_transforms(s.ball(), second_tiny); },
+               message("Renderer::set_transforms", 1) + " is singular", fix);
+  const glm::mat4 first_nan[] = {nan, glm::mat4(1.0f)};
+  check_throws([&] { renderer.set_transforms(s.ball(), first_nan); },
+               message("Renderer::set_transforms", 0) + " has a non-finite element", "give a finite affine transform");
+  const Aabb boxes[] = {Aabb{}, Aabb{glm::vec3(1.0f), glm::vec3(-1.0f)}};
+  check_throws([&] { renderer.set_aabbs(s.ball(), boxes); }, "Renderer::set_aabbs: geometry \"ball\" AABB 1 has min",
+               "swap the corners so min <= max on every axis");
+  // Refused calls change nothing: the next frame does no acceleration-structure work.
+  renderer_scene::prepare(renderer, width, height);
+  CHECK(renderer.render(width, height).work == vk::FrameWork{});
 }
 
 TEST_CASE("renderer refuses to move or reshape a Static geometry") {
@@ -119,15 +164,15 @@ TEST_CASE("renderer refuses to move or reshape a Static geometry") {
   CHECK_THROWS_WITH_AS(renderer.set_transform(s.ball(), 0, glm::mat4(1.0f)),
                        doctest::Contains("geometry \"ball\" is Static, so its instances were built not to move; "
                                          "declare it with update = UpdatePolicy::DynamicTransform"),
-                       std::invalid_argument);
+                       UsageError);
   const Aabb box{};
   CHECK_THROWS_WITH_AS(renderer.set_aabbs(s.ball(), {&box, 1}),
                        doctest::Contains("Renderer::set_aabbs: geometry \"ball\" is Static, so its BLAS was built not "
                                          "to change; declare it with update = UpdatePolicy::DynamicGeometry"),
-                       std::invalid_argument);
+                       UsageError);
   const glm::vec3 moved[4] = {};
   CHECK_THROWS_WITH_AS(renderer.set_vertices(s.scene().geometry_id("floor"), moved),
-                       doctest::Contains("Renderer::set_vertices: geometry \"floor\" is Static"), std::invalid_argument);
+                       doctest::Contains("Renderer::set_vertices: geometry \"floor\" is Static"), UsageError);
 }
 
 TEST_CASE("renderer renders are byte identical") {
@@ -158,14 +203,14 @@ TEST_CASE("renderer refuses to trace before its uniforms have values") {
   RendererScene s;
   vk::Renderer renderer(t.ctx, s.table(t.ctx), RendererScene::options());
   CHECK_THROWS_WITH_AS(renderer.render(width, height), doctest::Contains("set 0 binding 2 was never given a value"),
-                       std::logic_error);
+                       UsageError);
   renderer.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
   CHECK_THROWS_WITH_AS(renderer.render(width, height),
-                       doctest::Contains("storage buffer at set 0 binding 3 was never given data"), std::logic_error);
+                       doctest::Contains("storage buffer at set 0 binding 3 was never given data"), UsageError);
   CHECK_THROWS_WITH_AS(renderer.set_storage(renderer_scene::tints_slot, {}), doctest::Contains("no elements"),
-                       std::invalid_argument);
+                       UsageError);
   renderer_scene::prepare(renderer, width, height);
-  CHECK_THROWS_WITH_AS(renderer.render(0, height), doctest::Contains("size 0x64"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(renderer.render(0, height), doctest::Contains("size 0x64"), UsageError);
 }
 
 TEST_CASE("renderer names a missing shader and the folders it searched") {
@@ -174,7 +219,7 @@ TEST_CASE("renderer names a missing shader and the folders it searched") {
   auto options = RendererScene::options();
   options.shader_dirs = {test_output_dir("no_shaders_here")};
   CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, s.table(t.ctx), options), doctest::Contains("shader 'scene.rgen'"),
-                       std::runtime_error);
+                       UsageError);
 }
 
 TEST_CASE("renderer pipeline cache is reused and a corrupt one is rebuilt") {

@@ -88,19 +88,19 @@ TEST_CASE("shader binding table rejects oversized data and missing or repeated r
   std::vector<vk::RecordWrite> records(std::begin(base), std::end(base));
   records.push_back({SbtRegionKind::hit, 0, 2, big});
   CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records),
-                       doctest::Contains("hit record 0 has"), std::length_error);
+                       doctest::Contains("hit record 0 has"), UsageError);
 
   records.back() = {SbtRegionKind::hit, 0, 2};
   records.push_back({SbtRegionKind::hit, 0, 2});
   CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records), doctest::Contains("given twice"),
-                       std::invalid_argument);
+                       UsageError);
   records.pop_back();
   records.pop_back();
   CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records),
-                       doctest::Contains("hit record 0 was laid out but never given"), std::invalid_argument);
+                       doctest::Contains("hit record 0 was laid out but never given"), UsageError);
   records.push_back({SbtRegionKind::hit, 0, 7});
   CHECK_THROWS_WITH_AS(vk::SbtBuffer(t.ctx, pipeline, layout, records), doctest::Contains("group 7"),
-                       std::out_of_range);
+                       UsageError);
 }
 
 TEST_CASE("pipeline rejects a procedural hit group without an intersection shader") {
@@ -110,10 +110,10 @@ TEST_CASE("pipeline rejects a procedural hit group without an intersection shade
                                                                              .name = "r", .code = raygen}));
   desc.groups = {vk::ShaderGroup::general_shader(r), vk::ShaderGroup::procedural(VK_SHADER_UNUSED_KHR,
                                                                                   VK_SHADER_UNUSED_KHR)};
-  CHECK_THROWS_WITH_AS(vk::Pipeline(t.ctx, desc), doctest::Contains("no intersection shader"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::Pipeline(t.ctx, desc), doctest::Contains("no intersection shader"), UsageError);
   desc.groups = {vk::ShaderGroup::general_shader(5)};
-  CHECK_THROWS_WITH_AS(vk::Pipeline(t.ctx, desc), doctest::Contains("shader 5"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::Pipeline(t.ctx, desc), doctest::Contains("shader 5"), UsageError);
   desc.groups = {vk::ShaderGroup::general_shader(r)};
   desc.max_recursion_depth = t.ctx.ray_tracing_properties().maxRayRecursionDepth + 1;
-  CHECK_THROWS_WITH_AS(vk::Pipeline(t.ctx, desc), doctest::Contains("maxRayRecursionDepth"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(vk::Pipeline(t.ctx, desc), doctest::Contains("maxRayRecursionDepth"), DeviceLimitError);
 }

@@ -2,7 +2,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 using namespace proceduray::vk;
 
@@ -51,7 +53,7 @@ TEST_CASE("compile_glsl names a missing include") {
 
 TEST_CASE("compile_glsl_file names a missing file") {
   CHECK_THROWS_WITH_AS(compile_glsl_file(ShaderStage::miss, "/nonexistent/x.rmiss"),
-                       doctest::Contains("/nonexistent/x.rmiss"), std::runtime_error);
+                       doctest::Contains("/nonexistent/x.rmiss"), proceduray::EnvironmentError);
 }
 
 TEST_CASE("compile_glsl names a shader without an entry point") {
@@ -60,4 +62,41 @@ TEST_CASE("compile_glsl names a shader without an entry point") {
                                      .code = "#version 460\n#extension GL_EXT_ray_tracing : require\n"
                                              "void shade() {}\n"}),
                        doctest::Contains("no_main.rmiss"), ShaderCompileError);
+}
+
+TEST_CASE("traces_rays finds OpTraceRayKHR in SPIR-V words, not OpExecuteCallableKHR") {
+  // Header (magic, version, generator, bound, schema), then instructions: word count << 16 | opcode.
+  const std::vector<std::uint32_t> header{0x07230203u, 0x00010400u, 0u, 10u, 0u};
+  auto module = [&](std::vector<std::uint32_t> body) {
+    std::vector<std::uint32_t> words = header;
+    words.insert(words.end(), body.begin(), body.end());
+    return words;
+  };
+  const std::uint32_t nop = (1u << 16) | 0u;                 // OpNop
+  const std::uint32_t execute_callable = (3u << 16) | 4446u;  // OpExecuteCallableKHR %sbt %callable
+  const std::uint32_t trace_ray = (12u << 16) | 4445u;        // OpTraceRayKHR with its 11 operands
+  CHECK_FALSE(traces_rays(header));
+  CHECK_FALSE(traces_rays(module({nop, execute_callable, 1u, 2u})));
+  std::vector<std::uint32_t> traced{nop, execute_callable, 1u, 2u, trace_ray};
+  traced.resize(traced.size() + 11, 0u);
+  CHECK(traces_rays(module(traced)));
+  // An operand that happens to equal 4445 is not an instruction.
+  CHECK_FALSE(traces_rays(module({(2u << 16) | 0u, 4445u})));
+  CHECK_FALSE(traces_rays(module({0u, trace_ray})));  // a zero word count stops the scan (malformed)
+  CHECK_FALSE(traces_rays(std::vector<std::uint32_t>{}));
+}
+
+TEST_CASE("traces_rays on compiled shaders: a closest-hit that calls traceRayEXT, one that calls a callable") {
+  const std::string prefix = "#version 460\n#extension GL_EXT_ray_tracing : require\n"
+                             "layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;\n"
+                             "layout(location = 0) rayPayloadInEXT vec3 c;\n";
+  const auto tracing = compile_glsl({.stage = ShaderStage::closest_hit, .name = "tracing.rchit",
+                                     .code = prefix + "layout(location = 1) rayPayloadEXT vec3 s;\n"
+                                                      "void main() { traceRayEXT(tlas, 0, 0xFF, 0, 1, 0, vec3(0), 0.0, "
+                                                      "vec3(0, 1, 0), 1.0, 1); c = s; }\n"});
+  CHECK(traces_rays(tracing));
+  const auto calling = compile_glsl({.stage = ShaderStage::closest_hit, .name = "calling.rchit",
+                                     .code = prefix + "layout(location = 0) callableDataEXT vec3 d;\n"
+                                                      "void main() { executeCallableEXT(0, 0); c = d; }\n"});
+  CHECK_FALSE(traces_rays(calling));
 }

@@ -1,6 +1,6 @@
 // A callable shader: registered by id with the type of the data it is called with.
 //
-//   struct TintCall { glm::vec3 colour; };             // PROCEDURAY_STRUCT(TintCall, scalar, colour);
+//   struct TintCall { glm::vec3 colour; };  PROCEDURAY_STRUCT(TintCall, scalar, colour);
 //   auto tint = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
 //   table.add_callable(tint, tint_signature, TintArgs{...});   // optional record data
 //

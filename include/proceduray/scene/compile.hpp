@@ -68,7 +68,8 @@ struct PlanBuilder {
       planned = {blas.name, blas.kind, blas.update, {}, static_cast<std::uint32_t>(out.m_instances.size()),
                  static_cast<std::uint32_t>(blas.instances.size())};
       for (GeometryId g : blas.geometries) planned.geometries.push_back(g.index());
-      if (out.m_instances.size() + blas.instances.size() > max_instance_sbt_offset + std::uint64_t{1}) {
+      const std::uint64_t count = out.m_instances.size() + blas.instances.size();
+      if (count > 0 && !fits_instance_field(count - 1)) {  // instanceCustomIndex of the last instance
         throw DeviceLimitError(std::string(op) + ": the scene has more than " +
                                std::to_string(max_instance_sbt_offset + 1) + " instances, past instanceCustomIndex's "
                                "24 bits (a Vulkan limit on every device); merge geometry into fewer instances");
@@ -130,7 +131,7 @@ struct PlanBuilder {
     }
   }
   std::uint32_t block_offset(const PlannedBlas& b, std::uint64_t cursor) const {
-    if (cursor > max_instance_sbt_offset) {
+    if (!fits_instance_field(cursor)) {
       throw DeviceLimitError(std::string(op) + ": BLAS \"" + b.name + "\" needs instance SBT offset " +
                              std::to_string(cursor) + ", above the 24-bit maximum " +
                              std::to_string(max_instance_sbt_offset) + " of every device; bind entries to whole "

@@ -20,6 +20,10 @@ namespace proceduray {
 /// Largest instanceShaderBindingTableRecordOffset / instanceCustomIndex: both are 24-bit fields.
 inline constexpr std::uint32_t max_instance_sbt_offset = 0xFF'FFFFu;
 
+/// The one rule for a TLAS instance's 24-bit fields (SBT offset, custom index), used by the scene
+/// and by vk::build_tlas.
+constexpr bool fits_instance_field(std::uint64_t value) noexcept { return value <= max_instance_sbt_offset; }
+
 /// Limits a built shader table must respect.
 struct DeviceLimits {
   SbtProperties sbt;                                  ///< handle size and alignments, max stride

@@ -17,8 +17,10 @@
 //                     and indices, BLAS rebuild when the topology changes, then a TLAS update
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -133,24 +135,43 @@ struct TransformCheck {
   double determinant = 0.0;
   bool singular = false;
 };
-inline TransformCheck check_transform(const InstanceTransform& t) {
+
+/// Below this |determinant| a transform is singular whatever its scale (see check_transform_at).
+inline constexpr double min_transform_determinant = 1e-30;
+/// Below this fraction of largest^3, |determinant| is singular: the 3x3 part is nearly flat.
+inline constexpr double min_relative_determinant = 1e-9;
+
+/// The one rule for an instance's 3x4 object-to-world matrix, element (row r, column c) = at(r, c);
+/// the scene (add_geometry) and the backend (Renderer::set_transform, vk::build_tlas) both apply it.
+/// Singular when |det| <= 1e-9 * largest^3 (relative: a nearly flat matrix at any unit of length)
+/// or |det| < 1e-30 (absolute: the device inverts the matrix in float; this keeps det and 1/det
+/// normal floats with margin, and refuses uniform scales below ~1e-10, such as 1e-11, which the
+/// relative test alone accepts). The floor is the backend's former rule, so the union of the two
+/// former rules: a transform both accepted is still accepted. No allocation, no formatting.
+template <class At>
+TransformCheck check_transform_at(At at) {
   TransformCheck out;
   float largest = 0.0f;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 4; ++c) {
-      if (!std::isfinite(t[r][c])) {
+      const float v = at(r, c);
+      if (!std::isfinite(v)) {
         out.row = r;
         out.column = c;
         return out;
       }
-      if (c < 3) largest = std::max(largest, std::fabs(t[r][c]));
+      if (c < 3) largest = std::max(largest, std::fabs(v));
     }
   }
-  const glm::mat3 linear{glm::vec3(t[0]), glm::vec3(t[1]), glm::vec3(t[2])};
+  const glm::mat3 linear{at(0, 0), at(1, 0), at(2, 0), at(0, 1), at(1, 1), at(2, 1), at(0, 2), at(1, 2), at(2, 2)};
   out.determinant = glm::determinant(linear);
   const double scale = double{largest} * largest * largest;
-  out.singular = !(std::fabs(out.determinant) > 1e-9 * scale) || largest == 0.0f;
+  const double magnitude = std::fabs(out.determinant);
+  out.singular = !(magnitude > min_relative_determinant * scale) || !(magnitude >= min_transform_determinant);
   return out;
+}
+inline TransformCheck check_transform(const InstanceTransform& t) {
+  return check_transform_at([&t](int r, int c) { return t[r][c]; });
 }
 /// Finite and invertible: validate(InstanceTransform) would not throw.
 inline bool valid_transform(const InstanceTransform& t) {
@@ -159,7 +180,7 @@ inline bool valid_transform(const InstanceTransform& t) {
 }
 }  // namespace detail
 
-/// Throws InvalidGeometryError for a non-finite or singular transform.
+/// Throws InvalidGeometryError for a non-finite or singular transform (detail::check_transform_at's rule).
 inline void validate(const InstanceTransform& t, std::string_view where) {
   const detail::TransformCheck c = detail::check_transform(t);
   if (c.row >= 0) {
@@ -168,8 +189,11 @@ inline void validate(const InstanceTransform& t, std::string_view where) {
                                "); give a finite affine transform");
   }
   if (c.singular) {
-    throw InvalidGeometryError(std::string(where) + " is singular (determinant " + std::to_string(c.determinant) +
-                               "); an instance needs an invertible 3x3 part: check for a zero scale");
+    char determinant[32];
+    std::snprintf(determinant, sizeof determinant, "%g", c.determinant);
+    throw InvalidGeometryError(std::string(where) + " is singular (determinant " + determinant +
+                               "); an instance needs an invertible 3x3 part with |determinant| >= 1e-30 and "
+                               ">= 1e-9 x its largest element cubed: check for a zero or tiny (< 1e-10) scale");
   }
 }
 

@@ -52,7 +52,9 @@ struct PipelinePlan {
   std::vector<PlannedStage> stages;               ///< used stages, each once: raygen, miss, then hit stages
   std::vector<PlannedGroup> groups;               ///< used groups: raygen, miss, hit groups, callables; handle order
   std::uint32_t max_recursion_depth = 1;          ///< as declared by Scene::set_max_recursion_depth; else 1
-  bool recursion_depth_declared = false;          ///< the scene declared it (else hit shaders must not trace)
+  /// Whether the depth was declared (Scene::set_max_recursion_depth); default false: the backend
+  /// refuses a pipeline whose non-raygen stages trace rays at an undeclared depth.
+  bool recursion_depth_declared = false;
   std::uint32_t max_payload_size = 0;             ///< largest payload of a ray type records use (bytes)
   std::uint32_t max_attribute_size = 0;           ///< largest hit attributes of a used hit group (bytes)
   std::array<std::uint32_t, 4> max_record_data_size{};  ///< per region (SbtRegionKind order), bytes after the handle

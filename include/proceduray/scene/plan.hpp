@@ -125,7 +125,8 @@ class Plan {
     if (instance >= blas.instance_count) {
       throw InvalidGeometryError(std::string(operation) + ": geometry \"" + g.name + "\" has " +
                                  std::to_string(blas.instance_count) + " instances, no instance " +
-                                 std::to_string(instance) + "; use an index below the count");
+                                 std::to_string(instance) + "; pass an instance index below " +
+                                 std::to_string(blas.instance_count) + " (the order of GeometryDesc::instances)");
     }
     return blas.first_instance + instance;
   }
@@ -193,26 +194,26 @@ inline SbtLayout Plan::layout(const DeviceLimits& limits) const {
   const std::string device = limits.device.empty() ? std::string("the device") : limits.device;
   auto refuse = [&](const std::string& what, std::uint64_t value, std::uint64_t limit, const char* name,
                     const std::string& fix) {
-    return DeviceLimitError("Plan::layout: " + what + " " + std::to_string(value) + ", " + device + " allows " +
+    return DeviceLimitError("Plan::layout: " + what + " is " + std::to_string(value) + ", " + device + " allows " +
                             std::to_string(limit) + " (" + name + "); " + fix);
   };
   if (m_pipeline.max_recursion_depth > limits.max_ray_recursion_depth) {
-    throw refuse("the scene nests rays", m_pipeline.max_recursion_depth, limits.max_ray_recursion_depth,
+    throw refuse("the scene's max recursion depth", m_pipeline.max_recursion_depth, limits.max_ray_recursion_depth,
                  "maxRayRecursionDepth", "trace iteratively from raygen instead");
   }
   for (const PlannedBlas& b : m_blases) {
     if (b.geometries.size() > limits.max_geometry_count) {
-      throw refuse("BLAS \"" + b.name + "\" holds geometries:", b.geometries.size(), limits.max_geometry_count,
+      throw refuse("the geometry count of BLAS \"" + b.name + "\"", b.geometries.size(), limits.max_geometry_count,
                    "maxGeometryCount", "split it");
     }
   }
   if (m_instances.size() > limits.max_instance_count) {
-    throw refuse("the scene has instances:", m_instances.size(), limits.max_instance_count, "maxInstanceCount",
+    throw refuse("the scene's instance count", m_instances.size(), limits.max_instance_count, "maxInstanceCount",
                  "merge geometry into fewer instances");
   }
   for (const PlannedGroup& g : m_pipeline.groups) {
     if (g.attribute_size > limits.max_ray_hit_attribute_size) {
-      throw refuse("hit group \"" + g.name + "\" reports bytes of hit attributes:", g.attribute_size,
+      throw refuse("the hit attribute size (bytes) of hit group \"" + g.name + "\"", g.attribute_size,
                    limits.max_ray_hit_attribute_size, "maxRayHitAttributeSize", "shrink the attribute struct");
     }
   }

@@ -1,6 +1,7 @@
 // A ray type: its miss shader, its payload type, and the flags and cull mask it is traced with.
 //
 //   struct RayPayload { glm::vec4 color; std::uint32_t depth; };
+//   PROCEDURAY_STRUCT(RayPayload, scalar, color, depth);   // payloads are registered structs
 //   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
 //   auto shadow = scene.add_ray<ShadowPayload>("Shadow", {
 //       .miss = "shadow.rmiss",

@@ -17,12 +17,17 @@
 //   record = [ group handle (handle_size) | record data (shaderRecordEXT) | pad ]
 //   stride = align(handle_size + max data of the region, handle_alignment)
 //   raygen: stride = size = align(handle_size + data, base_alignment) (Vulkan requires size == stride)
+//
+// Impossible properties or an index past a region throw proceduray::UsageError; a stride past
+// the device's maxShaderGroupStride, proceduray::DeviceLimitError.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+
+#include "proceduray/error.hpp"
 
 namespace proceduray {
 
@@ -64,13 +69,13 @@ struct SbtLayout {
 
   const SbtRegion& region(SbtRegionKind kind) const { return regions[static_cast<std::uint32_t>(kind)]; }
 
-  /// Byte offset of a record's handle; throws std::out_of_range past the region's count.
+  /// Byte offset of a record's handle; throws UsageError past the region's count.
   std::uint64_t record_offset(SbtRegionKind kind, std::uint32_t index) const {
     const SbtRegion& r = region(kind);
     if (index >= r.count) {
-      throw std::out_of_range("SbtLayout::record_offset: " + std::string(to_string(kind)) + " record " +
-                              std::to_string(index) + " does not exist; the region holds " +
-                              std::to_string(r.count) + " records");
+      throw UsageError("SbtLayout::record_offset: " + std::string(to_string(kind)) + " record " +
+                       std::to_string(index) + " does not exist; the region holds " + std::to_string(r.count) +
+                       " records: use an index below that");
     }
     return r.offset + std::uint64_t{index} * r.stride;
   }
@@ -86,21 +91,21 @@ constexpr bool is_power_of_two(std::uint64_t v) { return v != 0 && (v & (v - 1))
 constexpr std::uint64_t align_up(std::uint64_t v, std::uint64_t a) { return (v + a - 1) / a * a; }
 }  // namespace detail
 
-/// Lays out the four regions; throws std::invalid_argument for impossible properties and
-/// std::length_error when a record stride exceeds the device's maximum.
+/// Lays out the four regions; throws UsageError for impossible properties and DeviceLimitError
+/// when a record stride exceeds the device's maximum.
 inline SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegionRecords, 4>& records) {
   using detail::align_up;
   using detail::is_power_of_two;
   if (props.handle_size == 0 || !is_power_of_two(props.handle_alignment) || !is_power_of_two(props.base_alignment) ||
       props.base_alignment < props.handle_alignment) {
-    throw std::invalid_argument(
+    throw UsageError(
         "layout_sbt: device properties handle_size " + std::to_string(props.handle_size) + ", handle_alignment " +
         std::to_string(props.handle_alignment) + ", base_alignment " + std::to_string(props.base_alignment) +
         " are impossible; alignments must be powers of two with handle_alignment <= base_alignment "
         "(read them from VkPhysicalDeviceRayTracingPipelinePropertiesKHR)");
   }
   if (records[0].count == 0) {
-    throw std::invalid_argument("layout_sbt: the raygen region is empty; a trace needs one raygen record");
+    throw UsageError("layout_sbt: the raygen region is empty; a trace needs one raygen record: add one");
   }
   SbtLayout layout;
   layout.properties = props;
@@ -114,11 +119,11 @@ inline SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegi
     const std::uint64_t record = std::uint64_t{props.handle_size} + in.max_data_size;
     out.stride = align_up(record, kind == SbtRegionKind::raygen ? props.base_alignment : props.handle_alignment);
     if (out.stride > props.max_stride) {
-      throw std::length_error("layout_sbt: " + std::string(to_string(kind)) + " record stride " +
-                              std::to_string(out.stride) + " bytes (handle " + std::to_string(props.handle_size) +
-                              " + data " + std::to_string(in.max_data_size) + ", aligned) exceeds the device's "
-                              "maxShaderGroupStride " + std::to_string(props.max_stride) +
-                              "; move large record data into a buffer and store its device address instead");
+      throw DeviceLimitError("layout_sbt: " + std::string(to_string(kind)) + " record stride " +
+                             std::to_string(out.stride) + " bytes (handle " + std::to_string(props.handle_size) +
+                             " + data " + std::to_string(in.max_data_size) + ", aligned) exceeds the device's "
+                             "maxShaderGroupStride " + std::to_string(props.max_stride) +
+                             "; move large record data into a buffer and store its device address instead");
     }
     out.offset = align_up(cursor, props.base_alignment);
     // Vulkan requires the raygen region's size to equal its stride: a trace reads one raygen record.

@@ -1,6 +1,6 @@
 // Typed buffer bindings: declared once, used both in the global signature and for writes.
 //
-//   struct SceneConstants { ... };  PROCEDURAY_STRUCT(SceneConstants, scalar, ...);
+//   struct SceneConstants { glm::vec4 light; };  PROCEDURAY_STRUCT(SceneConstants, scalar, light);
 //   constexpr proceduray::UniformSlot<SceneConstants> constants{.binding = 2};
 //   scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0},
 //                                                     {BindingKind::storage_image, 1}, constants}});
@@ -11,7 +11,7 @@
 //
 //   constexpr proceduray::PushConstantSlot<FrameKnobs> knobs{.name = "knobs"};
 //   scene.add_global_signature("global", {.bindings = {...}, .push_constants = knobs});
-//   renderer.set_push(knobs, value);  // recorded with the next trace; GLSL: knobs.member
+//   renderer.set_push(knobs, frame_knobs);  // recorded with the next trace; GLSL: knobs.member
 #pragma once
 
 #include <proceduray/scene/global_signature.hpp>

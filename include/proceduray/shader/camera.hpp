@@ -9,6 +9,7 @@
 // x to the right and y down, so the image needs no flip.
 #pragma once
 
+#include <proceduray/error.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 #include <glm/glm.hpp>
@@ -31,18 +32,18 @@ struct Camera {
 };
 PROCEDURAY_STRUCT(Camera, scalar, eye, forward, right, up, pixel_angle, pad0, pad1, pad2);
 
-/// A camera at `eye` looking at `target` with vertical field of view `fov_y_degrees`; throws on degenerate input.
+/// A camera at `eye` looking at `target` with vertical field of view `fov_y_degrees`; throws UsageError on degenerate input.
 inline Camera look_at(glm::vec3 eye, glm::vec3 target, float fov_y_degrees, std::uint32_t width, std::uint32_t height,
                       glm::vec3 world_up = {0.0f, 1.0f, 0.0f}) {
   const glm::vec3 view = target - eye;
   const glm::vec3 side = glm::cross(view, world_up);
   if (width == 0 || height == 0 || !(fov_y_degrees > 0.0f && fov_y_degrees < 180.0f) ||
       glm::dot(view, view) == 0.0f || glm::dot(side, side) == 0.0f) {
-    throw std::invalid_argument("look_at: camera from (" + std::to_string(eye.x) + ", " + std::to_string(eye.y) + ", " +
-                                std::to_string(eye.z) + ") with fov " + std::to_string(fov_y_degrees) + " at " +
-                                std::to_string(width) + "x" + std::to_string(height) +
-                                " is degenerate; eye and target must differ, the view must not be parallel to up, "
-                                "the fov must be in (0, 180) and the size positive");
+    throw UsageError("look_at: camera from (" + std::to_string(eye.x) + ", " + std::to_string(eye.y) + ", " +
+                     std::to_string(eye.z) + ") with fov " + std::to_string(fov_y_degrees) + " at " +
+                     std::to_string(width) + "x" + std::to_string(height) +
+                     " is degenerate; eye and target must differ, the view must not be parallel to up, "
+                     "the fov must be in (0, 180) and the size positive");
   }
   const glm::vec3 forward = glm::normalize(view);
   const glm::vec3 right = glm::normalize(side);

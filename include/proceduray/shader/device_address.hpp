@@ -2,7 +2,7 @@
 //
 //   struct SphereRecord { proceduray::DeviceAddress<Sphere> spheres; uint32_t count; uint32_t pad; };
 //   PROCEDURAY_STRUCT(SphereRecord, scalar, spheres, count, pad);
-//   record.spheres = proceduray::DeviceAddress<Sphere>{vkGetBufferDeviceAddress(...)};
+//   record.spheres = proceduray::DeviceAddress<Sphere>{buffer_address};   // from vkGetBufferDeviceAddress
 //   // GLSL: layout(buffer_reference, scalar, buffer_reference_align = 4) buffer SphereRef { Sphere data[]; };
 //   //       struct SphereRecord { SphereRef spheres; uint count; uint pad; };   ->  rec.spheres.data[i]
 #pragma once

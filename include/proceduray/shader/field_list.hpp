@@ -4,7 +4,7 @@
 //   PROCEDURAY_STRUCT(Sphere, scalar, center, radius);      // at namespace scope, in Sphere's namespace
 //
 //   struct Material { glm::vec4 albedo; Sphere bounds; proceduray::DeviceAddress<Sphere> spheres; };
-//   PROCEDURAY_STRUCT(Material, std430, albedo, bounds, spheres);   // nested types registered first
+//   PROCEDURAY_STRUCT(Material, scalar, albedo, bounds, spheres);   // nested types registered first
 //
 //   proceduray::type_ops<Sphere>.fields[1].name == "radius";   // members in declaration order
 //

@@ -13,9 +13,11 @@
 //
 // A buffer reference for DeviceAddress<T> is named after T: SphereRef for a struct Sphere,
 // Vec3Ref for glm::vec3; its elements are `data[]`, so `record.spheres.data[i].radius`.
-// Generation throws GlslNameError when two different types would get the same GLSL name.
+// Generation throws GlslNameError (a proceduray::UsageError) when two different types would get
+// the same GLSL name.
 #pragma once
 
+#include <proceduray/error.hpp>
 #include <proceduray/shader/categories.hpp>
 
 #include <glm/glm.hpp>
@@ -35,9 +37,9 @@
 namespace proceduray {
 
 /// Two different types would share one GLSL name; the message names both C++ types.
-class GlslNameError : public std::logic_error {
+class GlslNameError : public UsageError {
  public:
-  using std::logic_error::logic_error;
+  using UsageError::UsageError;
 };
 
 /// The GLSL type name T gets, e.g. "vec3", "Sphere", "SphereRef" (array extents not included).

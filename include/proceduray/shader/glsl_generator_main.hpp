@@ -7,6 +7,7 @@
 //   #include <proceduray/shader/glsl_generator_main.hpp>
 //   int main(int argc, char** argv) { return proceduray::glsl_generator_main<my::Interface>(argc, argv); }
 //
+// and a build step that runs it:
 //   CMake: include(ProcedurayGlsl)   # installed with the package; writes that program for you
 //          proceduray_generate_glsl(my_glsl HEADER my_types.hpp INTERFACE my::Interface OUTPUT my_types.glsl)
 //   Meson: gen = executable('gen', 'glsl_generator.cpp', dependencies: proceduray_dep)

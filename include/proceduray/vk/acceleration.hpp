@@ -1,21 +1,28 @@
 // Bottom-level (AABB) and top-level acceleration structures, built on the device and waited for.
 //
 //   VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
-//   auto blas = proceduray::vk::build_blas(ctx, {{.boxes = {&box, 1}}});
+//   const proceduray::vk::AabbGeometry boxes{.boxes = {&box, 1}};
+//   auto blas = proceduray::vk::build_blas(ctx, {&boxes, 1});
 //   std::vector<proceduray::vk::Instance> instances{
 //       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {-1.5f, 0, 0}), .sbt_offset = 0},
 //       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {+1.5f, 0, 0}), .sbt_offset = 1}};
 //   auto tlas = proceduray::vk::build_tlas(ctx, instances);
 //
-//   const glm::vec3 quad[] = {...};  const std::uint32_t tris[] = {0, 1, 2, 0, 2, 3};
-//   auto plane = proceduray::vk::build_blas(ctx, {{.vertices = quad, .indices = tris}});   // triangles
-//   proceduray::vk::Tlas tlas(ctx, instances, {.allow_update = true});
-//   instances[0].transform = moved;  tlas.update(ctx, instances);                          // refit
+//   const glm::vec3 quad[] = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+//   const std::uint32_t tris[] = {0, 1, 2, 0, 2, 3};
+//   const proceduray::vk::TriangleGeometry mesh{.vertices = quad, .indices = tris};
+//   auto plane = proceduray::vk::build_blas(ctx, {&mesh, 1});                             // triangles
+//   proceduray::vk::Tlas moving(ctx, instances, {.allow_update = true});
+//   instances[0].transform = moved;  moving.update(ctx, instances);                       // refit
 //
 // build_* record the build, submit it and wait: the result is ready to trace when they return.
 // Static BLASes are compacted by default (BuildOptions::compact): the copy is what stays.
+// Inputs are checked by the scene's rules (scene/geometry.hpp): a bad box, vertex or transform
+// throws InvalidGeometryError, an index past 24 bits DeviceLimitError, other misuse UsageError.
 #pragma once
 
+#include <proceduray/scene/device_limits.hpp>
+#include <proceduray/scene/geometry.hpp>
 #include <proceduray/vk/buffer.hpp>
 
 #include <glm/glm.hpp>
@@ -179,8 +186,6 @@ inline AccelerationStructure build_acceleration_structure(const Context& ctx, Vk
   return result;
 }
 
-inline bool finite(float v) { return std::isfinite(v); }
-
 }  // namespace detail
 
 namespace detail {
@@ -194,53 +199,51 @@ struct BlasInput {
   std::vector<std::uint32_t> counts;  ///< primitives per geometry
 };
 
-/// Throws for an empty list, a geometry without boxes, or a box that is not one.
+/// The scene's box for Vulkan's (same six floats, same order).
+inline Aabb to_aabb(const VkAabbPositionsKHR& b) { return {{b.minX, b.minY, b.minZ}, {b.maxX, b.maxY, b.maxZ}}; }
+
+/// Throws UsageError for an empty list, InvalidGeometryError for a geometry without boxes or a box
+/// that is not one (the scene's rule, proceduray::validate(Aabb)).
 inline void check_aabbs(std::span<const AabbGeometry> geometries, std::string_view operation) {
   if (geometries.empty()) {
-    throw std::invalid_argument(std::string(operation) + ": no geometries given; pass at least one AabbGeometry");
+    throw UsageError(std::string(operation) + ": no geometries given; pass at least one AabbGeometry");
   }
   for (std::size_t g = 0; g < geometries.size(); ++g) {
     if (geometries[g].boxes.empty()) {
-      throw std::invalid_argument(std::string(operation) + ": geometry " + std::to_string(g) +
-                                  " has no boxes; give it at least one AABB");
+      throw InvalidGeometryError(std::string(operation) + ": geometry " + std::to_string(g) +
+                                 " has no boxes; give it at least one AABB");
     }
     for (std::size_t i = 0; i < geometries[g].boxes.size(); ++i) {
-      const VkAabbPositionsKHR& b = geometries[g].boxes[i];
-      const float v[] = {b.minX, b.minY, b.minZ, b.maxX, b.maxY, b.maxZ};
-      bool ok = b.minX <= b.maxX && b.minY <= b.maxY && b.minZ <= b.maxZ;
-      for (float x : v) ok = ok && finite(x);
-      if (!ok) {
-        throw std::invalid_argument(std::string(operation) + ": geometry " + std::to_string(g) + " box " +
-                                    std::to_string(i) + " (" + std::to_string(b.minX) + ", " + std::to_string(b.minY) +
-                                    ", " + std::to_string(b.minZ) + ") - (" + std::to_string(b.maxX) + ", " +
-                                    std::to_string(b.maxY) + ", " + std::to_string(b.maxZ) +
-                                    ") is not a box; each min must be <= its max and all bounds finite");
+      const Aabb box = to_aabb(geometries[g].boxes[i]);
+      if (!proceduray::detail::valid_box(box)) {
+        proceduray::validate(box, std::string(operation) + ": geometry " + std::to_string(g) + " box " +
+                                      std::to_string(i));  // throws
       }
     }
   }
 }
 
-/// Throws for an empty list, a bad triangle list or a non-finite vertex.
+/// Throws UsageError for an empty list, InvalidGeometryError for a bad triangle list or a non-finite vertex.
 inline void check_triangles(std::span<const TriangleGeometry> geometries, std::string_view operation) {
   if (geometries.empty()) {
-    throw std::invalid_argument(std::string(operation) + ": no geometries given; pass at least one TriangleGeometry");
+    throw UsageError(std::string(operation) + ": no geometries given; pass at least one TriangleGeometry");
   }
   for (std::size_t g = 0; g < geometries.size(); ++g) {
     const TriangleGeometry& t = geometries[g];
-    const std::string which = std::string(operation) + ": triangle geometry " + std::to_string(g);
+    auto which = [&] { return std::string(operation) + ": triangle geometry " + std::to_string(g); };
     if (t.indices.empty() || t.indices.size() % 3 != 0) {
-      throw std::invalid_argument(which + " has " + std::to_string(t.indices.size()) +
-                                  " indices; a triangle list needs a non-zero multiple of 3");
+      throw InvalidGeometryError(which() + " has " + std::to_string(t.indices.size()) +
+                                 " indices; a triangle list needs a non-zero multiple of 3");
     }
     for (std::uint32_t i : t.indices) {
       if (i >= t.vertices.size()) {
-        throw std::invalid_argument(which + " indexes vertex " + std::to_string(i) + " but has " +
-                                    std::to_string(t.vertices.size()) + " vertices");
+        throw InvalidGeometryError(which() + " indexes vertex " + std::to_string(i) + " but has " +
+                                   std::to_string(t.vertices.size()) + " vertices; fix the index buffer");
       }
     }
     for (const glm::vec3& v : t.vertices) {
-      if (!finite(v.x) || !finite(v.y) || !finite(v.z)) {
-        throw std::invalid_argument(which + " has a non-finite vertex; give finite positions");
+      if (!proceduray::detail::finite(v)) {
+        throw InvalidGeometryError(which() + " has a non-finite vertex; give finite positions");
       }
     }
   }
@@ -348,32 +351,37 @@ inline AccelerationStructure build_blas(const Context& ctx, std::span<const Tria
 
 namespace detail {
 
-/// Packs instances into Vulkan's layout; throws for bad input, naming the instance.
-/// Throws for an instance Vulkan cannot take: no BLAS, indices past 24 bits, a non-finite or singular transform.
-inline void check_instance(const Instance& in, std::size_t i) {
-  // Built only on failure: a refit checks every instance every frame.
-  auto which = [i] { return "build_tlas: instance " + std::to_string(i); };
-  if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
-    throw std::invalid_argument(which() + " has no BLAS; set Instance::blas to a built structure");
-  }
-  if (in.custom_index >= (1u << 24) || in.sbt_offset >= (1u << 24)) {
-    throw std::invalid_argument(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
-                                std::to_string(in.sbt_offset) + " does not fit in 24 bits");
-  }
-  const glm::mat4& m = in.transform;
-  bool is_finite = true;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) is_finite = is_finite && finite(m[c][r]);
-  if (!is_finite || std::abs(glm::determinant(glm::mat3(m))) < 1e-30f) {
-    throw std::invalid_argument(which() + " transform is " + (is_finite ? "singular" : "not finite") +
-                                "; give every instance an invertible, finite object-to-world matrix");
-  }
+/// Throws InvalidGeometryError for a non-finite or singular object-to-world matrix: the scene's
+/// rule (proceduray::detail::check_transform_at), applied in place; `where` is built only on failure.
+template <class Where>
+void check_matrix(const glm::mat4& m, Where where) {
+  const auto c = proceduray::detail::check_transform_at([&m](int r, int col) { return m[col][r]; });
+  if (c.row >= 0 || c.singular) proceduray::validate(instance_transform(m), where());  // throws
 }
 
-inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed) {
+/// Throws for an instance Vulkan cannot take: no BLAS (UsageError), indices past 24 bits
+/// (DeviceLimitError), a non-finite or singular transform (InvalidGeometryError).
+inline void check_instance(const Instance& in, std::size_t i, std::string_view operation = "build_tlas") {
+  // Built only on failure: a refit checks every instance every frame.
+  auto which = [&] { return std::string(operation) + ": instance " + std::to_string(i); };
+  if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
+    throw UsageError(which() + " has no BLAS; set Instance::blas to a built structure");
+  }
+  if (!fits_instance_field(in.custom_index) || !fits_instance_field(in.sbt_offset)) {
+    throw DeviceLimitError(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
+                           std::to_string(in.sbt_offset) + " does not fit in 24 bits (at most " +
+                           std::to_string(max_instance_sbt_offset) + ": instanceCustomIndex and "
+                           "instanceShaderBindingTableRecordOffset are 24-bit fields); use fewer instances or records");
+  }
+  check_matrix(in.transform, [&] { return which() + " transform"; });
+}
+
+/// Packs instances into Vulkan's layout; throws for bad input (check_instance), naming the instance.
+inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
+                           std::string_view operation = "build_tlas") {
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance& in = instances[i];
-    check_instance(in, i);
+    check_instance(in, i, operation);
     const glm::mat4& m = in.transform;
     VkAccelerationStructureInstanceKHR& out = packed[i];
     out = {};
@@ -399,7 +407,7 @@ class Tlas {
         m_instances(ctx, std::max<VkDeviceSize>(1, instances.size()) * sizeof(VkAccelerationStructureInstanceKHR),
                     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
-    write(instances);
+    write(instances, "Tlas");
     auto build = info(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
     auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
     ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
@@ -418,25 +426,25 @@ class Tlas {
   /// Refits for new transforms (same instances, same BLASes): records into `cmd` with a barrier for tracing.
   void record_update(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
     if (!updatable()) {
-      throw std::logic_error("Tlas::update: this TLAS was built without BuildOptions::allow_update; build it with "
-                             "allow_update = true to move instances");
+      throw UsageError("Tlas::update: this TLAS was built without BuildOptions::allow_update; build it with "
+                       "allow_update = true to move instances");
     }
     if (instances.size() != m_count) {
-      throw std::invalid_argument("Tlas::update: " + std::to_string(instances.size()) + " instances given, the TLAS has " +
-                                  std::to_string(m_count) + "; an update may move instances, not add or remove them "
-                                  "(build a new Tlas for that)");
+      throw UsageError("Tlas::update: " + std::to_string(instances.size()) + " instances given, the TLAS has " +
+                       std::to_string(m_count) + "; an update may move instances, not add or remove them "
+                       "(build a new Tlas for that)");
     }
-    write(instances);
+    write(instances, "Tlas::update");
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
   }
   /// Rebuilds in place for instances whose BLASes were replaced (same count): records into `cmd`.
   void record_build(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
     if (instances.size() != m_count) {
-      throw std::invalid_argument("Tlas::record_build: " + std::to_string(instances.size()) +
-                                  " instances given, the TLAS has " + std::to_string(m_count) +
-                                  "; build a new Tlas to add or remove instances");
+      throw UsageError("Tlas::record_build: " + std::to_string(instances.size()) +
+                       " instances given, the TLAS has " + std::to_string(m_count) +
+                       "; build a new Tlas to add or remove instances");
     }
-    write(instances);
+    write(instances, "Tlas::record_build");
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
   }
   /// Refits and waits.
@@ -460,9 +468,9 @@ class Tlas {
     build.pGeometries = &m_geometry;
     return {build, &m_geometry};
   }
-  void write(std::span<const Instance> instances) {
+  void write(std::span<const Instance> instances, std::string_view operation) {
     auto* packed = static_cast<VkAccelerationStructureInstanceKHR*>(m_instances.data());
-    detail::pack_instances(instances, {packed, instances.size()});
+    detail::pack_instances(instances, {packed, instances.size()}, operation);
   }
   void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
     auto build = info(mode).first;

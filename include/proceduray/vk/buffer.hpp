@@ -36,7 +36,7 @@ class Buffer {
   /// Mapped pointer of a host-visible buffer, else nullptr.
   void* data() const noexcept { return m_mapped; }
 
-  /// Copies `bytes` to `offset`; throws std::out_of_range past the end or std::logic_error for device-local memory.
+  /// Copies `bytes` to `offset`; throws UsageError past the end or for device-local memory.
   void write(std::span<const std::byte> bytes, VkDeviceSize offset = 0);
   template <class T>
   void write(std::span<const T> values, VkDeviceSize offset = 0) {
@@ -55,7 +55,7 @@ class Buffer {
 inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory)
     : m_ctx(&ctx), m_size(size) {
   if (size == 0) {
-    throw std::invalid_argument("Buffer: size 0 requested; Vulkan buffers need at least one byte");
+    throw UsageError("Buffer: size 0 requested; Vulkan buffers need at least one byte");
   }
   auto info = make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
   info.size = size;
@@ -92,20 +92,20 @@ inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
 
 inline VkDeviceAddress Buffer::address() const {
   if (m_address == 0) {
-    throw std::logic_error("Buffer::address: the buffer was created without VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT; "
-                           "add it to the usage flags");
+    throw UsageError("Buffer::address: the buffer was created without VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT; "
+                     "add it to the usage flags");
   }
   return m_address;
 }
 
 inline void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset) {
   if (m_mapped == nullptr) {
-    throw std::logic_error("Buffer::write: the buffer is device-local; create it with Buffer::host_visible to write it "
-                           "from the host");
+    throw UsageError("Buffer::write: the buffer is device-local; create it with Buffer::host_visible to write it "
+                     "from the host");
   }
   if (offset > m_size || bytes.size() > m_size - offset) {
-    throw std::out_of_range("Buffer::write: " + std::to_string(bytes.size()) + " bytes at offset " +
-                            std::to_string(offset) + " overrun the buffer's " + std::to_string(m_size) + " bytes");
+    throw UsageError("Buffer::write: " + std::to_string(bytes.size()) + " bytes at offset " +
+                     std::to_string(offset) + " overrun the buffer's " + std::to_string(m_size) + " bytes");
   }
   std::memcpy(static_cast<std::byte*>(m_mapped) + offset, bytes.data(), bytes.size());
 }

@@ -66,9 +66,9 @@ struct DeviceFunctions {
 };
 
 /// Thrown when no device can ray trace: says what each device lacks and how to get one that can.
-class NoRayTracingDevice : public std::runtime_error {
+class NoRayTracingDevice : public EnvironmentError {
  public:
-  using std::runtime_error::runtime_error;
+  using EnvironmentError::EnvironmentError;
 };
 
 /// Instance, device, queue and command pool for one ray-tracing device.
@@ -205,8 +205,8 @@ inline DevicePreference preference_from_environment(DevicePreference preference)
   if (env == nullptr || *env == '\0' || std::strcmp(env, "auto") == 0) return preference;
   if (std::strcmp(env, "cpu") == 0) return DevicePreference::cpu;
   if (std::strcmp(env, "gpu") == 0) return DevicePreference::gpu;
-  throw std::invalid_argument(std::string("Context: PROCEDURAY_DEVICE='") + env +
-                              "' is not a device choice; use cpu, gpu or auto");
+  throw UsageError(std::string("Context: PROCEDURAY_DEVICE='") + env +
+                   "' is not a device choice; use cpu, gpu or auto");
 }
 
 inline const char* to_string(DevicePreference p) {
@@ -266,7 +266,7 @@ inline void Context::create_instance(const ContextOptions& options) {
       return std::strcmp(l.layerName, detail::validation_layer) == 0;
     });
     if (!found) {
-      throw std::runtime_error(
+      throw EnvironmentError(
           "Context: validation was asked for but VK_LAYER_KHRONOS_validation is not installed; "
           "install it (apt-get install vulkan-validationlayers) or set ContextOptions::validation = false");
     }

@@ -60,8 +60,8 @@ inline DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<Bindin
   std::map<VkDescriptorType, std::uint32_t> counts;
   for (const Binding& b : bindings) {
     if (!m_types.emplace(b.binding, b.type).second) {
-      throw std::invalid_argument("DescriptorSet: binding " + std::to_string(b.binding) +
-                                  " is listed twice; give each binding its own number");
+      throw UsageError("DescriptorSet: binding " + std::to_string(b.binding) +
+                       " is listed twice; give each binding its own number");
     }
     described.push_back({b.binding, b.type, 1, b.stages, nullptr});
     ++counts[b.type];
@@ -93,8 +93,8 @@ inline DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<Bindin
 inline VkDescriptorType DescriptorSet::type_of(std::uint32_t binding, const char* what) const {
   auto it = m_types.find(binding);
   if (it == m_types.end()) {
-    throw std::invalid_argument(std::string("DescriptorSet::write: binding ") + std::to_string(binding) +
-                                " does not exist in this set; write " + what + " to a binding the set was made with");
+    throw UsageError(std::string("DescriptorSet::write: binding ") + std::to_string(binding) +
+                     " does not exist in this set; write " + what + " to a binding the set was made with");
   }
   return it->second;
 }
@@ -104,8 +104,8 @@ inline VkWriteDescriptorSet DescriptorSet::write_info(std::uint32_t binding, con
                                                      const void* next) const {
   const VkDescriptorType type = type_of(binding, what);
   if (std::find(accepted.begin(), accepted.end(), type) == accepted.end()) {
-    throw std::invalid_argument("DescriptorSet::write: binding " + std::to_string(binding) + " cannot hold " + what +
-                                "; write it to a binding of that type");
+    throw UsageError("DescriptorSet::write: binding " + std::to_string(binding) + " cannot hold " + what +
+                     "; write it to a binding of that type");
   }
   auto write = make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, next);
   write.dstSet = m_set;

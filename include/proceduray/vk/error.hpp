@@ -2,7 +2,12 @@
 //
 //   proceduray::vk::check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
 //   try { ... } catch (const proceduray::vk::VulkanError& e) { e.result(); e.call(); }
+//
+// VulkanError is a std::system_error and a proceduray::Error (error.hpp), so
+// `catch (const proceduray::Error&)` catches it with every other library exception.
 #pragma once
+
+#include <proceduray/error.hpp>
 
 #include <vulkan/vulkan.h>
 
@@ -60,13 +65,14 @@ inline const std::error_category& vulkan_category() noexcept {
 }
 
 /// A failed Vulkan call: carries the VkResult and the call's name.
-class VulkanError : public std::system_error {
+class VulkanError : public std::system_error, public proceduray::Error {
  public:
   VulkanError(VkResult result, std::string call, const std::string& what)
       : std::system_error(static_cast<int>(result), vulkan_category(), what),
         m_result(result), m_call(std::move(call)) {}
   VkResult result() const noexcept { return m_result; }
   const std::string& call() const noexcept { return m_call; }
+  const char* what() const noexcept override { return std::system_error::what(); }
 
  private:
   VkResult m_result;

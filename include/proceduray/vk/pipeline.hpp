@@ -1,16 +1,20 @@
 // A ray-tracing pipeline from compiled shaders and the groups that use them.
 //
 //   proceduray::vk::PipelineDesc desc;
-//   auto rgen = desc.add_shader(ShaderStage::raygen, compile_glsl(...));
-//   auto miss = desc.add_shader(ShaderStage::miss, compile_glsl(...));
-//   auto hit  = desc.add_shader(ShaderStage::closest_hit, compile_glsl(...));
-//   auto isec = desc.add_shader(ShaderStage::intersection, compile_glsl(...));
-//   desc.groups = {ShaderGroup::general(rgen), ShaderGroup::general(miss),
+//   auto rgen = desc.add_shader(ShaderStage::raygen, compile_glsl({.stage = ShaderStage::raygen, .name = "raygen.rgen", .code = rgen_glsl}));
+//   auto miss = desc.add_shader(ShaderStage::miss, miss_spirv);             // SPIR-V from compile_glsl
+//   auto hit  = desc.add_shader(ShaderStage::closest_hit, hit_spirv);
+//   auto isec = desc.add_shader(ShaderStage::intersection, isec_spirv);
+//   desc.groups = {ShaderGroup::general_shader(rgen), ShaderGroup::general_shader(miss),
 //                  ShaderGroup::procedural(hit, isec)};
 //   desc.set_layouts = {set.layout()};
 //   desc.push_constant_size = sizeof(Camera);
 //   proceduray::vk::Pipeline pipeline(ctx, desc);
 //   pipeline.group_handle(2);   // bytes for SBT record of group 2
+//
+// A shader other than raygen that calls traceRayEXT needs max_recursion_depth >= 2: Pipeline
+// refuses less with a UsageError (lavapipe would crash at the nested trace), as does a depth past
+// the device's maxRayRecursionDepth with a DeviceLimitError.
 #pragma once
 
 #include <proceduray/vk/descriptors.hpp>
@@ -19,6 +23,8 @@
 #include <algorithm>
 #include <cstring>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace proceduray::vk {
@@ -61,6 +67,20 @@ struct PipelineDesc {
     return static_cast<std::uint32_t>(shaders.size() - 1);
   }
 };
+
+/// Throws UsageError when `spirv`, a `stage` shader named `shader`, traces rays but `depth` leaves
+/// it no room: raygen traces at depth 1, any other stage's traces are nested (depth >= 2).
+/// `operation` is the user's call, `declared` whether the user set the depth, `fix` how to set it.
+inline void check_recursion_depth(std::string_view operation, ShaderStage stage, std::string_view shader,
+                                  std::span<const std::uint32_t> spirv, std::uint32_t depth, bool declared,
+                                  std::string_view fix) {
+  if (stage == ShaderStage::raygen || depth >= 2 || !traces_rays(spirv)) return;
+  throw UsageError(std::string(operation) + ": " + to_string(stage) + " shader '" + std::string(shader) +
+                   "' calls traceRayEXT, so its rays nest inside the raygen's, but the pipeline's max recursion "
+                   "depth is " + std::to_string(depth) + (declared ? "" : " (the default: none was declared)") +
+                   ", which would crash at the nested trace; " + std::string(fix) +
+                   " with n >= 2 (1 + how many rays deep the nesting goes)");
+}
 
 namespace detail {
 inline VkShaderStageFlagBits vk_stage(ShaderStage s) {
@@ -107,16 +127,16 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
       m_push_constant_size(desc.push_constant_size) {
   const std::uint32_t device_depth = ctx.ray_tracing_properties().maxRayRecursionDepth;
   if (desc.max_recursion_depth > device_depth) {
-    throw std::invalid_argument("Pipeline: max_recursion_depth " + std::to_string(desc.max_recursion_depth) +
-                                " exceeds the device's maxRayRecursionDepth " + std::to_string(device_depth) +
-                                "; trace deeper paths iteratively from the raygen shader");
+    throw DeviceLimitError("Pipeline: max_recursion_depth " + std::to_string(desc.max_recursion_depth) +
+                           " exceeds maxRayRecursionDepth " + std::to_string(device_depth) + " of " + ctx.name() +
+                           "; trace deeper paths iteratively from the raygen shader");
   }
   const auto shader_count = static_cast<std::uint32_t>(desc.shaders.size());
   auto check_index = [&](std::size_t g, std::uint32_t index, const char* role) {
     if (index != VK_SHADER_UNUSED_KHR && index >= shader_count) {
-      throw std::invalid_argument("Pipeline: group " + std::to_string(g) + " names " + role + " shader " +
-                                  std::to_string(index) + " but only " + std::to_string(shader_count) +
-                                  " shaders were added");
+      throw UsageError("Pipeline: group " + std::to_string(g) + " names " + role + " shader " +
+                       std::to_string(index) + " but only " + std::to_string(shader_count) +
+                       " shaders were added");
     }
   };
   for (std::size_t g = 0; g < desc.groups.size(); ++g) {
@@ -127,9 +147,14 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
     check_index(g, group.intersection, "intersection");
     if (group.type == VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR &&
         group.intersection == VK_SHADER_UNUSED_KHR) {
-      throw std::invalid_argument("Pipeline: procedural hit group " + std::to_string(g) +
-                                  " has no intersection shader; procedural geometry needs one");
+      throw UsageError("Pipeline: procedural hit group " + std::to_string(g) +
+                       " has no intersection shader; procedural geometry needs one");
     }
+  }
+  for (std::size_t i = 0; i < desc.shaders.size(); ++i) {
+    check_recursion_depth("Pipeline", desc.shaders[i].stage, "PipelineDesc::shaders[" + std::to_string(i) + "]",
+                          desc.shaders[i].spirv, desc.max_recursion_depth, true,
+                          "set PipelineDesc::max_recursion_depth = n");
   }
 
   VkPushConstantRange push{all_ray_tracing_stages, 0, desc.push_constant_size};
@@ -220,8 +245,8 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
 
 inline std::span<const std::byte> Pipeline::group_handle(std::uint32_t group) const {
   if (group >= m_group_count) {
-    throw std::out_of_range("Pipeline::group_handle: group " + std::to_string(group) + " does not exist; the pipeline has " +
-                            std::to_string(m_group_count) + " groups");
+    throw UsageError("Pipeline::group_handle: group " + std::to_string(group) + " does not exist; the pipeline has " +
+                     std::to_string(m_group_count) + " groups");
   }
   return std::span<const std::byte>(m_handles).subspan(std::size_t{group} * m_handle_size, m_handle_size);
 }

@@ -1,7 +1,7 @@
 // A VkPipelineCache kept on disk, so a second run skips shader compilation.
 //
 //   proceduray::vk::PipelineCache cache(ctx, "proceduray.cache");   // loads it if valid
-//   ... create pipelines with cache.get() ...
+//   // ... create pipelines with cache.get() ...
 //   cache.save();                                                    // writes it back
 //
 // The file is this library's own: a magic, the data size and an FNV-1a checksum, then the
@@ -35,7 +35,7 @@ class PipelineCache {
   bool loaded() const noexcept { return m_loaded; }
   /// Why the file was ignored; empty when it was loaded or absent.
   const std::string& warning() const noexcept { return m_warning; }
-  /// Writes the cache to its file (no-op without a path); throws std::runtime_error when it cannot.
+  /// Writes the cache to its file (no-op without a path); throws EnvironmentError when it cannot.
   void save() const;
 
   /// What this library writes before the driver's data.
@@ -126,8 +126,8 @@ inline void PipelineCache::save() const {
     out.write(reinterpret_cast<const char*>(&sum), 8);
     out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
     if (!out) {
-      throw std::runtime_error("PipelineCache::save: cannot write '" + tmp.string() +
-                               "'; choose a cache path in a writable folder");
+      throw EnvironmentError("PipelineCache::save: cannot write '" + tmp.string() +
+                             "'; choose a cache path in a writable folder");
     }
   }
   std::filesystem::rename(tmp, m_path);

@@ -83,8 +83,8 @@ class RefittableBlas {
   }
 
  private:
-  static std::invalid_argument topology_error() {
-    return std::invalid_argument("RefittableBlas::record_refit: the geometry has other primitive counts or indices "
+  static UsageError topology_error() {
+    return UsageError("RefittableBlas::record_refit: the geometry has other primitive counts or indices "
                                  "than the BLAS was built with; a refit keeps the topology: build a new "
                                  "RefittableBlas instead");
   }

@@ -65,12 +65,12 @@ class SbtBuffer {
 inline void SbtBuffer::place(const Context& ctx) {
   if (m_layout.properties.handle_size != ctx.sbt_properties().handle_size ||
       m_layout.properties.base_alignment != ctx.sbt_properties().base_alignment) {
-    throw std::invalid_argument("SbtBuffer: the table was laid out for handle size " +
-                                std::to_string(m_layout.properties.handle_size) + " and base alignment " +
-                                std::to_string(m_layout.properties.base_alignment) + " but " + ctx.name() + " has " +
-                                std::to_string(ctx.sbt_properties().handle_size) + " and " +
-                                std::to_string(ctx.sbt_properties().base_alignment) +
-                                "; lay it out with ctx.sbt_properties() (or build it with ctx.limits())");
+    throw UsageError("SbtBuffer: the table was laid out for handle size " +
+                     std::to_string(m_layout.properties.handle_size) + " and base alignment " +
+                     std::to_string(m_layout.properties.base_alignment) + " but " + ctx.name() + " has " +
+                     std::to_string(ctx.sbt_properties().handle_size) + " and " +
+                     std::to_string(ctx.sbt_properties().base_alignment) +
+                     "; lay it out with ctx.sbt_properties() (or build it with ctx.limits())");
   }
   m_buffer = Buffer(ctx, m_layout.size + m_layout.properties.base_alignment,
                     VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT);
@@ -89,7 +89,7 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
     : m_layout(layout) {
   place(ctx);
   if (pipeline.group_count() != plan.pipeline().groups.size()) {
-    throw std::invalid_argument("SbtBuffer: the pipeline has " + std::to_string(pipeline.group_count()) +
+    throw UsageError("SbtBuffer: the pipeline has " + std::to_string(pipeline.group_count()) +
                                 " groups but the table's plan has " + std::to_string(plan.pipeline().groups.size()) +
                                 "; make the pipeline from the same plan");
   }
@@ -113,14 +113,14 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
     const std::uint64_t at = layout.record_offset(r.region, r.index);  // throws past the region
     const std::uint64_t room = layout.regions[k].stride - layout.properties.handle_size;
     if (r.data.size() > room) {
-      throw std::length_error("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
-                              std::to_string(r.index) + " has " + std::to_string(r.data.size()) +
-                              " bytes of data but the layout left room for " + std::to_string(room) +
-                              "; lay the table out with the region's largest record data");
+      throw UsageError("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
+                       std::to_string(r.index) + " has " + std::to_string(r.data.size()) +
+                       " bytes of data but the layout left room for " + std::to_string(room) +
+                       "; lay the table out with the region's largest record data");
     }
     if (written[k][r.index]) {
-      throw std::invalid_argument("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
-                                  std::to_string(r.index) + " is given twice");
+      throw UsageError("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
+                       std::to_string(r.index) + " is given twice");
     }
     written[k][r.index] = true;
     const auto handle = pipeline.group_handle(r.group);  // throws for an unknown group
@@ -130,9 +130,9 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
   for (std::uint32_t k = 0; k < 4; ++k) {
     for (std::uint32_t i = 0; i < layout.regions[k].count; ++i) {
       if (!written[k][i]) {
-        throw std::invalid_argument("SbtBuffer: " + std::string(to_string(static_cast<SbtRegionKind>(k))) +
-                                    " record " + std::to_string(i) +
-                                    " was laid out but never given; a trace reaching it would run no shader");
+        throw UsageError("SbtBuffer: " + std::string(to_string(static_cast<SbtRegionKind>(k))) +
+                         " record " + std::to_string(i) +
+                         " was laid out but never given; a trace reaching it would run no shader");
       }
     }
   }

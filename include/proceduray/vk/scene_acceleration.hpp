@@ -83,6 +83,10 @@ class SceneAcceleration {
   };
   const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, std::string_view operation) const;
   void check_movable(GeometryId geometry, std::string_view operation) const;
+  /// The TLAS index of (geometry, instance) of a movable geometry; throws InvalidGeometryError or UsageError.
+  std::uint32_t movable_instance(GeometryId geometry, std::uint32_t instance, std::string_view op) const;
+  /// InvalidGeometryError naming `op`, the geometry and the instance for a non-finite or singular matrix.
+  void check_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& m, std::string_view op) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
   void record_refit(VkCommandBuffer cmd, std::uint32_t blas);
@@ -175,25 +179,35 @@ inline void SceneAcceleration::check_movable(GeometryId geometry, std::string_vi
   }
 }
 
+inline std::uint32_t SceneAcceleration::movable_instance(GeometryId geometry, std::uint32_t instance,
+                                                         std::string_view op) const {
+  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
+  check_movable(geometry, op);
+  return k;
+}
+
+inline void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
+                                               std::string_view op) const {
+  detail::check_matrix(m, [&] {
+    return std::string(op) + ": geometry \"" + m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
+           " transform";
+  });
+}
+
 inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
                                               std::string_view op) {
   check_movable(geometry, op);
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
-  const std::size_t count = m_plan->blases()[g.blas].instance_count;
-  if (object_to_world.size() != count) {
-    throw UsageError(std::string(op) + ": geometry \"" + g.name + "\" has " +
-                                std::to_string(count) + " instances, " + std::to_string(object_to_world.size()) +
-                                " transforms given; give one per instance");
+  const PlannedBlas& blas = m_plan->blases()[g.blas];
+  if (object_to_world.size() != blas.instance_count) {
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name + "\" has " +
+                               std::to_string(blas.instance_count) + " instances, " +
+                               std::to_string(object_to_world.size()) + " transforms given; give one per instance");
   }
   // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
   // matrix leaves every instance where it was.
-  const std::uint32_t first = m_plan->tlas_index(geometry, 0, op);
-  for (std::size_t i = 0; i < count; ++i) {
-    Instance probe = m_instances[first + i];
-    probe.transform = object_to_world[i];
-    detail::check_instance(probe, first + i);  // throws for a non-finite or singular transform
-  }
-  for (std::size_t i = 0; i < count; ++i) m_instances[first + i].transform = object_to_world[i];
+  for (std::uint32_t i = 0; i < blas.instance_count; ++i) check_transform(geometry, i, object_to_world[i], op);
+  for (std::uint32_t i = 0; i < blas.instance_count; ++i) m_instances[blas.first_instance + i].transform = object_to_world[i];
   m_transforms_dirty = true;
 }
 
@@ -207,12 +221,9 @@ inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t insta
 
 inline void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
                                              std::string_view op) {
-  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
-  check_movable(geometry, op);
-  Instance moved = m_instances[k];
-  moved.transform = object_to_world;
-  detail::check_instance(moved, k);  // throws for a non-finite or singular transform
-  m_instances[k] = moved;
+  const std::uint32_t k = movable_instance(geometry, instance, op);
+  check_transform(geometry, instance, object_to_world, op);  // throws
+  m_instances[k].transform = object_to_world;
   m_transforms_dirty = true;
 }
 

@@ -41,7 +41,7 @@ struct PipelineTimings {
   bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
 };
 
-/// The path of shader `name` in the first of `dirs` that has it; throws EnvironmentError listing the folders.
+/// The path of shader `name` in the first of `dirs` that has it; throws UsageError listing the folders.
 inline std::string find_shader(std::span<const std::filesystem::path> dirs, const std::string& name) {
   std::string tried;
   for (const auto& dir : dirs) {
@@ -49,11 +49,13 @@ inline std::string find_shader(std::span<const std::filesystem::path> dirs, cons
     if (std::filesystem::is_regular_file(dir / name, ec)) return (dir / name).string();
     tried += " '" + dir.string() + "'";
   }
-  throw EnvironmentError("Renderer: shader '" + name + "' is not in any shader folder (searched" + tried +
-                         "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
+  throw UsageError("Renderer: shader '" + name + "' is not in any shader folder (searched" + tried +
+                   "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
 }
 
-/// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push constants.
+/// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push
+/// constants. Throws UsageError for a missing shader, or for a non-raygen stage that traces rays at
+/// an undeclared recursion depth; ShaderCompileError naming the file and line.
 inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
                                                      std::span<const VkDescriptorSetLayout> set_layouts,
                                                      std::uint32_t push_size, PipelineOptions options,
@@ -71,8 +73,11 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
     const std::string path = find_shader(options.shader_dirs, stage.shader);
     std::string preamble = (options.declarations ? options.declarations(stage.stage, stage.shader)
                                                  : stage.declarations) + options.extra_declarations;
-    desc.add_shader(stage.stage, compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
-                                               .preamble = std::move(preamble)}));
+    std::vector<std::uint32_t> spirv = compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
+                                                     .preamble = std::move(preamble)});
+    check_recursion_depth("Renderer", stage.stage, stage.shader, spirv, planned.max_recursion_depth,
+                          planned.recursion_depth_declared, "call Scene::set_max_recursion_depth(n)");  // throws
+    desc.add_shader(stage.stage, std::move(spirv));
   }
   t.compile_ms = ms_since(start);
   for (const PlannedGroup& g : planned.groups) {

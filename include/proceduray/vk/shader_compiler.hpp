@@ -8,8 +8,11 @@
 // include folders, then the library's shaders/ folder (PROCEDURAY_SHADER_DIR, at build time
 // or in the environment). The target is Vulkan 1.2 / SPIR-V 1.4, which ray tracing needs.
 // A failed compile throws ShaderCompileError with glslang's log, the shader's name and line.
+//
+//   proceduray::vk::traces_rays(spirv);   // true when the shader calls traceRayEXT (OpTraceRayKHR)
 #pragma once
 
+#include <proceduray/error.hpp>
 #include <proceduray/scene/shader_stage.hpp>
 
 #include <glslang/Public/ResourceLimits.h>
@@ -22,6 +25,7 @@
 #include <fstream>
 #include <mutex>
 #include <regex>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -41,10 +45,10 @@ struct ShaderSource {
 };
 
 /// A shader that did not compile: what() holds the name, the first error line and glslang's log.
-class ShaderCompileError : public std::logic_error {
+class ShaderCompileError : public UsageError {
  public:
   ShaderCompileError(std::string name, int line, std::string log)
-      : std::logic_error("compile_glsl: shader '" + name + "' failed to compile" +
+      : UsageError("compile_glsl: shader '" + name + "' failed to compile" +
                          (line > 0 ? " at line " + std::to_string(line) : std::string()) + ":\n" + log),
         m_name(std::move(name)), m_line(line), m_log(std::move(log)) {}
   const std::string& name() const noexcept { return m_name; }
@@ -58,6 +62,21 @@ class ShaderCompileError : public std::logic_error {
   std::string m_log;
 };
 
+/// Whether a SPIR-V module calls traceRayEXT (an OpTraceRayKHR instruction, opcode 4445): a
+/// non-raygen stage that does needs a pipeline recursion depth >= 2. executeCallableEXT
+/// (OpExecuteCallableKHR, 4446) is not a trace. A truncated or malformed module gives false.
+inline bool traces_rays(std::span<const std::uint32_t> spirv) noexcept {
+  constexpr std::uint32_t op_trace_ray = 4445;
+  constexpr std::size_t header_words = 5;  // magic, version, generator, bound, schema
+  for (std::size_t at = header_words; at < spirv.size();) {
+    const std::uint32_t word_count = spirv[at] >> 16;
+    if ((spirv[at] & 0xFFFFu) == op_trace_ray) return true;
+    if (word_count == 0) return false;
+    at += word_count;
+  }
+  return false;
+}
+
 /// The library's GLSL folder: $PROCEDURAY_SHADER_DIR, else the one known at build time.
 inline std::filesystem::path library_shader_dir() {
   if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') return env;
@@ -68,13 +87,13 @@ inline std::filesystem::path library_shader_dir() {
 #endif
 }
 
-/// Reads a text file; throws std::runtime_error naming the path when it cannot.
+/// Reads a text file; throws EnvironmentError naming the path when it cannot.
 inline std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw std::runtime_error("read_text_file: cannot open '" + path.string() + "'; check the path" +
-                             (path.is_relative() ? " (relative to " + std::filesystem::current_path().string() + ")"
-                                                 : std::string()));
+    throw EnvironmentError("read_text_file: cannot open '" + path.string() + "'; check the path" +
+                           (path.is_relative() ? " (relative to " + std::filesystem::current_path().string() + ")"
+                                               : std::string()));
   }
   std::ostringstream text;
   text << in.rdbuf();

@@ -2,8 +2,10 @@
 //
 //   proceduray::vk::StorageImage image(ctx, 640, 480);   // in VK_IMAGE_LAYOUT_GENERAL
 //   set.write(1, image.view());
-//   ... trace ...
+//   // ... trace ...
 //   std::vector<std::uint8_t> rgba = image.read();        // width * height * 4 bytes, rows top to bottom
+//
+// A zero size throws proceduray::UsageError, one past maxImageDimension2D proceduray::DeviceLimitError.
 #pragma once
 
 #include <proceduray/vk/buffer.hpp>
@@ -43,8 +45,11 @@ inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::
     : m_ctx(&ctx), m_width(width), m_height(height) {
   const std::uint32_t limit = ctx.properties().limits.maxImageDimension2D;
   if (width == 0 || height == 0 || width > limit || height > limit) {
-    throw std::invalid_argument("StorageImage: size " + std::to_string(width) + "x" + std::to_string(height) +
-                                " is outside 1.." + std::to_string(limit) + " (the device's maxImageDimension2D)");
+    const std::string message = "StorageImage: size " + std::to_string(width) + "x" + std::to_string(height) +
+                                " is outside 1.." + std::to_string(limit) + " (maxImageDimension2D of " + ctx.name() +
+                                "); give a size in that range";
+    if (width == 0 || height == 0) throw UsageError(message);
+    throw DeviceLimitError(message);
   }
   auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   info.imageType = VK_IMAGE_TYPE_2D;

@@ -1,15 +1,17 @@
 // Records and runs one vkCmdTraceRaysKHR over a width x height grid.
 //
-//   proceduray::vk::trace(ctx, pipeline, set, sbt, 640, 480, proceduray::vk::bytes_of(camera));
+//   proceduray::vk::trace(ctx, pipeline, set, sbt, 640, 480, proceduray::vk::bytes_of(camera));   // waits
+//   ctx.submit([&](VkCommandBuffer cmd) { proceduray::vk::record_trace(ctx, cmd, pipeline, sets, sbt, 640, 480); });
 //
-// The size is checked against the device's dispatch limits before anything is recorded.
+// The size is checked against the device's dispatch limits before anything is recorded: a zero
+// size throws proceduray::UsageError, one past the limits proceduray::DeviceLimitError.
 #pragma once
 
 #include <proceduray/vk/sbt_buffer.hpp>
 
 namespace proceduray::vk {
 
-/// Throws std::invalid_argument unless width x height can be dispatched on this device.
+/// Throws UsageError for a zero size, DeviceLimitError for one this device cannot dispatch.
 inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint32_t height) {
   const auto& limits = ctx.properties().limits;
   const std::uint64_t max_x = std::uint64_t{limits.maxComputeWorkGroupCount[0]} * limits.maxComputeWorkGroupSize[0];
@@ -17,14 +19,16 @@ inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint3
   const std::uint64_t max_rays = ctx.ray_tracing_properties().maxRayDispatchInvocationCount;
   const std::uint64_t rays = std::uint64_t{width} * height;
   if (width == 0 || height == 0 || width > max_x || height > max_y || rays > max_rays) {
-    throw std::invalid_argument("trace: size " + std::to_string(width) + "x" + std::to_string(height) +
+    const std::string message = "trace: size " + std::to_string(width) + "x" + std::to_string(height) +
                                 " cannot be dispatched on " + ctx.name() + "; width must be 1.." +
                                 std::to_string(max_x) + ", height 1.." + std::to_string(max_y) +
-                                " and width*height at most " + std::to_string(max_rays));
+                                " and width*height at most " + std::to_string(max_rays) +
+                                " (maxComputeWorkGroupCount x maxComputeWorkGroupSize, maxRayDispatchInvocationCount)";
+    if (width == 0 || height == 0) throw UsageError(message);
+    throw DeviceLimitError(message);
   }
 }
 
-/// Binds the pipeline, set 0 and the push constants, traces, and waits for the queue.
 /// Records the binds (pipeline, sets 0..n-1, push constants), the stack size and one trace into `cmd`;
 /// `before` and `after` run right around vkCmdTraceRaysKHR (timestamps, say).
 template <class Around = void (*)(VkCommandBuffer)>
@@ -33,9 +37,9 @@ void record_trace(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipel
                   std::uint32_t height, std::span<const std::byte> push_constants = {},
                   Around before = [](VkCommandBuffer) {}, Around after = [](VkCommandBuffer) {}) {
   if (push_constants.size() != pipeline.push_constant_size()) {
-    throw std::invalid_argument("trace: " + std::to_string(push_constants.size()) +
-                                " bytes of push constants given but the pipeline declares " +
-                                std::to_string(pipeline.push_constant_size()));
+    throw UsageError("trace: " + std::to_string(push_constants.size()) +
+                     " bytes of push constants given but the pipeline declares " +
+                     std::to_string(pipeline.push_constant_size()) + "; pass exactly that many bytes");
   }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.get());
   if (!sets.empty()) {
@@ -53,6 +57,7 @@ void record_trace(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipel
   after(cmd);
 }
 
+/// Checks the size, then records the binds and one trace, submits them and waits for the queue.
 inline void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
                   const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
                   std::span<const std::byte> push_constants = {}) {

@@ -1,0 +1,7 @@
+#include "tests/docs/scene/scene_names.hpp"
+using namespace doc_scene;
+
+// @declarations
+void usage(proceduray::Scene& scene, proceduray::ShaderTable& table, proceduray::LocalSignatureId<TintArgs> tint_signature) {
+  // @statements
+}

@@ -1,0 +1,8 @@
+#include "tests/docs/vk/vk_names.hpp"
+using namespace doc_vk;
+
+// @declarations
+void usage(const proceduray::vk::Context& ctx, proceduray::ShaderTable& table, const SceneConstants& constants, std::span<const Tint> tints, const FrameKnobs& knobs,
+           proceduray::GeometryId pacman, proceduray::InstanceTransform moved, proceduray::GeometryId blob, proceduray::Aabb box) {
+  // @statements
+}

@@ -1,0 +1,8 @@
+#include "tests/docs/vk/vk_names.hpp"
+using namespace doc_vk;
+
+// @declarations
+void usage(const proceduray::vk::Context& ctx, const proceduray::vk::Pipeline& pipeline, const proceduray::vk::DescriptorSet& set, const proceduray::vk::SbtBuffer& sbt,
+           std::span<const VkDescriptorSet> sets, const Camera& camera) {
+  // @statements
+}

@@ -1,0 +1,34 @@
+// What the vk/ usage blocks take as given: the library, the shared doc types, and a few values
+// named as the blocks name them.
+#pragma once
+
+#include <proceduray/proceduray.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tests/docs/doc_types.hpp"
+
+namespace doc_vk {
+using namespace doc_types;
+using proceduray::SbtRegionKind;
+using proceduray::BindingKind;
+using proceduray::layout_sbt;
+using proceduray::vk::ShaderStage;
+using proceduray::vk::ShaderGroup;
+using proceduray::vk::compile_glsl;
+using proceduray::Camera;
+using Colour = Material;
+inline const Material red{{1, 0, 0, 1}}, blue{{0, 0, 1, 1}};
+inline constexpr proceduray::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
+inline constexpr proceduray::StorageSlot<Tint> tints_slot{.binding = 3, .name = "tints"};
+inline constexpr proceduray::PushConstantSlot<FrameKnobs> knobs_slot{.name = "knobs"};
+/// A scene as the examples write one (proceduray::SceneTables with renderer_options).
+struct MyScene : proceduray::SceneTables {
+  proceduray::vk::RendererOptions renderer_options(const std::string&) const { return {}; }
+};
+}  // namespace doc_vk
