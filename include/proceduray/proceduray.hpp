@@ -4,7 +4,7 @@
 //   proceduray::vk::Context ctx;                       // GPU if present, else lavapipe
 //   proceduray::Scene scene = make_scene();            // rays, objects, entries: examples/02_paper_scene
 //   proceduray::vk::Renderer renderer(ctx, scene, options);   // compiles the scene, builds it on the device
-//   auto blas = proceduray::vk::build_blas(ctx, ...);  // or the thin layer alone: examples/01_hello_sphere
+//   auto blas = proceduray::vk::build_blas(ctx, geometries);   // or the thin layer alone: examples/01_hello_sphere
 //
 // Layers: scene/ (pure, no Vulkan) and shader/ (pure) under vk/ (the thin backend), and
 // image/ for output. Each header also compiles on its own. Every exception the library throws

@@ -3,7 +3,7 @@
 namespace pr = proceduray;
 using namespace doc_vk;
 // @declarations
-void usage(pr::Scene& scene, pr::ShaderTable& table, pr::vk::Renderer& renderer, const pr::Aabb& box,
+void usage(pr::Scene& scene, pr::vk::Renderer& renderer, const pr::Aabb& box,
            const std::vector<pr::InstanceTransform>& transforms, pr::LocalSignatureId<TintArgs> tint_signature,
            pr::GeometryId ball_id, pr::GeometryId blob_id, pr::InstanceTransform moved, const std::vector<pr::Aabb>& boxes,
            std::uint32_t w, std::uint32_t h) {

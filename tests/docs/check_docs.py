@@ -43,7 +43,7 @@ BATCHES = {
     'shader': ['include/proceduray/shader/*.hpp'],
     'scene': ['include/proceduray/scene/*.hpp'],
     # scene/ headers whose blocks show the renderer are compiled with vk/ (the scene batch stays pure).
-    'vk': ['include/proceduray/vk/*.hpp', 'include/proceduray/scene/scene_tables.hpp',
+    'vk': ['include/proceduray/vk/*.hpp',
            'include/proceduray/scene/uniform_slot.hpp'],
     'umbrella': ['include/proceduray/*.hpp', 'include/proceduray/image/*.hpp', 'examples/common/*.hpp'],
     'readme': ['README.md'],

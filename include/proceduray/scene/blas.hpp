@@ -5,7 +5,7 @@
 //   proceduray::BlasSet set;
 //   const auto join = set.check(desc, "pacman", "Scene::add_geometry");   // throws; changes nothing
 //   const std::uint32_t geometry_index = set.add(join, geometry_id, desc, "pacman");
-//   set.all()[join.blas].instances;   // the TLAS instances of that BLAS
+//   const auto& instances = set.all()[join.blas].instances;   // the TLAS instances of that BLAS
 #pragma once
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 //
 //   proceduray::DeviceLimits limits{.sbt = {.handle_size = 32, .handle_alignment = 16,
 //                                           .base_alignment = 32, .max_stride = 16384}};
-//   auto layout = compile(scene).layout(limits);   // throws DeviceLimitError when the scene does not fit
+//   auto layout = proceduray::compile(scene).layout(limits);   // throws DeviceLimitError when the scene does not fit
 //
 // Fill it from VkPhysicalDeviceRayTracingPipelinePropertiesKHR and
 // VkPhysicalDeviceAccelerationStructurePropertiesKHR; the defaults are the smallest values
@@ -24,7 +24,7 @@ inline constexpr std::uint32_t max_instance_sbt_offset = 0xFF'FFFFu;
 /// and by vk::build_tlas.
 constexpr bool fits_instance_field(std::uint64_t value) noexcept { return value <= max_instance_sbt_offset; }
 
-/// Limits a built shader table must respect.
+/// Limits a compiled scene must respect (Plan::layout).
 struct DeviceLimits {
   SbtProperties sbt;                                  ///< handle size and alignments, max stride
   std::uint32_t max_ray_recursion_depth = 31;         ///< maxRayRecursionDepth

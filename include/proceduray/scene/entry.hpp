@@ -3,12 +3,10 @@
 // record. Scene::add_hit and friends make them; compile(scene) lays them out (plan.hpp).
 //
 //   proceduray::EntryList list;
-//   proceduray::Entry e;
-//   e.region = proceduray::SbtRegionKind::miss;
-//   e.ray = 0;
-//   const Sky sky{};
-//   proceduray::EntryId id = list.push(e, &sky, sizeof sky);
-//   std::span<const std::byte> bytes = list.data(list.all()[id.index()]);   // sizeof(Sky) bytes
+//   const proceduray::Entry e{.region = proceduray::SbtRegionKind::miss, .ray = 0};
+//   const float fog = 0.5f;
+//   proceduray::EntryId id = list.push(e, &fog, sizeof fog);
+//   std::span<const std::byte> bytes = list.data(list.all()[id.index()]);   // the 4 bytes of fog
 //
 // Record data is copied in when the entry is added: the entry owns its bytes.
 #pragma once

@@ -2,14 +2,14 @@
 // device (compile(scene) needs none), and read back by the renderer instead of deriving them
 // again. The files are exactly Plan::declarations: one per pipeline stage.
 //
-//   // paper_glsl.cpp, built and run by proceduray_generate_scene_glsl() (cmake/ProcedurayGlsl.cmake):
-//   #include "paper_scene.hpp"
-//   #include <proceduray/scene/glsl_files.hpp>
-//   int main(int argc, char** argv) { return proceduray::glsl_files_main(paper::PaperScene{}, argc, argv); }
-//
-//   // the program that renders:
-//   options.declarations = proceduray::glsl_files("build/paper_glsl");   // throws EnvironmentError when a file is missing
+//   proceduray::write_glsl_files(proceduray::compile(scene), "build/paper_glsl");   // one file per stage
 //   proceduray::glsl_file_name(proceduray::ShaderStage::closest_hit, "shade.rchit");   // "shade.rchit.closest_hit.glsl"
+//   auto read = proceduray::glsl_files("build/paper_glsl");   // for RendererOptions::declarations
+//   std::string text = read(proceduray::ShaderStage::closest_hit, "shade.rchit");   // EnvironmentError when missing
+//
+// The generator is one line (examples/02_paper_scene/glsl/generate.cpp), built and run by
+// proceduray_generate_scene_glsl() (cmake/ProcedurayGlsl.cmake) or a Meson custom_target:
+//   int main(int argc, char** argv) { return proceduray::glsl_files_main(paper::PaperScene{}, argc, argv); }
 #pragma once
 
 #include <exception>

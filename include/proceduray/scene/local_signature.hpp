@@ -5,7 +5,7 @@
 //   PROCEDURAY_STRUCT(ProceduralArgs, scalar, albedo, instance);   // record data is a registered struct
 //   proceduray::LocalSignatureId<ProceduralArgs> sig =
 //       scene.add_local_signature<ProceduralArgs>("Procedural");
-//   table.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Args must match
+//   scene.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Args must match
 #pragma once
 
 #include <cstdint>

@@ -4,7 +4,7 @@
 // declarations. Device limits and the SBT layout come after, in one place: layout(limits).
 //
 //   proceduray::Plan plan = proceduray::compile(scene);        // no device: runs at build time too
-//   proceduray::SbtLayout layout = plan.layout(ctx.limits());  // throws DeviceLimitError
+//   proceduray::SbtLayout layout = plan.layout(limits);  // throws DeviceLimitError (limits: Context::limits())
 //   std::vector<std::byte> bytes(layout.size);
 //   plan.write(layout, bytes, handles);   // handles: one per plan.pipeline().groups, in that order
 //   auto hit = plan.resolve(shadow, pacman, 2);   // record index and the entry it holds

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(proceduray::ShaderTable& table) {
+void usage(const proceduray::Scene& scene) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(proceduray::Scene& scene, proceduray::ShaderTable& table) {
+void usage(proceduray::Scene& scene) {
   // @statements
 }

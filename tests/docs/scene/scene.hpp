@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage() {
+void usage(proceduray::LocalSignatureId<SkyArgs> sky_signature) {
   // @statements
 }

@@ -9,8 +9,11 @@
 #include <proceduray/scene/placement.hpp>
 #include <proceduray/scene/quad_mesh.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
+#include <proceduray/scene/blas.hpp>
 #include <proceduray/scene/scene.hpp>
-#include <proceduray/scene/shader_table.hpp>
+#include <proceduray/scene/compile.hpp>
+#include <proceduray/scene/glsl_files.hpp>
+#include <proceduray/scene/scene_of.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -33,4 +36,8 @@ inline const proceduray::InstanceTransform left = proceduray::instance_transform
 inline const proceduray::InstanceTransform right = left;
 inline const Material red{{1, 0, 0, 1}}, blue{{0, 0, 1, 1}};
 inline constexpr proceduray::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
+using BallHit = SphereHit;
+using Sky = SkyArgs;
+/// What the compile.hpp block compiles.
+inline proceduray::Scene make_scene() { return {}; }
 }  // namespace doc_scene

@@ -2,7 +2,6 @@
 using namespace doc_vk;
 
 // @declarations
-void usage(const proceduray::vk::Context& ctx, proceduray::ShaderTable& table, const SceneConstants& constants, std::span<const Tint> tints, const FrameKnobs& knobs,
-           proceduray::GeometryId pacman, proceduray::InstanceTransform moved, proceduray::GeometryId blob, proceduray::Aabb box) {
+void usage(const proceduray::vk::Context& ctx, const proceduray::Scene& scene, const SceneConstants& constants, std::span<const Tint> tints, const FrameKnobs& knobs, proceduray::GeometryId pacman, const glm::mat4& moved, proceduray::GeometryId blob, proceduray::Aabb box) {
   // @statements
 }

@@ -27,8 +27,10 @@ inline const Material red{{1, 0, 0, 1}}, blue{{0, 0, 1, 1}};
 inline constexpr proceduray::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 inline constexpr proceduray::StorageSlot<Tint> tints_slot{.binding = 3, .name = "tints"};
 inline constexpr proceduray::PushConstantSlot<FrameKnobs> knobs_slot{.name = "knobs"};
-/// A scene as the examples write one (proceduray::SceneTables with renderer_options).
-struct MyScene : proceduray::SceneTables {
+/// What a block that builds a scene elsewhere calls.
+inline proceduray::Scene make_scene() { return {}; }
+/// A scene as the examples write one (a proceduray::Scene with renderer_options).
+struct MyScene : proceduray::Scene {
   proceduray::vk::RendererOptions renderer_options(const std::string&) const { return {}; }
 };
 }  // namespace doc_vk

@@ -1,0 +1,7 @@
+#include "tests/docs/scene/scene_names.hpp"
+using namespace doc_scene;
+
+// @declarations
+void usage(const proceduray::Scene& scene, const proceduray::DeviceLimits& limits, std::span<const std::byte> handles, proceduray::RayId<ShadowPayload> shadow, proceduray::GeometryId pacman) {
+  // @statements
+}

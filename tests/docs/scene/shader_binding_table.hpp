@@ -1,7 +1,0 @@
-#include "tests/docs/scene/scene_names.hpp"
-using namespace doc_scene;
-
-// @declarations
-void usage(proceduray::ShaderTable& table, const proceduray::DeviceLimits& limits, std::span<const std::byte> handles, proceduray::RayId<ShadowPayload> shadow, proceduray::GeometryId pacman) {
-  // @statements
-}
