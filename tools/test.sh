@@ -3,7 +3,8 @@
 #   1. CMake build of the library, tests and examples
 #   2. cmake --install, then tests/consumer built against the installed package (CMake and Meson)
 #   3. Meson build and `meson test`
-#   4. CTest (last, so its summary closes the output)
+#   4. CTest
+#   5. the CMake and Meson test lists compared (tests/list_tests.py compare)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${PROCEDURAY_BUILD_DIR:-$root/build}
@@ -37,3 +38,6 @@ meson test -C "$out/meson" --num-processes "$jobs" --print-errorlogs
 
 step "CTest"
 ctest --test-dir "$out/cmake" -j"$jobs" --output-on-failure
+
+step "CMake and Meson register the same tests"
+python3 "$root/tests/list_tests.py" compare "$out/cmake" "$out/meson"

@@ -208,6 +208,7 @@ def main(argv):
         if run.returncode == 0:
             print(f'docs {batch}: the usage blocks of {", ".join(BATCHES[batch])} compile')
             return 0
+        run.stderr = run.stderr.replace(ROOT + os.sep, '')
         failed = sorted(set(re.findall(r'^((?:include|examples|tests/docs)/[^:\s]+|README\.md):\d+', run.stderr, re.M)))
         print(f'docs {batch}: the usage blocks of these files do not compile: {", ".join(failed) or "(see below)"}\n'
               f'fix the block in the header (or its prelude in tests/docs/); see tests/docs/check_docs.py\n')
