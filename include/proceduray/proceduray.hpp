@@ -27,9 +27,11 @@
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/shader.hpp>
 #include <proceduray/vk/acceleration.hpp>
+#include <proceduray/vk/blas_input.hpp>
 #include <proceduray/vk/buffer.hpp>
 #include <proceduray/vk/context.hpp>
 #include <proceduray/vk/descriptors.hpp>
+#include <proceduray/vk/device_selection.hpp>
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/handle.hpp>
 #include <proceduray/vk/pipeline.hpp>
@@ -39,4 +41,6 @@
 #include <proceduray/vk/shader_compiler.hpp>
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/structs.hpp>
+#include <proceduray/vk/tlas.hpp>
 #include <proceduray/vk/trace.hpp>
+#include <proceduray/vk/vulkan_instance.hpp>

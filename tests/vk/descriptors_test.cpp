@@ -1,6 +1,7 @@
 #include "test_context.hpp"
 
 #include <proceduray/vk/descriptors.hpp>
+#include <proceduray/vk/tlas.hpp>
 
 using namespace proceduray;
 

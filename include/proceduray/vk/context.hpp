@@ -7,39 +7,30 @@
 //   ctx.submit([&](VkCommandBuffer cmd) { ... });   // records, submits and waits
 //   ctx.validation_messages();  // what the validation layer reported (tests assert it is empty)
 //
-// Device choice: an NVIDIA (or other discrete) GPU when one offers ray tracing, else any
-// other device that does (Mesa's lavapipe on a machine without a GPU). The environment
-// variable PROCEDURAY_DEVICE=cpu|gpu|auto overrides DevicePreference::automatic.
+// The device is chosen by select_device (device_selection.hpp: a GPU when one can ray trace, else
+// lavapipe; PROCEDURAY_DEVICE=cpu|gpu|auto overrides automatic); the instance and the validation
+// messenger are made by vulkan_instance.hpp.
 // A Context is neither copied nor moved: every object made from it keeps a pointer to it.
 #pragma once
 
 #include <proceduray/scene/device_limits.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
+#include <proceduray/vk/device_selection.hpp>
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/handle.hpp>
 #include <proceduray/vk/structs.hpp>
+#include <proceduray/vk/vulkan_instance.hpp>
 
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <functional>
-#include <mutex>
-#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace proceduray::vk {
-
-/// Which kind of device to run on.
-enum class DevicePreference {
-  automatic,  ///< a GPU when one offers ray tracing, else a CPU device (lavapipe); PROCEDURAY_DEVICE may override
-  gpu,        ///< a GPU only; throws when none offers ray tracing
-  cpu,        ///< a CPU device (lavapipe) only
-};
 
 /// How a Context starts. Every member has a default that works on any supported machine.
 struct ContextOptions {
@@ -65,12 +56,6 @@ struct DeviceFunctions {
   PFN_vkCmdSetRayTracingPipelineStackSizeKHR cmd_set_ray_tracing_pipeline_stack_size = nullptr;
 };
 
-/// Thrown when no device can ray trace: says what each device lacks and how to get one that can.
-class NoRayTracingDevice : public EnvironmentError {
- public:
-  using EnvironmentError::EnvironmentError;
-};
-
 /// Instance, device, queue and command pool for one ray-tracing device.
 class Context {
  public:
@@ -79,7 +64,7 @@ class Context {
   Context& operator=(const Context&) = delete;
   ~Context();
 
-  VkInstance instance() const noexcept { return m_instance; }
+  VkInstance instance() const noexcept { return m_vulkan.get(); }
   VkPhysicalDevice physical_device() const noexcept { return m_physical; }
   VkDevice device() const noexcept { return m_device; }
   VkQueue queue() const noexcept { return m_queue; }
@@ -113,33 +98,19 @@ class Context {
   void submit(const std::function<void(VkCommandBuffer)>& record) const;
 
   /// Validation messages (warnings and errors) reported so far; empty when validation is off.
-  std::vector<std::string> validation_messages() const {
-    std::lock_guard lock(m_messages_mutex);
-    return m_messages;
-  }
-  bool validation_enabled() const noexcept { return m_messenger != VK_NULL_HANDLE; }
+  std::vector<std::string> validation_messages() const { return m_log.messages(); }
+  bool validation_enabled() const noexcept { return m_vulkan.validation_enabled(); }
 
  private:
-  static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                   VkDebugUtilsMessageTypeFlagsEXT,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
-    auto* context = static_cast<Context*>(self);
-    std::string text = data->pMessage ? data->pMessage : "";
-    if (context->m_print) {
-      std::fprintf(stderr, "proceduray: validation %s: %s\n",
-                   severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning", text.c_str());
-    }
-    std::lock_guard lock(context->m_messages_mutex);
-    context->m_messages.push_back(std::move(text));
-    return VK_FALSE;
-  }
   void release() noexcept;
-  void create_instance(const ContextOptions& options);
-  void pick_device(DevicePreference preference);
+  void read_properties();
   void create_device();
 
-  VkInstance m_instance = VK_NULL_HANDLE;
-  VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
+  // Declared in the order they are made: the log outlives the instance's messenger, and the
+  // device (destroyed by release() in the destructor's body) goes before the instance.
+  DevicePreference m_preference;
+  ValidationLog m_log;
+  VulkanInstance m_vulkan;
   VkPhysicalDevice m_physical = VK_NULL_HANDLE;
   VkDevice m_device = VK_NULL_HANDLE;
   VkQueue m_queue = VK_NULL_HANDLE;
@@ -154,75 +125,46 @@ class Context {
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR m_rt_properties{};
   VkPhysicalDeviceMemoryProperties m_memory{};
   DeviceFunctions m_rt;
-  bool m_print = true;
-  mutable std::mutex m_messages_mutex;
-  std::vector<std::string> m_messages;
 };
 
 // ---------------------------------------------------------------------------------------------
 
 namespace detail {
 
-inline constexpr const char* required_device_extensions[] = {
-    VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-    VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-    VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,
-};
-
-inline constexpr const char* validation_layer = "VK_LAYER_KHRONOS_validation";
-
-/// What a physical device lacks for ray tracing, as readable phrases; empty when it has everything.
-inline std::vector<std::string> missing_for_ray_tracing(VkPhysicalDevice device) {
-  std::vector<std::string> missing;
-  VkPhysicalDeviceProperties props{};
-  vkGetPhysicalDeviceProperties(device, &props);
-  if (props.apiVersion < VK_API_VERSION_1_2) missing.emplace_back("Vulkan 1.2");
-  std::uint32_t count = 0;
-  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
-  std::vector<VkExtensionProperties> extensions(count);
-  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
-  for (const char* name : required_device_extensions) {
-    bool found = std::any_of(extensions.begin(), extensions.end(),
-                             [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
-    if (!found) missing.emplace_back(name);
-  }
-  if (!missing.empty()) return missing;
-  auto as = make<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR);
-  auto rt = make<VkPhysicalDeviceRayTracingPipelineFeaturesKHR>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR, &as);
-  auto v12 = make<VkPhysicalDeviceVulkan12Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &rt);
-  auto features = make<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12);
-  vkGetPhysicalDeviceFeatures2(device, &features);
-  if (!rt.rayTracingPipeline) missing.emplace_back("feature rayTracingPipeline");
-  if (!as.accelerationStructure) missing.emplace_back("feature accelerationStructure");
-  if (!v12.bufferDeviceAddress) missing.emplace_back("feature bufferDeviceAddress");
-  if (!v12.scalarBlockLayout) missing.emplace_back("feature scalarBlockLayout");
-  return missing;
-}
-
-inline DevicePreference preference_from_environment(DevicePreference preference) {
-  if (preference != DevicePreference::automatic) return preference;
-  const char* env = std::getenv("PROCEDURAY_DEVICE");
-  if (env == nullptr || *env == '\0' || std::strcmp(env, "auto") == 0) return preference;
-  if (std::strcmp(env, "cpu") == 0) return DevicePreference::cpu;
-  if (std::strcmp(env, "gpu") == 0) return DevicePreference::gpu;
-  throw UsageError(std::string("Context: PROCEDURAY_DEVICE='") + env +
-                   "' is not a device choice; use cpu, gpu or auto");
-}
-
-inline const char* to_string(DevicePreference p) {
-  return p == DevicePreference::cpu ? "cpu" : p == DevicePreference::gpu ? "gpu" : "auto";
+/// The ray-tracing entry points of `device`; throws NoRayTracingDevice naming one it lacks.
+inline DeviceFunctions load_device_functions(VkDevice device, const std::string& name) {
+  DeviceFunctions rt;
+  auto load = [&](auto& fn, const char* entry) {
+    fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(device, entry));
+    if (fn == nullptr) throw NoRayTracingDevice("Context: device " + name + " does not export " + entry);
+  };
+  load(rt.create_acceleration_structure, "vkCreateAccelerationStructureKHR");
+  load(rt.destroy_acceleration_structure, "vkDestroyAccelerationStructureKHR");
+  load(rt.get_acceleration_structure_build_sizes, "vkGetAccelerationStructureBuildSizesKHR");
+  load(rt.get_acceleration_structure_device_address, "vkGetAccelerationStructureDeviceAddressKHR");
+  load(rt.cmd_build_acceleration_structures, "vkCmdBuildAccelerationStructuresKHR");
+  load(rt.create_ray_tracing_pipelines, "vkCreateRayTracingPipelinesKHR");
+  load(rt.get_ray_tracing_shader_group_handles, "vkGetRayTracingShaderGroupHandlesKHR");
+  load(rt.cmd_trace_rays, "vkCmdTraceRaysKHR");
+  load(rt.cmd_write_acceleration_structures_properties, "vkCmdWriteAccelerationStructuresPropertiesKHR");
+  load(rt.cmd_copy_acceleration_structure, "vkCmdCopyAccelerationStructureKHR");
+  load(rt.get_ray_tracing_shader_group_stack_size, "vkGetRayTracingShaderGroupStackSizeKHR");
+  load(rt.cmd_set_ray_tracing_pipeline_stack_size, "vkCmdSetRayTracingPipelineStackSizeKHR");
+  return rt;
 }
 
 }  // namespace detail
 
-inline Context::Context(const ContextOptions& options) : m_print(options.print_validation) {
-  const DevicePreference preference = detail::preference_from_environment(options.device);
+inline Context::Context(const ContextOptions& options)
+    : m_preference(detail::preference_from_environment(options.device)),  // a bad PROCEDURAY_DEVICE throws first
+      m_log(options.print_validation),
+      m_vulkan(options.application_name, options.validation ? &m_log : nullptr) {
   try {
-    create_instance(options);
-    pick_device(preference);
+    m_physical = select_device(m_vulkan.get(), m_preference);
+    read_properties();
     create_device();
   } catch (...) {
-    release();  // the destructor does not run for a constructor that threw
+    release();  // the destructor does not run for a constructor that threw (the members' do)
     throw;
   }
 }
@@ -236,121 +178,10 @@ inline void Context::release() noexcept {
     vkDestroyDevice(m_device, nullptr);
     m_device = VK_NULL_HANDLE;
   }
-  if (m_messenger != VK_NULL_HANDLE) {
-    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(m_instance, "vkDestroyDebugUtilsMessengerEXT"));
-    if (destroy != nullptr) destroy(m_instance, m_messenger, nullptr);
-    m_messenger = VK_NULL_HANDLE;
-  }
-  if (m_instance != VK_NULL_HANDLE) {
-    vkDestroyInstance(m_instance, nullptr);
-    m_instance = VK_NULL_HANDLE;
-  }
 }
 
-inline void Context::create_instance(const ContextOptions& options) {
-  auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
-  app.pApplicationName = options.application_name;
-  app.pEngineName = "proceduray";
-  app.apiVersion = VK_API_VERSION_1_2;
-
-  std::vector<const char*> layers;
-  std::vector<const char*> extensions;
-  auto messenger = make<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-  if (options.validation) {
-    std::uint32_t count = 0;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
-    std::vector<VkLayerProperties> available(count);
-    vkEnumerateInstanceLayerProperties(&count, available.data());
-    bool found = std::any_of(available.begin(), available.end(), [](const VkLayerProperties& l) {
-      return std::strcmp(l.layerName, detail::validation_layer) == 0;
-    });
-    if (!found) {
-      throw EnvironmentError(
-          "Context: validation was asked for but VK_LAYER_KHRONOS_validation is not installed; "
-          "install it (apt-get install vulkan-validationlayers) or set ContextOptions::validation = false");
-    }
-    layers.push_back(detail::validation_layer);
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-    messenger.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                            VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messenger.pfnUserCallback = &Context::on_message;
-    messenger.pUserData = this;
-  }
-
-  auto info = make<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
-  info.pNext = options.validation ? &messenger : nullptr;  // also catches messages from instance creation
-  info.pApplicationInfo = &app;
-  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
-  info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
-  VkResult result = vkCreateInstance(&info, nullptr, &m_instance);
-  if (result == VK_ERROR_INCOMPATIBLE_DRIVER) {
-    throw NoRayTracingDevice(
-        "Context: vkCreateInstance found no Vulkan driver (VK_ERROR_INCOMPATIBLE_DRIVER). On a machine without a "
-        "GPU install Mesa >= 24.1 (Debian 12: apt-get install -t bookworm-backports mesa-vulkan-drivers; "
-        "tools/setup.sh does this); on an NVIDIA GPU install its driver");
-  }
-  check(result, "vkCreateInstance");
-  if (options.validation) {
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
-    check(create(m_instance, &messenger, nullptr, &m_messenger), "vkCreateDebugUtilsMessengerEXT");
-  }
-}
-
-inline void Context::pick_device(DevicePreference preference) {
-  std::uint32_t count = 0;
-  check(vkEnumeratePhysicalDevices(m_instance, &count, nullptr), "vkEnumeratePhysicalDevices");
-  std::vector<VkPhysicalDevice> devices(count);
-  check(vkEnumeratePhysicalDevices(m_instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
-
-  // Rank capable devices: discrete GPU, integrated, virtual, then CPU.
-  auto rank = [](VkPhysicalDeviceType type) {
-    switch (type) {
-      case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-      case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-      case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-      case VK_PHYSICAL_DEVICE_TYPE_CPU: return 4;
-      default: return 3;
-    }
-  };
-  std::string report;
-  int best_rank = 1 << 30;
-  for (VkPhysicalDevice device : devices) {
-    VkPhysicalDeviceProperties props{};
-    vkGetPhysicalDeviceProperties(device, &props);
-    const bool cpu = props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    const auto missing = detail::missing_for_ray_tracing(device);
-    report += std::string("\n  ") + props.deviceName + (cpu ? " (cpu)" : " (gpu)") + ": ";
-    if (!missing.empty()) {
-      report += "lacks";
-      for (const auto& m : missing) report += " " + m;
-      continue;
-    }
-    if ((preference == DevicePreference::cpu && !cpu) || (preference == DevicePreference::gpu && cpu)) {
-      report += std::string("can ray trace but is not a ") + detail::to_string(preference) + " device";
-      continue;
-    }
-    report += "can ray trace";
-    if (rank(props.deviceType) < best_rank) {
-      best_rank = rank(props.deviceType);
-      m_physical = device;
-      m_properties = props;
-    }
-  }
-  if (m_physical == VK_NULL_HANDLE) {
-    throw NoRayTracingDevice(
-        std::string("Context: no Vulkan device can ray trace (asked for device '") + detail::to_string(preference) +
-        "'). Devices found:" + (devices.empty() ? std::string("\n  none") : report) +
-        "\nRay tracing needs VK_KHR_ray_tracing_pipeline and VK_KHR_acceleration_structure. Without a GPU install "
-        "Mesa >= 24.1 for lavapipe (Debian 12: tools/setup.sh, or apt-get install -t bookworm-backports "
-        "mesa-vulkan-drivers); with an NVIDIA GPU install its driver; or set PROCEDURAY_DEVICE=auto");
-  }
+inline void Context::read_properties() {
+  vkGetPhysicalDeviceProperties(m_physical, &m_properties);
   m_name = m_properties.deviceName;
   auto as = make<VkPhysicalDeviceAccelerationStructurePropertiesKHR>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR);
   m_rt_properties = make<VkPhysicalDeviceRayTracingPipelinePropertiesKHR>(
@@ -411,22 +242,7 @@ inline void Context::create_device() {
   pool.queueFamilyIndex = m_queue_family;
   check(vkCreateCommandPool(m_device, &pool, nullptr, &m_pool), "vkCreateCommandPool");
 
-  auto load = [&](auto& fn, const char* name) {
-    fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(m_device, name));
-    if (fn == nullptr) throw NoRayTracingDevice("Context: device " + m_name + " does not export " + name);
-  };
-  load(m_rt.create_acceleration_structure, "vkCreateAccelerationStructureKHR");
-  load(m_rt.destroy_acceleration_structure, "vkDestroyAccelerationStructureKHR");
-  load(m_rt.get_acceleration_structure_build_sizes, "vkGetAccelerationStructureBuildSizesKHR");
-  load(m_rt.get_acceleration_structure_device_address, "vkGetAccelerationStructureDeviceAddressKHR");
-  load(m_rt.cmd_build_acceleration_structures, "vkCmdBuildAccelerationStructuresKHR");
-  load(m_rt.create_ray_tracing_pipelines, "vkCreateRayTracingPipelinesKHR");
-  load(m_rt.get_ray_tracing_shader_group_handles, "vkGetRayTracingShaderGroupHandlesKHR");
-  load(m_rt.cmd_trace_rays, "vkCmdTraceRaysKHR");
-  load(m_rt.cmd_write_acceleration_structures_properties, "vkCmdWriteAccelerationStructuresPropertiesKHR");
-  load(m_rt.cmd_copy_acceleration_structure, "vkCmdCopyAccelerationStructureKHR");
-  load(m_rt.get_ray_tracing_shader_group_stack_size, "vkGetRayTracingShaderGroupStackSizeKHR");
-  load(m_rt.cmd_set_ray_tracing_pipeline_stack_size, "vkCmdSetRayTracingPipelineStackSizeKHR");
+  m_rt = detail::load_device_functions(m_device, m_name);
 }
 
 inline std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {

@@ -20,6 +20,7 @@
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/frame.hpp>
 #include <proceduray/vk/refittable_blas.hpp>
+#include <proceduray/vk/tlas.hpp>
 
 #include <cstddef>
 #include <memory>

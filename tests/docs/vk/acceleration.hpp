@@ -2,6 +2,6 @@
 using namespace doc_vk;
 
 // @declarations
-void usage(const proceduray::vk::Context& ctx, glm::mat4 moved) {
+void usage(const proceduray::vk::Context& ctx) {
   // @statements
 }

@@ -1,0 +1,209 @@
+// The top-level structure: instances of BLASes with their transforms and SBT offsets, checked,
+// packed into Vulkan's layout and built; refittable when asked.
+//
+//   VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
+//   const proceduray::vk::AabbGeometry boxes{.boxes = {&box, 1}};
+//   auto blas = proceduray::vk::build_blas(ctx, {&boxes, 1});
+//   std::vector<proceduray::vk::Instance> instances{
+//       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {-1.5f, 0, 0}), .sbt_offset = 0},
+//       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {+1.5f, 0, 0}), .sbt_offset = 1}};
+//   auto tlas = proceduray::vk::build_tlas(ctx, instances);                // built and waited for
+//   proceduray::vk::Tlas moving(ctx, instances, {.allow_update = true});
+//   instances[0].transform = moved;  moving.update(ctx, instances);        // refit and wait
+//   ctx.submit([&](VkCommandBuffer cmd) { moving.record_update(ctx, cmd, instances); });  // or record it
+//
+// Instances are checked by the scene's rules (scene/geometry.hpp): a non-finite or singular
+// transform throws InvalidGeometryError, an index past 24 bits DeviceLimitError, no BLAS UsageError;
+// each message names the call and the instance's index in the list given.
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/scene/device_limits.hpp>
+#include <proceduray/scene/geometry.hpp>
+#include <proceduray/vk/acceleration.hpp>
+#include <proceduray/vk/buffer.hpp>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// One instance of a BLAS in the TLAS.
+struct Instance {
+  const AccelerationStructure* blas = nullptr;  ///< required
+  glm::mat4 transform{1.0f};                    ///< object to world; the last row must be (0, 0, 0, 1)
+  std::uint32_t custom_index = 0;               ///< gl_InstanceCustomIndexEXT, 24 bits
+  std::uint32_t sbt_offset = 0;                 ///< instanceShaderBindingTableRecordOffset, 24 bits
+  std::uint8_t mask = 0xFF;                     ///< visibility mask tested against the ray's cull mask
+  VkGeometryInstanceFlagsKHR flags = 0;         ///< e.g. VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR
+};
+
+namespace detail {
+
+/// Throws InvalidGeometryError for a non-finite or singular object-to-world matrix: the scene's
+/// rule (proceduray::detail::check_transform_at), applied in place; `where` is built only on failure.
+template <class Where>
+void check_matrix(const glm::mat4& m, Where where) {
+  const auto c = proceduray::detail::check_transform_at([&m](int r, int col) { return m[col][r]; });
+  if (c.row >= 0 || c.singular) proceduray::validate(instance_transform(m), where());  // throws
+}
+
+/// Throws for an instance Vulkan cannot take: no BLAS (UsageError), indices past 24 bits
+/// (DeviceLimitError), a non-finite or singular transform (InvalidGeometryError).
+inline void check_instance(const Instance& in, std::size_t i, std::string_view operation = "build_tlas") {
+  // Built only on failure: a refit checks every instance every frame.
+  auto which = [&] { return std::string(operation) + ": instance " + std::to_string(i); };
+  if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
+    throw UsageError(which() + " has no BLAS; set Instance::blas to a built structure");
+  }
+  if (!fits_instance_field(in.custom_index) || !fits_instance_field(in.sbt_offset)) {
+    throw DeviceLimitError(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
+                           std::to_string(in.sbt_offset) + " does not fit in 24 bits (at most " +
+                           std::to_string(max_instance_sbt_offset) + ": instanceCustomIndex and "
+                           "instanceShaderBindingTableRecordOffset are 24-bit fields); use fewer instances or records");
+  }
+  check_matrix(in.transform, [&] { return which() + " transform"; });
+}
+
+/// Packs instances into Vulkan's layout; throws for bad input (check_instance), naming the instance.
+inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
+                           std::string_view operation = "build_tlas") {
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const Instance& in = instances[i];
+    check_instance(in, i, operation);
+    const glm::mat4& m = in.transform;
+    VkAccelerationStructureInstanceKHR& out = packed[i];
+    out = {};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) out.transform.matrix[r][c] = m[c][r];  // glm is column-major, Vulkan row-major 3x4
+    out.instanceCustomIndex = in.custom_index;
+    out.mask = in.mask;
+    out.instanceShaderBindingTableRecordOffset = in.sbt_offset;
+    out.flags = in.flags;
+    out.accelerationStructureReference = in.blas->address();
+  }
+}
+
+}  // namespace detail
+
+/// A top-level structure with its instance buffer; refittable when built with allow_update.
+class Tlas {
+ public:
+  Tlas() = default;
+  /// Builds over `instances` (an empty list gives a TLAS that every ray misses) and waits.
+  Tlas(const Context& ctx, std::span<const Instance> instances, const BuildOptions& options = {})
+      : m_count(static_cast<std::uint32_t>(instances.size())), m_flags(detail::build_flags(options, false)),
+        m_instances(ctx, std::max<VkDeviceSize>(1, instances.size()) * sizeof(VkAccelerationStructureInstanceKHR),
+                    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                        VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
+    write(instances, "Tlas");
+    auto build = info(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
+    auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
+    ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                                                    &build.first, &m_count, &sizes);
+    m_structure = AccelerationStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, sizes.accelerationStructureSize);
+    // Kept for refits: an update needs scratch of updateScratchSize, a build of buildScratchSize.
+    m_scratch = detail::Scratch(ctx, std::max(sizes.buildScratchSize, sizes.updateScratchSize));
+    ctx.submit([&](VkCommandBuffer cmd) { record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR); });
+  }
+
+  const AccelerationStructure& structure() const noexcept { return m_structure; }
+  VkAccelerationStructureKHR get() const noexcept { return m_structure.get(); }
+  std::uint32_t instance_count() const noexcept { return m_count; }
+  bool updatable() const noexcept { return (m_flags & VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR) != 0; }
+
+  /// Refits for new transforms (same instances, same BLASes): records into `cmd` with a barrier for tracing.
+  void record_update(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
+    if (!updatable()) {
+      throw UsageError("Tlas::update: this TLAS was built without BuildOptions::allow_update; build it with "
+                       "allow_update = true to move instances");
+    }
+    if (instances.size() != m_count) {
+      throw UsageError("Tlas::update: " + std::to_string(instances.size()) + " instances given, the TLAS has " +
+                       std::to_string(m_count) + "; an update may move instances, not add or remove them "
+                       "(build a new Tlas for that)");
+    }
+    write(instances, "Tlas::update");
+    record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
+  }
+  /// Rebuilds in place for instances whose BLASes were replaced (same count): records into `cmd`.
+  void record_build(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
+    if (instances.size() != m_count) {
+      throw UsageError("Tlas::record_build: " + std::to_string(instances.size()) +
+                       " instances given, the TLAS has " + std::to_string(m_count) +
+                       "; build a new Tlas to add or remove instances");
+    }
+    write(instances, "Tlas::record_build");
+    record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
+  }
+  /// Refits and waits.
+  void update(const Context& ctx, std::span<const Instance> instances) {
+    ctx.submit([&](VkCommandBuffer cmd) { record_update(ctx, cmd, instances); });
+  }
+
+ private:
+  std::pair<VkAccelerationStructureBuildGeometryInfoKHR, VkAccelerationStructureGeometryKHR*> info(
+      VkBuildAccelerationStructureModeKHR mode) {
+    m_geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+    m_geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    m_geometry.geometry.instances = make<VkAccelerationStructureGeometryInstancesDataKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
+    m_geometry.geometry.instances.data.deviceAddress = m_instances.address();
+    auto build = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+    build.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+    build.flags = m_flags;
+    build.mode = mode;
+    build.geometryCount = 1;
+    build.pGeometries = &m_geometry;
+    return {build, &m_geometry};
+  }
+  void write(std::span<const Instance> instances, std::string_view operation) {
+    auto* packed = static_cast<VkAccelerationStructureInstanceKHR*>(m_instances.data());
+    detail::pack_instances(instances, {packed, instances.size()}, operation);
+  }
+  void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
+    auto build = info(mode).first;
+    build.srcAccelerationStructure = mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? m_structure.get()
+                                                                                            : VK_NULL_HANDLE;
+    build.dstAccelerationStructure = m_structure.get();
+    build.scratchData.deviceAddress = m_scratch.address;
+    VkAccelerationStructureBuildRangeInfoKHR range{m_count, 0, 0, 0};
+    const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = &range;
+    ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
+    detail::after_build_barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);  // traces read it
+  }
+
+  std::uint32_t m_count = 0;
+  VkBuildAccelerationStructureFlagsKHR m_flags = 0;
+  Buffer m_instances;
+  AccelerationStructure m_structure;
+  detail::Scratch m_scratch;
+  VkAccelerationStructureGeometryKHR m_geometry{};
+};
+
+/// Builds a TLAS over `instances` and waits (see Tlas for refittable ones).
+inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Instance> instances) {
+  std::vector<VkAccelerationStructureInstanceKHR> packed(instances.size());
+  detail::pack_instances(instances, packed);
+  Buffer buffer(ctx, std::max<VkDeviceSize>(1, packed.size()) * sizeof(VkAccelerationStructureInstanceKHR),
+                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT);
+  buffer.write(std::span<const VkAccelerationStructureInstanceKHR>(packed));
+  auto geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  geometry.geometry.instances = make<VkAccelerationStructureGeometryInstancesDataKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
+  geometry.geometry.instances.data.deviceAddress = buffer.address();
+  const std::uint32_t count = static_cast<std::uint32_t>(packed.size());
+  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, {&geometry, 1},
+                                              {&count, 1}, VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR);
+}
+
+}  // namespace proceduray::vk

@@ -1,0 +1,178 @@
+// The Vulkan instance a Context starts from: Vulkan 1.2 and, when validation is asked for, the
+// Khronos validation layer with a messenger that collects (and prints) its warnings and errors.
+//
+//   proceduray::vk::ValidationLog log(/*print=*/false);
+//   proceduray::vk::VulkanInstance instance("my_app", &log);   // nullptr: no validation layer
+//   proceduray::vk::select_device(instance.get(), proceduray::vk::DevicePreference::automatic);
+//   log.messages();          // what the layer reported so far (tests assert it is empty)
+//
+// Throws EnvironmentError when the layer is asked for but not installed, NoRayTracingDevice when
+// there is no Vulkan driver at all. The log must outlive the instance (its messenger writes to it).
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/vk/device_selection.hpp>
+#include <proceduray/vk/error.hpp>
+#include <proceduray/vk/structs.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace proceduray::vk {
+
+namespace detail {
+inline constexpr const char* validation_layer = "VK_LAYER_KHRONOS_validation";
+}  // namespace detail
+
+/// Warnings and errors the validation layer reported, collected by a messenger (thread-safe).
+class ValidationLog {
+ public:
+  /// `print`: also write each message to stderr; default on.
+  explicit ValidationLog(bool print = true) : m_print(print) {}
+  ValidationLog(const ValidationLog&) = delete;
+  ValidationLog& operator=(const ValidationLog&) = delete;
+
+  /// The messages so far, oldest first.
+  std::vector<std::string> messages() const {
+    std::lock_guard lock(m_mutex);
+    return m_messages;
+  }
+  /// A messenger description (warnings and errors of every type) that reports to this log.
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info() {
+    auto info = make<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = &ValidationLog::on_message;
+    info.pUserData = this;
+    return info;
+  }
+
+ private:
+  static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
+    auto* log = static_cast<ValidationLog*>(self);
+    std::string text = data->pMessage ? data->pMessage : "";
+    if (log->m_print) {
+      std::fprintf(stderr, "proceduray: validation %s: %s\n",
+                   severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning", text.c_str());
+    }
+    std::lock_guard lock(log->m_mutex);
+    log->m_messages.push_back(std::move(text));
+    return VK_FALSE;
+  }
+
+  bool m_print = true;
+  mutable std::mutex m_mutex;
+  std::vector<std::string> m_messages;
+};
+
+/// A VkInstance (Vulkan 1.2) and, with validation, its debug messenger; move-only.
+class VulkanInstance {
+ public:
+  VulkanInstance() = default;
+  /// Creates the instance; `log` non-null enables VK_LAYER_KHRONOS_validation reporting to it.
+  VulkanInstance(const char* application_name, ValidationLog* log);
+  VulkanInstance(VulkanInstance&& other) noexcept
+      : m_instance(std::exchange(other.m_instance, VK_NULL_HANDLE)),
+        m_messenger(std::exchange(other.m_messenger, VK_NULL_HANDLE)) {}
+  VulkanInstance& operator=(VulkanInstance&& other) noexcept {
+    if (this != &other) {
+      release();
+      m_instance = std::exchange(other.m_instance, VK_NULL_HANDLE);
+      m_messenger = std::exchange(other.m_messenger, VK_NULL_HANDLE);
+    }
+    return *this;
+  }
+  ~VulkanInstance() { release(); }
+
+  VkInstance get() const noexcept { return m_instance; }
+  /// True when the validation layer is on and reporting.
+  bool validation_enabled() const noexcept { return m_messenger != VK_NULL_HANDLE; }
+
+ private:
+  void release() noexcept {
+    if (m_messenger != VK_NULL_HANDLE) {
+      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(m_instance, "vkDestroyDebugUtilsMessengerEXT"));
+      if (destroy != nullptr) destroy(m_instance, m_messenger, nullptr);
+      m_messenger = VK_NULL_HANDLE;
+    }
+    if (m_instance != VK_NULL_HANDLE) {
+      vkDestroyInstance(m_instance, nullptr);
+      m_instance = VK_NULL_HANDLE;
+    }
+  }
+
+  VkInstance m_instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
+};
+
+namespace detail {
+
+/// Throws EnvironmentError when VK_LAYER_KHRONOS_validation is not installed.
+inline void require_validation_layer() {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> available(count);
+  vkEnumerateInstanceLayerProperties(&count, available.data());
+  const bool found = std::any_of(available.begin(), available.end(), [](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, validation_layer) == 0;
+  });
+  if (!found) {
+    throw EnvironmentError(
+        "Context: validation was asked for but VK_LAYER_KHRONOS_validation is not installed; "
+        "install it (apt-get install vulkan-validationlayers) or set ContextOptions::validation = false");
+  }
+}
+
+}  // namespace detail
+
+inline VulkanInstance::VulkanInstance(const char* application_name, ValidationLog* log) {
+  auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+  app.pApplicationName = application_name;
+  app.pEngineName = "proceduray";
+  app.apiVersion = VK_API_VERSION_1_2;
+
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  auto messenger = make<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+  if (log != nullptr) {
+    detail::require_validation_layer();
+    layers.push_back(detail::validation_layer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    messenger = log->messenger_info();
+  }
+  auto info = make<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+  info.pNext = log != nullptr ? &messenger : nullptr;  // also catches messages from instance creation
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VkResult result = vkCreateInstance(&info, nullptr, &m_instance);
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER) {
+    throw NoRayTracingDevice(
+        "Context: vkCreateInstance found no Vulkan driver (VK_ERROR_INCOMPATIBLE_DRIVER). On a machine without a "
+        "GPU install Mesa >= 24.1 (Debian 12: apt-get install -t bookworm-backports mesa-vulkan-drivers; "
+        "tools/setup.sh does this); on an NVIDIA GPU install its driver");
+  }
+  check(result, "vkCreateInstance");
+  if (log == nullptr) return;
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
+  const VkResult made = create(m_instance, &messenger, nullptr, &m_messenger);
+  if (made != VK_SUCCESS) release();  // a constructor that throws runs no destructor
+  check(made, "vkCreateDebugUtilsMessengerEXT");
+}
+
+}  // namespace proceduray::vk
