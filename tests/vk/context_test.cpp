@@ -42,3 +42,13 @@ TEST_CASE("context submit runs the recorded commands and waits for them") {
     CHECK(values[words - 1] == round);
   }
 }
+
+TEST_CASE("context counts its submits, one per submit call, none for a failed recording") {
+  TestContext t;
+  const std::uint64_t before = t.ctx.submit_count();
+  t.ctx.submit([](VkCommandBuffer) {});
+  t.ctx.submit([](VkCommandBuffer) {});
+  CHECK(t.ctx.submit_count() == before + 2);
+  CHECK_THROWS_AS(t.ctx.submit([](VkCommandBuffer) { throw UsageError("recording failed"); }), UsageError);
+  CHECK(t.ctx.submit_count() == before + 2);
+}

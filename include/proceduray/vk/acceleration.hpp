@@ -1,5 +1,5 @@
-// Acceleration structures: the handle and its storage, how one is built on the device (sized,
-// given scratch, built, compacted), and bottom-level builds over boxes or triangles.
+// Acceleration structures: the handle and its storage, the one build primitive (N builds or
+// updates in one command), and bottom-level builds over boxes or triangles, alone or batched.
 //
 //   VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
 //   const proceduray::vk::AabbGeometry boxes{.boxes = {&box, 1}};
@@ -9,18 +9,26 @@
 //   const std::uint32_t tris[] = {0, 1, 2, 0, 2, 3};
 //   const proceduray::vk::TriangleGeometry mesh{.vertices = quad, .indices = tris};
 //   auto plane = proceduray::vk::build_blas(ctx, {&mesh, 1}, {.compact = false});        // triangles
+//   const proceduray::vk::BlasGeometries both[] = {{.boxes = {&boxes, 1}}, {.triangles = {&mesh, 1}}};
+//   std::vector<proceduray::vk::AccelerationStructure> all = proceduray::vk::build_blases(ctx, both);
 //   blas.address();                                 // for a TLAS instance (vk/tlas.hpp)
 //
-// build_blas records the build, submits it and waits: the result is ready to trace when it returns.
-// Static BLASes are compacted by default (BuildOptions::compact): the copy is what stays.
-// Geometry is checked by blas_input.hpp (InvalidGeometryError, UsageError); the TLAS is in tlas.hpp.
+// build_blas(es) record the builds, submit and wait: the results are ready to trace when they
+// return. Static BLASes are compacted by default (BuildOptions::compact): the copy is what stays.
+// A batch costs two submits whatever its size (build and size query, then compaction); one
+// without compaction. detail::record_builds is the primitive: the TLAS (tlas.hpp) and
+// RefittableBlas record their builds and updates with it too.
+// Geometry is checked by blas_input.hpp (InvalidGeometryError, UsageError).
 #pragma once
 
 #include <proceduray/vk/blas_input.hpp>
 #include <proceduray/vk/buffer.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace proceduray::vk {
@@ -88,34 +96,6 @@ struct Scratch {
   }
 };
 
-/// Copies `source` into a structure of its compacted size and returns the copy.
-inline AccelerationStructure compact(const Context& ctx, const AccelerationStructure& source,
-                                     VkAccelerationStructureTypeKHR type) {
-  auto query_info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-  query_info.queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR;
-  query_info.queryCount = 1;
-  VkQueryPool raw_pool = VK_NULL_HANDLE;
-  check(vkCreateQueryPool(ctx.device(), &query_info, nullptr, &raw_pool), "vkCreateQueryPool");
-  auto pool = own(ctx.device(), raw_pool, vkDestroyQueryPool);
-  VkAccelerationStructureKHR handle = source.get();
-  ctx.submit([&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, raw_pool, 0, 1);
-    ctx.rt().cmd_write_acceleration_structures_properties(
-        cmd, 1, &handle, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, raw_pool, 0);
-  });
-  VkDeviceSize compacted = 0;
-  check(vkGetQueryPoolResults(ctx.device(), raw_pool, 0, 1, sizeof compacted, &compacted, sizeof compacted,
-                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-        "vkGetQueryPoolResults", "compacted acceleration structure size");
-  AccelerationStructure result(ctx, type, compacted);
-  auto copy = make<VkCopyAccelerationStructureInfoKHR>(VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR);
-  copy.src = source.get();
-  copy.dst = result.get();
-  copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
-  ctx.submit([&](VkCommandBuffer cmd) { ctx.rt().cmd_copy_acceleration_structure(cmd, &copy); });
-  return result;
-}
-
 /// Makes a recorded build's writes visible to `readers` (later builds that reference it, traces).
 inline void after_build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags readers) {
   auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -125,48 +105,188 @@ inline void after_build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags reader
                        0, nullptr);
 }
 
-/// Sizes the structure, creates it and a scratch buffer, builds it and waits; compacts when the flags allow.
-inline AccelerationStructure build_acceleration_structure(const Context& ctx, VkAccelerationStructureTypeKHR type,
-                                                          std::span<const VkAccelerationStructureGeometryKHR> geometries,
-                                                          std::span<const std::uint32_t> primitive_counts,
-                                                          VkBuildAccelerationStructureFlagsKHR flags) {
-  auto build = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-  build.type = type;
-  build.flags = flags;
-  build.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
-  build.geometryCount = static_cast<std::uint32_t>(geometries.size());
-  build.pGeometries = geometries.data();
+/// One structure to build (or update) in a batch: its type, flags, geometries, and where it goes.
+struct BuildCommand {
+  VkAccelerationStructureTypeKHR type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+  VkBuildAccelerationStructureFlagsKHR flags = 0;
+  VkBuildAccelerationStructureModeKHR mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  std::span<const VkAccelerationStructureGeometryKHR> geometries;
+  std::span<const std::uint32_t> counts;            ///< primitives (or instances) per geometry
+  VkAccelerationStructureKHR dst = VK_NULL_HANDLE;  ///< an update reads and writes it in place
+  VkDeviceAddress scratch = 0;                      ///< its own scratch: builds of one batch run together
+};
+
+/// Vulkan's description of `c`.
+inline VkAccelerationStructureBuildGeometryInfoKHR geometry_info(const BuildCommand& c) {
+  auto info = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+  info.type = c.type;
+  info.flags = c.flags;
+  info.mode = c.mode;
+  info.srcAccelerationStructure = c.mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? c.dst : VK_NULL_HANDLE;
+  info.dstAccelerationStructure = c.dst;
+  info.geometryCount = static_cast<std::uint32_t>(c.geometries.size());
+  info.pGeometries = c.geometries.data();
+  info.scratchData.deviceAddress = c.scratch;
+  return info;
+}
+
+/// The structure and scratch sizes a build of `c` needs (its mode, destination and scratch ignored).
+inline VkAccelerationStructureBuildSizesInfoKHR build_sizes(const Context& ctx, const BuildCommand& c) {
+  const auto info = geometry_info(c);
   auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
-  ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &build,
-                                                  primitive_counts.data(), &sizes);
-  AccelerationStructure result(ctx, type, sizes.accelerationStructureSize);
-  Scratch scratch(ctx, sizes.buildScratchSize);
-  build.dstAccelerationStructure = result.get();
-  build.scratchData.deviceAddress = scratch.address;
-  std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(primitive_counts.size());
-  for (std::size_t i = 0; i < ranges.size(); ++i) ranges[i].primitiveCount = primitive_counts[i];
-  const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = ranges.data();
-  ctx.submit([&](VkCommandBuffer cmd) { ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr); });
-  if ((flags & VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR) != 0) return compact(ctx, result, type);
-  return result;
+  ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info,
+                                                  c.counts.data(), &sizes);
+  return sizes;
+}
+
+/// The build primitive: records every build or update of `builds` with one
+/// vkCmdBuildAccelerationStructuresKHR, then one barrier that makes them visible to `readers`.
+/// Used by build_blas(es), build_tlas, Tlas and RefittableBlas.
+inline void record_builds(const Context& ctx, VkCommandBuffer cmd, std::span<const BuildCommand> builds,
+                          VkPipelineStageFlags readers) {
+  if (builds.empty()) return;
+  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
+  std::vector<std::vector<VkAccelerationStructureBuildRangeInfoKHR>> ranges(builds.size());
+  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_ptrs;
+  for (std::size_t b = 0; b < builds.size(); ++b) {
+    infos.push_back(geometry_info(builds[b]));
+    for (std::uint32_t count : builds[b].counts) ranges[b].push_back({count, 0, 0, 0});
+    range_ptrs.push_back(ranges[b].data());
+  }
+  ctx.rt().cmd_build_acceleration_structures(cmd, static_cast<std::uint32_t>(infos.size()), infos.data(),
+                                             range_ptrs.data());
+  after_build_barrier(cmd, readers);
+}
+
+/// Scratch for every build of a batch in one buffer, each part aligned; `scratch(i)` is build i's.
+struct BatchScratch {
+  Scratch buffer;
+  std::vector<VkDeviceSize> offsets;
+  BatchScratch(const Context& ctx, std::span<const VkDeviceSize> sizes) {
+    const VkDeviceSize align = ctx.scratch_alignment();
+    VkDeviceSize total = 0;
+    for (VkDeviceSize size : sizes) {
+      offsets.push_back(total);
+      total += (std::max<VkDeviceSize>(size, 1) + align - 1) / align * align;
+    }
+    buffer = Scratch(ctx, std::max<VkDeviceSize>(total, 1));
+  }
+  VkDeviceAddress scratch(std::size_t i) const { return buffer.address + offsets[i]; }
+};
+
+/// Copies each structure into one of its compacted size, in one submit; the caller's submit built
+/// `built` and wrote their compacted sizes into `pool` (queries 0..n-1).
+inline std::vector<AccelerationStructure> compact_all(const Context& ctx, std::span<const AccelerationStructure> built,
+                                                      VkAccelerationStructureTypeKHR type, VkQueryPool pool) {
+  const auto n = static_cast<std::uint32_t>(built.size());
+  std::vector<VkDeviceSize> sizes(n);
+  check(vkGetQueryPoolResults(ctx.device(), pool, 0, n, n * sizeof(VkDeviceSize), sizes.data(), sizeof(VkDeviceSize),
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults", "compacted acceleration structure sizes");
+  std::vector<AccelerationStructure> compacted;
+  for (VkDeviceSize size : sizes) compacted.emplace_back(ctx, type, size);
+  ctx.submit([&](VkCommandBuffer cmd) {
+    for (std::uint32_t i = 0; i < n; ++i) {
+      auto copy = make<VkCopyAccelerationStructureInfoKHR>(VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR);
+      copy.src = built[i].get();
+      copy.dst = compacted[i].get();
+      copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
+      ctx.rt().cmd_copy_acceleration_structure(cmd, &copy);
+    }
+    // The copies write in the build stage: a TLAS build and traces read them.
+    after_build_barrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+  });
+  return compacted;
+}
+
+/// Creates and builds one structure per command (all of one type and flags) in one submit and
+/// waits. With ALLOW_COMPACTION the compacted sizes are queried in that submit and every
+/// structure is compacted in a second: two submits for any number of structures.
+inline std::vector<AccelerationStructure> build_structures(const Context& ctx, std::vector<BuildCommand> commands) {
+  if (commands.empty()) return {};
+  const VkAccelerationStructureTypeKHR type = commands.front().type;
+  std::vector<AccelerationStructure> built;
+  std::vector<VkDeviceSize> scratch_sizes;
+  for (const BuildCommand& c : commands) {
+    const auto sizes = build_sizes(ctx, c);
+    built.emplace_back(ctx, type, sizes.accelerationStructureSize);
+    scratch_sizes.push_back(sizes.buildScratchSize);
+  }
+  const BatchScratch scratch(ctx, scratch_sizes);
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    commands[i].dst = built[i].get();
+    commands[i].scratch = scratch.scratch(i);
+  }
+  const bool compact = (commands.front().flags & VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR) != 0;
+  const auto n = static_cast<std::uint32_t>(commands.size());
+  DeviceHandle<VkQueryPool> pool;
+  if (compact) {
+    auto query_info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+    query_info.queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR;
+    query_info.queryCount = n;
+    VkQueryPool raw = VK_NULL_HANDLE;
+    check(vkCreateQueryPool(ctx.device(), &query_info, nullptr, &raw), "vkCreateQueryPool");
+    pool = own(ctx.device(), raw, vkDestroyQueryPool);
+  }
+  ctx.submit([&](VkCommandBuffer cmd) {
+    if (compact) vkCmdResetQueryPool(cmd, pool.get(), 0, n);
+    record_builds(ctx, cmd, commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                          VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+    if (!compact) return;
+    std::vector<VkAccelerationStructureKHR> handles;
+    for (const AccelerationStructure& s : built) handles.push_back(s.get());
+    ctx.rt().cmd_write_acceleration_structures_properties(
+        cmd, n, handles.data(), VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool.get(), 0);
+  });
+  if (!compact) return built;
+  return compact_all(ctx, built, type, pool.get());
 }
 
 }  // namespace detail
 
-/// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i).
+/// The geometries of one BLAS of a batch: boxes or triangles (one of the two lists, not both).
+struct BlasGeometries {
+  std::span<const AabbGeometry> boxes;
+  std::span<const TriangleGeometry> triangles;
+};
+
+/// Builds every BLAS of `blases` (geometry i of each gets gl_GeometryIndexEXT == i) and waits:
+/// one submit builds them all and, with BuildOptions::compact, queries their compacted sizes;
+/// a second compacts them all. Throws as build_blas does, naming the BLAS's index.
+inline std::vector<AccelerationStructure> build_blases(const Context& ctx, std::span<const BlasGeometries> blases,
+                                                       const BuildOptions& options = {}) {
+  std::vector<detail::BlasInput> inputs;  // checked and uploaded first: nothing is built if one is bad
+  for (std::size_t b = 0; b < blases.size(); ++b) {
+    const std::string operation = "build_blases: BLAS " + std::to_string(b);
+    if (!blases[b].boxes.empty() && !blases[b].triangles.empty()) {
+      throw UsageError(operation + " has both boxes and triangles; a BLAS holds one kind: give each its own");
+    }
+    inputs.push_back(blases[b].triangles.empty() ? detail::aabb_input(ctx, blases[b].boxes, operation)
+                                                 : detail::triangle_input(ctx, blases[b].triangles, operation));
+  }
+  std::vector<detail::BuildCommand> commands;
+  for (const detail::BlasInput& in : inputs) {
+    commands.push_back({.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                        .flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts});
+  }
+  return detail::build_structures(ctx, std::move(commands));
+}
+
+/// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i) and waits.
 inline AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
                                         const BuildOptions& options = {}) {
   const detail::BlasInput in = detail::aabb_input(ctx, geometries, "build_blas");
-  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, in.geometries,
-                                              in.counts, detail::build_flags(options, true));
+  return std::move(detail::build_structures(
+      ctx, {{.flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts}})[0]);
 }
 
-/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i).
+/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i) and waits.
 inline AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
                                         const BuildOptions& options = {}) {
   const detail::BlasInput in = detail::triangle_input(ctx, geometries, "build_blas");
-  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, in.geometries,
-                                              in.counts, detail::build_flags(options, true));
+  return std::move(detail::build_structures(
+      ctx, {{.flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts}})[0]);
 }
 
 }  // namespace proceduray::vk

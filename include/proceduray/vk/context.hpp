@@ -24,6 +24,7 @@
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -96,6 +97,8 @@ class Context {
 
   /// Records commands into a one-time command buffer, submits it and waits for the queue.
   void submit(const std::function<void(VkCommandBuffer)>& record) const;
+  /// How many times submit() has submitted (each a submit-and-wait): what a batch of builds saves.
+  std::uint64_t submit_count() const noexcept { return m_submits.load(std::memory_order_relaxed); }
 
   /// Validation messages (warnings and errors) reported so far; empty when validation is off.
   std::vector<std::string> validation_messages() const { return m_log.messages(); }
@@ -125,6 +128,7 @@ class Context {
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR m_rt_properties{};
   VkPhysicalDeviceMemoryProperties m_memory{};
   DeviceFunctions m_rt;
+  mutable std::atomic<std::uint64_t> m_submits{0};
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -282,6 +286,7 @@ inline void Context::submit(const std::function<void(VkCommandBuffer)>& record) 
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
   check(vkQueueSubmit(m_queue, 1, &submit, raw_fence), "vkQueueSubmit");
+  m_submits.fetch_add(1, std::memory_order_relaxed);
   check(vkWaitForFences(m_device, 1, &raw_fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 

@@ -88,39 +88,24 @@ class RefittableBlas {
                                  "than the BLAS was built with; a refit keeps the topology: build a new "
                                  "RefittableBlas instead");
   }
-  VkAccelerationStructureBuildGeometryInfoKHR info(VkBuildAccelerationStructureModeKHR mode) const {
-    auto build = make<VkAccelerationStructureBuildGeometryInfoKHR>(
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-    build.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
-    build.flags = m_flags;
-    build.mode = mode;
-    build.geometryCount = static_cast<std::uint32_t>(m_input.geometries.size());
-    build.pGeometries = m_input.geometries.data();
-    return build;
+  /// This BLAS's build (or refit) for the build primitive.
+  detail::BuildCommand command(VkBuildAccelerationStructureModeKHR mode) const {
+    return {.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, .flags = m_flags, .mode = mode,
+            .geometries = m_input.geometries, .counts = m_input.counts, .dst = m_structure.get(),
+            .scratch = m_scratch.address};
   }
   void build(const Context& ctx, bool fast_trace) {
     m_flags = detail::build_flags({.compact = false, .allow_update = true, .fast_trace = fast_trace}, false);
-    auto build = info(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
-    auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
-    ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &build,
-                                                    m_input.counts.data(), &sizes);
+    const auto sizes = detail::build_sizes(ctx, command(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR));
     m_structure = AccelerationStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, sizes.accelerationStructureSize);
     m_scratch = detail::Scratch(ctx, std::max(sizes.buildScratchSize, sizes.updateScratchSize));
     ctx.submit([&](VkCommandBuffer cmd) { record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR); });
   }
   void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
-    auto build = info(mode);
-    build.srcAccelerationStructure = mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? m_structure.get()
-                                                                                            : VK_NULL_HANDLE;
-    build.dstAccelerationStructure = m_structure.get();
-    build.scratchData.deviceAddress = m_scratch.address;
-    std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(m_input.counts.size());
-    for (std::size_t i = 0; i < ranges.size(); ++i) ranges[i].primitiveCount = m_input.counts[i];
-    const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = ranges.data();
-    ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
+    const detail::BuildCommand c = command(mode);
     // The TLAS build that follows reads this structure, and so do the traces.
-    detail::after_build_barrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
-                                         VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+    detail::record_builds(ctx, cmd, {&c, 1}, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
   }
 
   detail::BlasInput m_input;

@@ -34,8 +34,9 @@ namespace proceduray::vk {
 /// A compiled scene's BLASes and TLAS, and their updates.
 class SceneAcceleration {
  public:
-  /// Builds every BLAS (Static ones compacted; all waits) and the TLAS from `plan` and the
-  /// geometry data of `scene` (not copied for Static geometry).
+  /// Builds every BLAS and the TLAS from `plan` and the geometry data of `scene` (not copied for
+  /// Static geometry), and waits: all Static BLASes in one submit and compacted in a second
+  /// (build_blases), each DynamicGeometry one refittable in its own, then the TLAS.
   SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
                     const BuildOptions& options = {});
   SceneAcceleration(const SceneAcceleration&) = delete;
@@ -82,6 +83,10 @@ class SceneAcceleration {
     bool changed = false;                                // set_* since the last frame
     const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
   };
+  /// Builds every Static (and DynamicTransform) BLAS in one batch: two submits, compacted per `options`.
+  void build_static_blases(const proceduray::Scene& scene, const BuildOptions& options);
+  /// Copies the data of DynamicGeometry BLAS `b` and builds it refittable (one submit).
+  void build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b);
   const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, std::string_view operation) const;
   void check_movable(GeometryId geometry, std::string_view operation) const;
   /// The TLAS index of (geometry, instance) of a movable geometry; throws InvalidGeometryError or UsageError.
@@ -112,32 +117,11 @@ inline SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray
     : m_ctx(&ctx), m_plan(&plan) {
   const auto blases = plan.blases();
   m_blases.resize(blases.size());
+  build_static_blases(scene, options);
   bool any_dynamic = false;
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
-    const PlannedBlas& blas = blases[b];
-    BlasSlot& slot = m_blases[b];
-    any_dynamic = any_dynamic || blas.update != UpdatePolicy::Static;
-    const bool refittable = blas.update == UpdatePolicy::DynamicGeometry;
-    if (blas.kind == GeometryKind::procedural) {
-      std::vector<AabbGeometry> geometries;
-      for (std::uint32_t g : blas.geometries) {
-        const auto& boxes = scene.geometry(GeometryId(g)).desc.aabbs;
-        geometries.push_back({std::span(reinterpret_cast<const VkAabbPositionsKHR*>(boxes.data()), boxes.size()),
-                              m_plan->geometries()[g].opaque});
-        if (refittable) slot.boxes.emplace_back(geometries.back().boxes.begin(), geometries.back().boxes.end());
-      }
-      if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(aabb_geometries(b)));
-      else slot.fixed = build_blas(*m_ctx, std::span<const AabbGeometry>(geometries), options);
-      continue;
-    }
-    std::vector<TriangleGeometry> geometries;  // straight from the scene: a Static mesh is not copied
-    for (std::uint32_t g : blas.geometries) {
-      const TriangleMesh& mesh = scene.geometry(GeometryId(g)).desc.mesh;
-      if (refittable) slot.meshes.push_back(mesh);  // the renderer's own copy: set_vertices and set_mesh change it
-      geometries.push_back({mesh.vertices, mesh.indices, m_plan->geometries()[g].opaque});
-    }
-    if (refittable) slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(geometries));
-    else slot.fixed = build_blas(*m_ctx, std::span<const TriangleGeometry>(geometries), options);
+    any_dynamic = any_dynamic || blases[b].update != UpdatePolicy::Static;
+    if (blases[b].update == UpdatePolicy::DynamicGeometry) build_refittable_blas(scene, b);
   }
   const auto instances = m_plan->instances();
   for (std::uint32_t k = 0; k < instances.size(); ++k) {
@@ -150,6 +134,53 @@ inline SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray
   }
   // Only a scene that changes pays for a refittable TLAS.
   m_tlas = Tlas(*m_ctx, m_instances, {.allow_update = any_dynamic});
+}
+
+inline void SceneAcceleration::build_static_blases(const proceduray::Scene& scene, const BuildOptions& options) {
+  const auto blases = m_plan->blases();
+  std::vector<std::uint32_t> which;
+  std::vector<std::vector<AabbGeometry>> boxes;         // straight from the scene: Static data is not copied
+  std::vector<std::vector<TriangleGeometry>> meshes;
+  std::vector<BlasGeometries> batch;
+  for (std::uint32_t b = 0; b < blases.size(); ++b) {
+    if (blases[b].update == UpdatePolicy::DynamicGeometry) continue;
+    which.push_back(b);
+    boxes.emplace_back();
+    meshes.emplace_back();
+    for (std::uint32_t g : blases[b].geometries) {
+      const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;
+      const bool opaque = m_plan->geometries()[g].opaque;
+      if (blases[b].kind == GeometryKind::procedural) {
+        boxes.back().push_back(
+            {std::span(reinterpret_cast<const VkAabbPositionsKHR*>(desc.aabbs.data()), desc.aabbs.size()), opaque});
+      } else {
+        meshes.back().push_back({desc.mesh.vertices, desc.mesh.indices, opaque});
+      }
+    }
+  }
+  for (std::size_t i = 0; i < which.size(); ++i) batch.push_back({boxes[i], meshes[i]});
+  // One submit builds every Static BLAS and queries the compacted sizes, a second compacts them all.
+  std::vector<AccelerationStructure> built = build_blases(*m_ctx, batch, options);
+  for (std::size_t i = 0; i < which.size(); ++i) m_blases[which[i]].fixed = std::move(built[i]);
+}
+
+inline void SceneAcceleration::build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b) {
+  const PlannedBlas& blas = m_plan->blases()[b];
+  BlasSlot& slot = m_blases[b];
+  for (std::uint32_t g : blas.geometries) {
+    const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;
+    if (blas.kind == GeometryKind::procedural) {
+      const auto* first = reinterpret_cast<const VkAabbPositionsKHR*>(desc.aabbs.data());
+      slot.boxes.emplace_back(first, first + desc.aabbs.size());
+    } else {
+      slot.meshes.push_back(desc.mesh);  // the renderer's own copy: set_vertices and set_mesh change it
+    }
+  }
+  if (blas.kind == GeometryKind::procedural) {
+    slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(aabb_geometries(b)));
+  } else {
+    slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(triangle_geometries(b)));
+  }
 }
 
 inline std::vector<AabbGeometry> SceneAcceleration::aabb_geometries(std::uint32_t b) const {

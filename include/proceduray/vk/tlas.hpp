@@ -104,10 +104,12 @@ class Tlas {
                     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
     write(instances, "Tlas");
-    auto build = info(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
-    auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
-    ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
-                                                    &build.first, &m_count, &sizes);
+    m_geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+    m_geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    m_geometry.geometry.instances = make<VkAccelerationStructureGeometryInstancesDataKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
+    m_geometry.geometry.instances.data.deviceAddress = m_instances.address();
+    const auto sizes = detail::build_sizes(ctx, command(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR));
     m_structure = AccelerationStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, sizes.accelerationStructureSize);
     // Kept for refits: an update needs scratch of updateScratchSize, a build of buildScratchSize.
     m_scratch = detail::Scratch(ctx, std::max(sizes.buildScratchSize, sizes.updateScratchSize));
@@ -149,35 +151,19 @@ class Tlas {
   }
 
  private:
-  std::pair<VkAccelerationStructureBuildGeometryInfoKHR, VkAccelerationStructureGeometryKHR*> info(
-      VkBuildAccelerationStructureModeKHR mode) {
-    m_geometry = make<VkAccelerationStructureGeometryKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
-    m_geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-    m_geometry.geometry.instances = make<VkAccelerationStructureGeometryInstancesDataKHR>(
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
-    m_geometry.geometry.instances.data.deviceAddress = m_instances.address();
-    auto build = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-    build.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
-    build.flags = m_flags;
-    build.mode = mode;
-    build.geometryCount = 1;
-    build.pGeometries = &m_geometry;
-    return {build, &m_geometry};
+  /// This TLAS's build (or update) for the build primitive.
+  detail::BuildCommand command(VkBuildAccelerationStructureModeKHR mode) const {
+    return {.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, .flags = m_flags, .mode = mode,
+            .geometries = {&m_geometry, 1}, .counts = {&m_count, 1}, .dst = m_structure.get(),
+            .scratch = m_scratch.address};
   }
   void write(std::span<const Instance> instances, std::string_view operation) {
     auto* packed = static_cast<VkAccelerationStructureInstanceKHR*>(m_instances.data());
     detail::pack_instances(instances, {packed, instances.size()}, operation);
   }
   void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
-    auto build = info(mode).first;
-    build.srcAccelerationStructure = mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? m_structure.get()
-                                                                                            : VK_NULL_HANDLE;
-    build.dstAccelerationStructure = m_structure.get();
-    build.scratchData.deviceAddress = m_scratch.address;
-    VkAccelerationStructureBuildRangeInfoKHR range{m_count, 0, 0, 0};
-    const VkAccelerationStructureBuildRangeInfoKHR* range_ptr = &range;
-    ctx.rt().cmd_build_acceleration_structures(cmd, 1, &build, &range_ptr);
-    detail::after_build_barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);  // traces read it
+    const detail::BuildCommand c = command(mode);
+    detail::record_builds(ctx, cmd, {&c, 1}, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);  // traces read it
   }
 
   std::uint32_t m_count = 0;
@@ -202,8 +188,9 @@ inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Inst
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
   geometry.geometry.instances.data.deviceAddress = buffer.address();
   const std::uint32_t count = static_cast<std::uint32_t>(packed.size());
-  return detail::build_acceleration_structure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, {&geometry, 1},
-                                              {&count, 1}, VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR);
+  return std::move(detail::build_structures(ctx, {{.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                                   .flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR,
+                                                   .geometries = {&geometry, 1}, .counts = {&count, 1}}})[0]);
 }
 
 }  // namespace proceduray::vk
