@@ -5,9 +5,11 @@
 //   hello_sphere::HelloSphere scene(ctx);
 //   std::vector<std::uint8_t> rgba = scene.render(640, 360);
 //
-// SBT (one ray type, so record = instance offset + geometry index * 1 + 0):
+// SBT, as compile() lays it out (one ray type, so record = instance offset + geometry index * 1 + 0):
 //   raygen | miss: background | hit 0: red sphere | hit 1: blue sphere
 //   instance 0 -> sbtOffset 0 -> hit 0;  instance 1 -> sbtOffset 1 -> hit 1
+// The GPU objects are the thin layer's, built by hand (BLAS, TLAS, descriptor set, pipeline);
+// the groups, records and SBT offsets come from the scene's plan, never numbered by hand.
 #pragma once
 
 #include <proceduray/proceduray.hpp>
@@ -17,6 +19,7 @@
 #include <string>
 
 #include <array>
+#include <map>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -121,18 +124,40 @@ inline pr::Camera make_camera(std::uint32_t width, std::uint32_t height) {
   return pr::look_at(Layout::eye, glm::vec3(0.0f), Layout::fov_y_degrees, width, height);
 }
 
-/// The GPU objects of the scene, built once; render() traces it at any size.
+/// The scene: one ray type, the spheres' hit group, one geometry of two instances with a hit
+/// record each, and the miss record; compile() derives the groups, records and SBT offsets.
+inline pr::Scene make_scene(std::array<glm::vec4, 2> albedo) {
+  pr::Scene scene;
+  const auto radiance = scene.add_ray<Colour>("radiance", {.miss = "hello_sphere.rmiss"});
+  const auto sphere = scene.add_hit_group<SphereHit>("sphere", {.kind = pr::HitGroupKind::procedural,
+                                                               .closest_hit = "hello_sphere.rchit",
+                                                               .intersection = "hello_sphere.rint"});
+  std::vector<pr::InstanceTransform> placed;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const glm::mat4 m = glm::scale(glm::translate(glm::mat4(1.0f), Layout::centres[i]), glm::vec3(Layout::radii[i]));
+    placed.push_back(pr::instance_transform(m));
+  }
+  const auto spheres = scene.add_geometry("spheres", pr::GeometryDesc::procedural({pr::Aabb{}}, placed));
+  const auto hit = scene.add_local_signature<HitRecord>("hit");
+  scene.add_raygen("hello_sphere.rgen");
+  scene.add_miss(radiance, scene.add_local_signature<MissRecord>("miss"), MissRecord{Layout::background});
+  for (std::uint32_t i = 0; i < 2; ++i) scene.add_hit(radiance, sphere, hit, HitRecord{albedo[i]}, spheres, i);
+  return scene;
+}
+
+/// The GPU objects of the scene, built by hand with the thin layer from the scene's plan;
+/// render() traces it at any size.
 class HelloSphere {
  public:
   /// `albedo[i]` is instance i's colour, written into its hit record.
   explicit HelloSphere(const vk::Context& ctx, std::array<glm::vec4, 2> albedo = Layout::albedo)
       : m_ctx(&ctx),
-        m_hits{HitRecord{albedo[0]}, HitRecord{albedo[1]}},
+        m_plan(pr::compile(make_scene(albedo))),
         m_blas(build_unit_sphere_blas(ctx)),
         m_tlas(vk::build_tlas(ctx, instances())),
         m_set(ctx, {{0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}),
-        m_pipeline(ctx, pipeline_desc(m_set)),
-        m_sbt(ctx, m_pipeline, sbt_layout(ctx), records()) {
+        m_pipeline(ctx, pipeline_desc(m_plan, m_set)),
+        m_sbt(ctx, m_pipeline, m_plan, m_plan.layout(ctx.limits())) {
     m_set.write(0, m_tlas);
   }
 
@@ -147,6 +172,7 @@ class HelloSphere {
   }
 
   const vk::SbtBuffer& sbt() const noexcept { return m_sbt; }
+  const pr::Plan& plan() const noexcept { return m_plan; }
 
  private:
   static vk::AccelerationStructure build_unit_sphere_blas(const vk::Context& ctx) {
@@ -154,47 +180,41 @@ class HelloSphere {
     const vk::AabbGeometry geometry{{&box, 1}};
     return vk::build_blas(ctx, {&geometry, 1});
   }
+  /// The plan's TLAS instances, each with the SBT offset compile() gave it.
   std::vector<vk::Instance> instances() const {
     std::vector<vk::Instance> out;
-    for (std::uint32_t i = 0; i < 2; ++i) {
-      glm::mat4 m = glm::translate(glm::mat4(1.0f), Layout::centres[i]);
-      m = glm::scale(m, glm::vec3(Layout::radii[i]));
-      out.push_back({.blas = &m_blas, .transform = m, .sbt_offset = i});
+    const auto planned = m_plan.instances();
+    for (std::uint32_t k = 0; k < planned.size(); ++k) {
+      out.push_back({.blas = &m_blas, .transform = glm::transpose(glm::mat4(planned[k].transform)), .custom_index = k,
+                     .sbt_offset = planned[k].sbt_offset});
     }
     return out;
   }
-  static vk::PipelineDesc pipeline_desc(const vk::DescriptorSet& set) {
-    vk::PipelineDesc desc;
-    auto stage = [&](vk::ShaderStage s, const char* name, const char* code, std::string declarations) {
-      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = name, .code = code,
-                                                  .preamble = std::move(declarations)}));
+  /// Compiles the plan's stages (in its order) and takes its groups.
+  static vk::PipelineDesc pipeline_desc(const pr::Plan& plan, const vk::DescriptorSet& set) {
+    struct Source {
+      const char* code;
+      std::string declarations;
     };
-    const auto rgen = stage(vk::ShaderStage::raygen, "hello_sphere.rgen", raygen_glsl, raygen_declarations());
-    const auto miss = stage(vk::ShaderStage::miss, "hello_sphere.rmiss", miss_glsl, miss_declarations());
-    const auto chit = stage(vk::ShaderStage::closest_hit, "hello_sphere.rchit", closest_hit_glsl,
-                            closest_hit_declarations());
-    const auto isec = stage(vk::ShaderStage::intersection, "hello_sphere.rint", intersection_glsl,
-                            intersection_declarations());
-    desc.groups = {vk::ShaderGroup::general_shader(rgen), vk::ShaderGroup::general_shader(miss),
-                   vk::ShaderGroup::procedural(chit, isec)};
+    const std::map<std::string, Source> sources{
+        {"hello_sphere.rgen", {raygen_glsl, raygen_declarations()}},
+        {"hello_sphere.rmiss", {miss_glsl, miss_declarations()}},
+        {"hello_sphere.rchit", {closest_hit_glsl, closest_hit_declarations()}},
+        {"hello_sphere.rint", {intersection_glsl, intersection_declarations()}}};
+    vk::PipelineDesc desc;
+    for (const pr::PlannedStage& s : plan.pipeline().stages) {
+      const Source& source = sources.at(s.shader);
+      desc.add_shader(s.stage, vk::compile_glsl({.stage = s.stage, .name = s.shader, .code = source.code,
+                                                 .preamble = source.declarations}));
+    }
+    desc.groups = vk::shader_groups(plan.pipeline());
     desc.set_layouts = {set.layout()};
     desc.push_constant_size = sizeof(pr::Camera);
     return desc;
   }
-  static pr::SbtLayout sbt_layout(const vk::Context& ctx) {
-    return pr::layout_sbt(ctx.sbt_properties(),
-                          {{{1, 0}, {1, sizeof(MissRecord)}, {2, Interface::max_root_arguments_size}, {}}});
-  }
-  std::vector<vk::RecordWrite> records() const {
-    return {{pr::SbtRegionKind::raygen, 0, 0},
-            {pr::SbtRegionKind::miss, 0, 1, Interface::record_data(m_miss)},
-            {pr::SbtRegionKind::hit, 0, 2, Interface::record_data(m_hits[0])},
-            {pr::SbtRegionKind::hit, 1, 2, Interface::record_data(m_hits[1])}};
-  }
 
   const vk::Context* m_ctx;
-  MissRecord m_miss{Layout::background};
-  std::array<HitRecord, 2> m_hits;
+  pr::Plan m_plan;
   vk::AccelerationStructure m_blas;
   vk::AccelerationStructure m_tlas;
   vk::DescriptorSet m_set;

@@ -43,7 +43,8 @@ struct PaperScene : pr::SceneOf<Interface> {
   /// PAPER_GLSL_DIR (glsl/generate.cpp, run with no device; defined by CMake and Meson for every
   /// target that includes this header), then the flags and the AABBs.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"}, .declarations = pr::glsl_files(PAPER_GLSL_DIR),
+    return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
+            .declarations = pr::glsl_files(examples::generated_glsl_dir(PAPER_GLSL_DIR)),
             .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this), .pipeline_cache = std::move(cache)};
   }
 };

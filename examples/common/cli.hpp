@@ -36,6 +36,13 @@ inline std::filesystem::path examples_dir() {
 #endif
 }
 
+/// Where the build wrote a scene's GLSL declarations (`built`, a path compiled in); the
+/// environment variable PROCEDURAY_GLSL_DIR overrides it, for binaries carried to another machine.
+inline std::filesystem::path generated_glsl_dir(const char* built) {
+  if (const char* env = std::getenv("PROCEDURAY_GLSL_DIR"); env != nullptr && *env != '\0') return env;
+  return built;
+}
+
 inline Options parse(int argc, char** argv, const char* program, Options defaults) {
   Options o = defaults;
   if (o.out.empty()) o.out = std::string(program) + ".png";

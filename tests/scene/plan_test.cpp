@@ -191,7 +191,7 @@ TEST_CASE("plan layout checks device limits naming the limit the value and the d
                        DeviceLimitError);
   limits = test::lavapipe_limits;
   limits.sbt.max_stride = 64;  // 32 + 32 bytes of ProceduralRootArguments... exceeds
-  CHECK_THROWS_WITH_AS(t.layout(limits), doctest::Contains("exceeds the device's maxShaderGroupStride 64"), std::length_error);
+  CHECK_THROWS_WITH_AS(t.layout(limits), doctest::Contains("exceeds the device's maxShaderGroupStride 64"), DeviceLimitError);
   limits = test::lavapipe_limits;
   limits.max_geometry_count = 0;
   CHECK_THROWS_WITH_AS(t.layout(limits),

@@ -28,7 +28,8 @@ TEST_CASE("scene parts alone trace the renderer's frame into the caller's comman
   CHECK_THROWS_WITH_AS(bindings.check_ready("test"), doctest::Contains("test: the uniform at set 0 binding 2 was never given"),
                        UsageError);
   bindings.set(renderer_scene::constants_slot, renderer_scene::constants(width, height));
-  const renderer_scene::Tint white[] = {{glm::vec4(1.0f)}, {glm::vec4(1.0f)}};
+  // One tint per TLAS instance: the shaders index them by gl_InstanceCustomIndexEXT.
+  const std::vector<renderer_scene::Tint> white(plan.instances().size(), {glm::vec4(1.0f)});
   bindings.set_storage(renderer_scene::tints_slot, std::span<const renderer_scene::Tint>(white));
   bindings.check_ready("test");
 
