@@ -6,6 +6,7 @@
 //   std::unique_ptr<proceduray::vk::Pipeline> pipeline = proceduray::vk::make_scene_pipeline(
 //       ctx, plan, bindings.layouts(), bindings.push_size(), {.shader_dirs = {"shaders"}}, &timings);
 //   timings.compile_ms;   // glslang, all stages
+//   std::vector<proceduray::vk::ShaderGroup> groups = proceduray::vk::shader_groups(plan.pipeline());   // for a PipelineDesc
 #pragma once
 
 #include <proceduray/error.hpp>
@@ -40,6 +41,19 @@ struct PipelineTimings {
   double pipeline_ms = 0;        ///< vkCreateRayTracingPipelinesKHR
   bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
 };
+
+/// The plan's groups as pipeline groups, indices into the plan's stages (in the plan's order,
+/// which is the order of the handles the plan's records use).
+inline std::vector<ShaderGroup> shader_groups(const PipelinePlan& planned) {
+  static constexpr VkRayTracingShaderGroupTypeKHR types[] = {VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR,
+                                                             VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR,
+                                                             VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR};
+  std::vector<ShaderGroup> groups;
+  for (const PlannedGroup& g : planned.groups) {
+    groups.push_back({types[static_cast<std::uint32_t>(g.type)], g.general, g.closest_hit, g.any_hit, g.intersection});
+  }
+  return groups;
+}
 
 /// The path of shader `name` in the first of `dirs` that has it; throws UsageError listing the folders.
 inline std::string find_shader(std::span<const std::filesystem::path> dirs, const std::string& name) {
@@ -80,12 +94,7 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
     desc.add_shader(stage.stage, std::move(spirv));
   }
   t.compile_ms = ms_since(start);
-  for (const PlannedGroup& g : planned.groups) {
-    static constexpr VkRayTracingShaderGroupTypeKHR types[] = {VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR,
-                                                               VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR,
-                                                               VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR};
-    desc.groups.push_back({types[static_cast<std::uint32_t>(g.type)], g.general, g.closest_hit, g.any_hit, g.intersection});
-  }
+  desc.groups = shader_groups(planned);
   desc.set_layouts.assign(set_layouts.begin(), set_layouts.end());
   desc.push_constant_size = push_size;
   desc.max_recursion_depth = planned.max_recursion_depth;
