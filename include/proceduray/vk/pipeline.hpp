@@ -121,10 +121,11 @@ class Pipeline {
   std::vector<std::byte> m_handles;
 };
 
-inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
-    : m_group_count(static_cast<std::uint32_t>(desc.groups.size())),
-      m_handle_size(ctx.ray_tracing_properties().shaderGroupHandleSize),
-      m_push_constant_size(desc.push_constant_size) {
+namespace detail {
+
+/// Throws for a depth past the device's, a group naming a shader that does not exist, a
+/// procedural group without intersection, or a non-raygen shader that traces at depth 1.
+inline void check_pipeline_desc(const Context& ctx, const PipelineDesc& desc) {
   const std::uint32_t device_depth = ctx.ray_tracing_properties().maxRayRecursionDepth;
   if (desc.max_recursion_depth > device_depth) {
     throw DeviceLimitError("Pipeline: max_recursion_depth " + std::to_string(desc.max_recursion_depth) +
@@ -157,16 +158,10 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
                           "set PipelineDesc::max_recursion_depth = n");
   }
 
-  VkPushConstantRange push{all_ray_tracing_stages, 0, desc.push_constant_size};
-  auto layout_info = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-  layout_info.setLayoutCount = static_cast<std::uint32_t>(desc.set_layouts.size());
-  layout_info.pSetLayouts = desc.set_layouts.data();
-  layout_info.pushConstantRangeCount = desc.push_constant_size > 0 ? 1 : 0;
-  layout_info.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
-  m_layout = own(ctx.device(), layout, vkDestroyPipelineLayout);
+}
 
+/// The pipeline over `layout`: one module per shader, the groups, a dynamic stack size.
+inline VkPipeline create_pipeline(const Context& ctx, const PipelineDesc& desc, VkPipelineLayout layout) {
   std::vector<DeviceHandle<VkShaderModule>> modules;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   for (const auto& shader : desc.shaders) {
@@ -207,14 +202,16 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
   VkPipeline pipeline = VK_NULL_HANDLE;
   check(ctx.rt().create_ray_tracing_pipelines(ctx.device(), VK_NULL_HANDLE, desc.cache, 1, &info, nullptr, &pipeline),
         "vkCreateRayTracingPipelinesKHR");
-  m_pipeline = own(ctx.device(), pipeline, vkDestroyPipeline);
+  return pipeline;
+}
 
-  // The spec's default stack size formula, from the sizes the driver reports per group and stage.
+/// The spec's default stack size formula, from the sizes the driver reports per group and stage.
+inline std::uint32_t default_stack_size(const Context& ctx, const PipelineDesc& desc, VkPipeline pipeline) {
   VkDeviceSize raygen = 0, miss = 0, closest = 0, intersect_any = 0, callable = 0;
   auto size = [&](std::uint32_t g, VkShaderGroupShaderKHR which) {
     return ctx.rt().get_ray_tracing_shader_group_stack_size(ctx.device(), pipeline, g, which);
   };
-  for (std::uint32_t g = 0; g < m_group_count; ++g) {
+  for (std::uint32_t g = 0; g < desc.groups.size(); ++g) {
     const ShaderGroup& group = desc.groups[g];
     if (group.type == VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR) {
       const VkDeviceSize s = size(g, VK_SHADER_GROUP_SHADER_GENERAL_KHR);
@@ -232,9 +229,31 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
     intersect_any = std::max(intersect_any, ia);
   }
   const VkDeviceSize depth = desc.max_recursion_depth;
-  m_stack_size = static_cast<std::uint32_t>(raygen + std::min<VkDeviceSize>(1, depth) * std::max({closest, miss, intersect_any}) +
+  return static_cast<std::uint32_t>(raygen + std::min<VkDeviceSize>(1, depth) * std::max({closest, miss, intersect_any}) +
                                             (depth > 1 ? depth - 1 : 0) * std::max(closest, miss) + 2 * callable);
 
+}
+
+}  // namespace detail
+
+inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
+    : m_group_count(static_cast<std::uint32_t>(desc.groups.size())),
+      m_handle_size(ctx.ray_tracing_properties().shaderGroupHandleSize),
+      m_push_constant_size(desc.push_constant_size) {
+  detail::check_pipeline_desc(ctx, desc);
+  VkPushConstantRange push{all_ray_tracing_stages, 0, desc.push_constant_size};
+  auto layout_info = make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+  layout_info.setLayoutCount = static_cast<std::uint32_t>(desc.set_layouts.size());
+  layout_info.pSetLayouts = desc.set_layouts.data();
+  layout_info.pushConstantRangeCount = desc.push_constant_size > 0 ? 1 : 0;
+  layout_info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
+  m_layout = own(ctx.device(), layout, vkDestroyPipelineLayout);
+
+  const VkPipeline pipeline = detail::create_pipeline(ctx, desc, layout);
+  m_pipeline = own(ctx.device(), pipeline, vkDestroyPipeline);
+  m_stack_size = detail::default_stack_size(ctx, desc, pipeline);
   m_handles.resize(std::size_t{m_group_count} * m_handle_size);
   if (m_group_count > 0) {
     check(ctx.rt().get_ray_tracing_shader_group_handles(ctx.device(), pipeline, 0, m_group_count, m_handles.size(),
