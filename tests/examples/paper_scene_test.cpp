@@ -224,7 +224,7 @@ TEST_CASE("paper scene declarations written at build time with no device equal t
 #ifndef PAPER_GLSL_DIR
 #error "PAPER_GLSL_DIR must name the folder the build wrote the paper scene's declarations to"
 #endif
-  const std::filesystem::path dir = PAPER_GLSL_DIR;
+  const std::filesystem::path dir = examples::generated_glsl_dir(PAPER_GLSL_DIR);  // PROCEDURAY_GLSL_DIR overrides
   TestContext t;
   paper::PaperScene scene;
   vk::RendererOptions options = scene.renderer_options();
