@@ -71,8 +71,8 @@ inline std::function<std::string(ShaderStage, const std::string&)> glsl_files(st
 }
 
 /// The body of a build-time generator: compiles `scene` and writes its declarations into the
-/// folder argv[1], then the list of files into argv[2] (default argv[1]/files.txt), which build
-/// systems track as the output. Returns 0, or 1 with a message.
+/// folder argv[1], then the list of files into argv[1]/files.txt and, when given, argv[2] (a file
+/// a build system tracks as the output, e.g. Meson's custom_target). Returns 0, or 1 with a message.
 inline int glsl_files_main(const Scene& scene, int argc, char** argv) {
   if (argc != 2 && argc != 3) {
     std::cerr << "glsl_files_main: expected the output folder and optionally the list file; got " << (argc - 1)
@@ -81,11 +81,13 @@ inline int glsl_files_main(const Scene& scene, int argc, char** argv) {
   }
   try {
     const std::vector<std::string> names = write_glsl_files(compile(scene), argv[1]);
-    const std::filesystem::path list_path = argc == 3 ? std::filesystem::path(argv[2])
-                                                      : std::filesystem::path(argv[1]) / "files.txt";
-    std::ofstream list(list_path, std::ios::trunc);
-    for (const std::string& name : names) list << name << "\n";
-    if (!list.good()) throw EnvironmentError("glsl_files_main: cannot write " + list_path.string());
+    std::vector<std::filesystem::path> lists{std::filesystem::path(argv[1]) / "files.txt"};
+    if (argc == 3) lists.emplace_back(argv[2]);
+    for (const std::filesystem::path& path : lists) {
+      std::ofstream list(path, std::ios::trunc);
+      for (const std::string& name : names) list << name << "\n";
+      if (!list.good()) throw EnvironmentError("glsl_files_main: cannot write " + path.string());
+    }
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
     return 1;
