@@ -38,18 +38,6 @@
 
 namespace proceduray::vk {
 
-/// How a Renderer finds and compiles its shaders and builds its BLASes. Every member has a default.
-struct RendererOptions {
-  std::vector<std::filesystem::path> shader_dirs;  ///< where the plan's shader names are read; default: the current folder
-  /// Replaces the plan's declarations when set, e.g. with files written at build time (glsl_files);
-  /// extra_declarations still follow.
-  std::function<std::string(ShaderStage, const std::string& name)> declarations;
-  /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
-  std::string extra_declarations;
-  std::filesystem::path pipeline_cache;  ///< cache file; empty (default): none
-  BuildOptions blas{};                   ///< BLAS builds; default compacted, fast trace
-};
-
 /// What building the renderer cost, in milliseconds of wall time.
 struct BuildTimings {
   double acceleration_ms = 0;  ///< all BLAS builds and compactions, and the TLAS
@@ -162,9 +150,7 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, Re
   m_timings.acceleration_ms = ms_since(start);
   m_bindings = std::make_unique<Bindings>(ctx, m_plan.global_signature(), m_structures->tlas().structure());
   PipelineTimings pipeline;
-  m_pipeline = make_scene_pipeline(ctx, m_plan, m_bindings->layouts(), m_bindings->push_size(),
-                                   {std::move(options.shader_dirs), std::move(options.declarations),
-                                    std::move(options.extra_declarations), std::move(options.pipeline_cache)},
+  m_pipeline = make_scene_pipeline(ctx, m_plan, m_bindings->layouts(), m_bindings->push_size(), std::move(options),
                                    &pipeline);
   m_timings.compile_ms = pipeline.compile_ms;
   m_timings.pipeline_ms = pipeline.pipeline_ms;

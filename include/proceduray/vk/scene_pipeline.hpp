@@ -11,6 +11,7 @@
 
 #include <proceduray/error.hpp>
 #include <proceduray/scene/plan.hpp>
+#include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
 
@@ -24,8 +25,9 @@
 
 namespace proceduray::vk {
 
-/// Where a scene's shaders are found and what they are compiled with. Every member has a default.
-struct PipelineOptions {
+/// How a Renderer finds and compiles its shaders (make_scene_pipeline) and builds its BLASes
+/// (SceneAcceleration). Every member has a default.
+struct RendererOptions {
   std::vector<std::filesystem::path> shader_dirs;  ///< where the plan's shader names are read; default: the current folder
   /// Replaces the plan's declarations when set, e.g. with files written at build time (glsl_files);
   /// extra_declarations still follow.
@@ -33,6 +35,7 @@ struct PipelineOptions {
   /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
   std::string extra_declarations;
   std::filesystem::path pipeline_cache;  ///< cache file; empty (default): none
+  BuildOptions blas{};                   ///< BLAS builds (SceneAcceleration); default compacted, fast trace
 };
 
 /// What making the pipeline cost, in milliseconds of wall time.
@@ -72,7 +75,7 @@ inline std::string find_shader(std::span<const std::filesystem::path> dirs, cons
 /// an undeclared recursion depth; ShaderCompileError naming the file and line.
 inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
                                                      std::span<const VkDescriptorSetLayout> set_layouts,
-                                                     std::uint32_t push_size, PipelineOptions options,
+                                                     std::uint32_t push_size, RendererOptions options,
                                                      PipelineTimings* timings = nullptr) {
   using Clock = std::chrono::steady_clock;
   auto ms_since = [](Clock::time_point start) {
