@@ -39,16 +39,6 @@ bool bytes_equal(std::span<const std::byte> bytes, const T& value) {
   return bytes.size() == sizeof(T) && std::memcmp(bytes.data(), &value, sizeof(T)) == 0;
 }
 
-/// Fake group handles: handle g is filled with byte g + 1.
-std::vector<std::byte> fake_handles(const Plan& plan, const SbtLayout& layout) {
-  const std::uint32_t h = layout.properties.handle_size;
-  std::vector<std::byte> out(plan.pipeline().groups.size() * h);
-  for (std::size_t g = 0; g < plan.pipeline().groups.size(); ++g) {
-    std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(g * h), h, std::byte(g + 1));
-  }
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("compile report scene resolves every ray geometry and instance") {

@@ -46,16 +46,6 @@ Plan plan_of_spheres() {
   return compile(scene);
 }
 
-/// Fake group handles: handle g is filled with byte g + 1.
-std::vector<std::byte> fake_handles(const Plan& plan, const SbtLayout& layout) {
-  const std::uint32_t h = layout.properties.handle_size;
-  std::vector<std::byte> out(plan.pipeline().groups.size() * h);
-  for (std::size_t g = 0; g < plan.pipeline().groups.size(); ++g) {
-    std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(g * h), h, std::byte(g + 1));
-  }
-  return out;
-}
-
 }  // namespace plan_test
 
 using namespace plan_test;
@@ -101,7 +91,7 @@ TEST_CASE("plan is a value that outlives its scene and equals a copy") {
   CHECK_FALSE(compile(deeper) == plan);
   // A copy lays out and writes the same table.
   const SbtLayout layout = plan.layout(test::lavapipe_limits);
-  const auto handles = fake_handles(plan, layout);
+  const auto handles = test::fake_handles(plan, layout);
   std::vector<std::byte> a(layout.size), b(layout.size);
   plan.write(layout, a, handles);
   copy.write(layout, b, handles);
@@ -205,14 +195,11 @@ TEST_CASE("plan layout checks device limits naming the limit the value and the d
 
 TEST_CASE("plan write puts handles and record data at their offsets") {
   test::D3D12Scene d;
-  test::build_d3d12_scene(d);
-  std::vector<std::uint32_t> order(22);
-  std::iota(order.begin(), order.end(), 0u);
-  test::add_d3d12_entries(d, order);
+  test::build_d3d12_scene_in_order(d);
   const Plan sbt = compile(d.scene);
   for (const DeviceLimits& limits : test::all_limits()) {
     const SbtLayout layout = sbt.layout(limits);
-    const auto handles = fake_handles(sbt, layout);
+    const auto handles = test::fake_handles(sbt, layout);
     std::vector<std::byte> buffer(layout.size, std::byte{0xEE});
     sbt.write(layout, buffer, handles);
     const std::uint32_t h = limits.sbt.handle_size;
@@ -241,10 +228,7 @@ TEST_CASE("plan write puts handles and record data at their offsets") {
 
 TEST_CASE("plan knows its BLASes geometries and instances and names bad ids") {
   test::D3D12Scene d;
-  test::build_d3d12_scene(d);
-  std::vector<std::uint32_t> order(22);
-  std::iota(order.begin(), order.end(), 0u);
-  test::add_d3d12_entries(d, order);
+  test::build_d3d12_scene_in_order(d);
   const Plan plan = compile(d.scene);
   REQUIRE(plan.blases().size() == 2);
   const PlannedBlas& plane = plan.blases()[0];

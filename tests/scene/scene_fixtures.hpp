@@ -4,7 +4,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <glm/glm.hpp>
@@ -222,6 +224,16 @@ inline void build_d3d12_scene(D3D12Scene& d) {
   s.add_local_signature<D3D12RootArguments>("AABB");
 }
 
+/// Fake group handles: handle g is filled with byte g + 1.
+inline std::vector<std::byte> fake_handles(const Plan& plan, const SbtLayout& layout) {
+  const std::uint32_t h = layout.properties.handle_size;
+  std::vector<std::byte> out(plan.pipeline().groups.size() * h);
+  for (std::size_t g = 0; g < plan.pipeline().groups.size(); ++g) {
+    std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(g * h), h, std::byte(g + 1));
+  }
+  return out;
+}
+
 /// The sample's entries, added in `order` (a permutation of 0..21 over the 22 (geometry, ray) slots).
 inline void add_d3d12_entries(D3D12Scene& d, const std::vector<std::uint32_t>& order) {
   Scene& s = d.scene;
@@ -244,6 +256,14 @@ inline void add_d3d12_entries(D3D12Scene& d, const std::vector<std::uint32_t>& o
       else s.add_hit(d.radiance, s.hit_group_id(name), aabb, args, d.aabbs[geometry - 1]);
     }
   }
+}
+
+/// The sample's scene with its entries in slot order.
+inline void build_d3d12_scene_in_order(D3D12Scene& d) {
+  build_d3d12_scene(d);
+  std::vector<std::uint32_t> order(22);
+  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+  add_d3d12_entries(d, order);
 }
 
 }  // namespace proceduray::test

@@ -271,8 +271,9 @@ inline void PlanBuilder::pipeline() {
 }
 
 inline void PlanBuilder::declarations() {
+  const std::string common = detail::common_declarations(s, out);
   for (PlannedStage& stage : out.m_pipeline.stages) {
-    stage.declarations = detail::declarations_for(s, out, stage.stage, stage.shader);
+    stage.declarations = common + detail::stage_declarations(s, out, stage.stage, stage.shader);
   }
 }
 

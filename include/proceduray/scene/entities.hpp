@@ -93,8 +93,7 @@ class Entities {
     validate(desc, id, op);
     // Every check comes before the first change, so a throw leaves the scene as it was.
     const BlasSet::Join join = m_blases.check(desc, id, op);
-    // An empty or taken id: add() throws its DuplicateIdError or SceneError before it changes anything.
-    if (id.empty() || m_geometries.find(id) != nullptr) m_geometries.add(op, id, Geometry{});
+    m_geometries.check_new(op, id);
     const GeometryId gid(static_cast<std::uint32_t>(m_geometries.size()));
     const std::uint32_t index = m_blases.add(join, gid, desc, id);
     m_geometries.add(op, std::move(id), Geometry{std::move(desc), join.blas, index});

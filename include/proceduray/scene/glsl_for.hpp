@@ -189,9 +189,10 @@ inline std::string hit_declarations(const Scene& scene, const Plan& plan, Shader
   return out;
 }
 
-/// The declarations of `shader` as `stage` (see the top of this header); used by compile().
-inline std::string declarations_for(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
-  std::string out = common_declarations(scene, plan);
+/// What `shader` as `stage` gets after the common declarations (see the top of this header);
+/// compile() prepends common_declarations, the same for every stage, computed once.
+inline std::string stage_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
+  std::string out;
   const auto rays = scene.rays().size();
   std::vector<const TypeOps*> payloads, records;
   std::uint32_t location = no_index;

@@ -30,17 +30,10 @@ class Registry {
 
   /// Registers `entity` under `id`; throws DuplicateIdError if `id` is taken. Returns its index.
   std::uint32_t add(std::string_view operation, std::string id, Entity entity) {
-    if (id.empty()) {
-      throw SceneError(std::string(operation) + ": empty " + m_kind + " id; give every " + m_kind +
-                       " a non-empty name");
-    }
+    check_new(operation, id);
     if (2 * (m_names.size() + 1) > m_slots.size()) rehash(std::max<std::size_t>(16, 2 * m_slots.size()));
     const std::uint32_t tag = tag_of(id);
     Slot& slot = m_slots[probe(id, tag)];
-    if (slot.index != empty_slot) {
-      throw DuplicateIdError(std::string(operation) + ": duplicate " + m_kind + " id \"" + id + "\" (already " +
-                             m_kind + " #" + std::to_string(slot.index) + "); choose a unique id");
-    }
     const auto index = static_cast<std::uint32_t>(m_entities.size());
     m_entities.push_back(std::move(entity));
     m_names.push_back(std::move(id));
@@ -48,6 +41,17 @@ class Registry {
     return index;
   }
 
+  /// Throws what add() would for `id`: SceneError when empty, DuplicateIdError when taken. Changes nothing.
+  void check_new(std::string_view operation, std::string_view id) const {
+    if (id.empty()) {
+      throw SceneError(std::string(operation) + ": empty " + m_kind + " id; give every " + m_kind +
+                       " a non-empty name");
+    }
+    if (const std::uint32_t* taken = find_index(id)) {
+      throw DuplicateIdError(std::string(operation) + ": duplicate " + m_kind + " id \"" + std::string(id) +
+                             "\" (already " + m_kind + " #" + std::to_string(*taken) + "); choose a unique id");
+    }
+  }
   /// The entity registered as `id`, or nullptr.
   const Entity* find(std::string_view id) const {
     const std::uint32_t* index = find_index(id);

@@ -72,11 +72,7 @@ class Bindings {
   }
 
   /// The sets, in set-number order (a gap in the numbers is an empty set).
-  std::vector<VkDescriptorSet> sets() const {
-    std::vector<VkDescriptorSet> out;
-    for (const auto& s : m_sets) out.push_back(s->get());
-    return out;
-  }
+  std::span<const VkDescriptorSet> sets() const { return m_handles; }
   /// Their layouts, for the pipeline layout.
   std::vector<VkDescriptorSetLayout> layouts() const {
     std::vector<VkDescriptorSetLayout> out;
@@ -117,6 +113,7 @@ class Bindings {
 
   const Context* m_ctx;
   std::vector<std::unique_ptr<DescriptorSet>> m_sets;  // index = set number
+  std::vector<VkDescriptorSet> m_handles;              // their handles, bound every frame
   std::vector<Uniform> m_uniforms;
   std::vector<Storage> m_storage;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_images;  // (set, binding) of storage images
@@ -152,6 +149,7 @@ inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, c
   // Set numbers in the pipeline layout are positions: a gap gets an empty set.
   for (std::uint32_t s = 0; s <= last_set && !by_set.empty(); ++s) {
     m_sets.push_back(std::make_unique<DescriptorSet>(ctx, by_set[s]));
+    m_handles.push_back(m_sets.back()->get());
   }
   for (const proceduray::Binding& b : desc->bindings) {
     switch (b.kind) {

@@ -178,8 +178,7 @@ inline FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width
                                         const std::function<void(VkCommandBuffer, std::uint32_t)>& stamp) {
   const FrameWork work = m_structures->record(cmd);  // each structure build ends with a barrier for the trace
   m_bindings->upload();
-  const std::vector<VkDescriptorSet> sets = m_bindings->sets();
-  record_trace(*m_ctx, cmd, *m_pipeline, sets, *m_sbt, width, height, m_bindings->push(),
+  record_trace(*m_ctx, cmd, *m_pipeline, m_bindings->sets(), *m_sbt, width, height, m_bindings->push(),
                std::function<void(VkCommandBuffer)>([&](VkCommandBuffer c) { stamp(c, 0); }),
                std::function<void(VkCommandBuffer)>([&](VkCommandBuffer c) { stamp(c, 1); }));
   return work;
