@@ -40,12 +40,12 @@ struct SphereHit {
   glm::vec3 object_normal;
 };
 PROCEDURAY_STRUCT(SphereHit, scalar, object_normal);
-/// Hit record data: the instance's colour.
+/// Hit root arguments: the instance's colour.
 struct HitRecord {
   glm::vec4 albedo;
 };
 PROCEDURAY_STRUCT(HitRecord, scalar, albedo);
-/// Miss record data: the background colour.
+/// Miss root arguments: the background colour.
 struct MissRecord {
   glm::vec4 background;
 };
@@ -60,14 +60,14 @@ inline std::string raygen_declarations() {
          pr::glsl_ray_payload<Interface, Colour>("payload");
 }
 inline std::string miss_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_shader_record<Interface, MissRecord>("record") +
+  return pr::glsl_declarations<Interface>() + pr::glsl_root_arguments<Interface, MissRecord>("arguments") +
          pr::glsl_ray_payload_in<Interface, Colour>("payload");
 }
 inline std::string intersection_declarations() {
   return pr::glsl_declarations<Interface>() + pr::glsl_hit_attribute<Interface, SphereHit>("hit");
 }
 inline std::string closest_hit_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_shader_record<Interface, HitRecord>("record") +
+  return pr::glsl_declarations<Interface>() + pr::glsl_root_arguments<Interface, HitRecord>("arguments") +
          pr::glsl_hit_attribute<Interface, SphereHit>("hit") + pr::glsl_ray_payload_in<Interface, Colour>("payload");
 }
 
@@ -83,7 +83,7 @@ void main() {
 )";
 
 inline const char* const miss_glsl = R"(#version 460
-void main() { payload.rgb = record.background.rgb; }
+void main() { payload.rgb = arguments.background.rgb; }
 )";
 
 inline const char* const intersection_glsl = R"(#version 460
@@ -105,7 +105,7 @@ void main() {
   // Normals take the inverse transpose of the object-to-world transform.
   vec3 n = normalize(transpose(mat3(gl_WorldToObjectEXT)) * hit.object_normal);
   vec3 light = normalize(vec3(0.4, 0.8, 0.6));
-  payload.rgb = record.albedo.rgb * (0.3 + 0.7 * max(dot(n, light), 0.0));
+  payload.rgb = arguments.albedo.rgb * (0.3 + 0.7 * max(dot(n, light), 0.0));
 }
 )";
 
@@ -185,7 +185,7 @@ class HelloSphere {
     std::vector<vk::Instance> out;
     const auto planned = m_plan.instances();
     for (std::uint32_t k = 0; k < planned.size(); ++k) {
-      out.push_back({.blas = &m_blas, .transform = glm::transpose(glm::mat4(planned[k].transform)), .custom_index = k,
+      out.push_back({.blas = &m_blas, .transform = planned[k].transform, .custom_index = k,
                      .sbt_offset = planned[k].sbt_offset});
     }
     return out;

@@ -72,7 +72,7 @@ PROCEDURAY_DEFINE_STRUCT(ProceduralHit, scalar,
     (glm::vec3, normal),                 ///< object space, outward
     (float, steps));                     ///< marching steps taken (0 for Pac-man)
 
-/// Hit record data: one material per object, read by plane.rchit and shade.rchit.
+/// Hit root arguments: one material per object, read by plane.rchit and shade.rchit.
 PROCEDURAY_DEFINE_STRUCT(MaterialRecord, scalar,
     (glm::vec3, albedo),                 ///< base colour
     (float, reflectance),                ///< Schlick F0 of the mirror reflection; 0 = none
@@ -100,7 +100,7 @@ inline constexpr pr::Placement mandelbulb_placement{{1.25f, 1.02f, 0.0f}, 0.95f}
 /// The ground: y = 0, x and z from plane_min to plane_max (world space).
 inline constexpr glm::vec2 plane_min{-12.0f, -10.0f}, plane_max{12.0f, 10.0f};
 
-/// Materials (hit record data) of each object.
+/// Materials (hit root arguments) of each object.
 inline constexpr MaterialRecord plane_material{{0.85f, 0.85f, 0.85f}, 0.15f, {0.3f, 0.3f, 0.35f}, 1.0f, 0.9f, 0.1f, 20.0f,
                                                plane_id};
 inline const std::vector<MaterialRecord> pacman_materials{{{1.0f, 0.8f, 0.1f}, 0.1f, {}, 0.0f, 0.9f, 0.5f, 40.0f, pacman0_id},

@@ -111,7 +111,7 @@ struct ProceduralHit {
 };
 PROCEDURAY_STRUCT(ProceduralHit, scalar, normal, steps);
 
-/// Hit record data (the sample's local root arguments): which primitive, its parameters, its material.
+/// Hit root arguments (the sample's local root arguments): which primitive, its parameters, its material.
 struct PrimitiveRecord {
   glm::vec3 albedo;         ///< base colour
   float reflectance;        ///< Schlick F0; 0 = no reflection

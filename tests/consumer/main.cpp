@@ -17,7 +17,7 @@ struct Colour {
   glm::vec3 rgb;
 };
 PROCEDURAY_STRUCT(Colour, scalar, rgb);
-/// Hit record data: the sphere's colour.
+/// Hit root arguments: the sphere's colour.
 struct HitRecord {
   glm::vec4 colour;
 };
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
         "  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(payload.rgb, 1));\n"
         "}\n";
     const std::string miss = "#version 460\nvoid main() { payload.rgb = vec3(0); }\n";
-    const std::string hit = "#version 460\nvoid main() { payload.rgb = record.colour.rgb; }\n";
+    const std::string hit = "#version 460\nvoid main() { payload.rgb = arguments.colour.rgb; }\n";
     const std::string isect = "#version 460\n#include \"primitives/sphere.glsl\"\n"
         "void main() { float a, b; if (ray_sphere(gl_ObjectRayOriginEXT, gl_ObjectRayDirectionEXT, vec3(0), 1.0, a, b))"
         " reportIntersectionEXT(a, 0u); }\n";
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     const auto m = add(vk::ShaderStage::miss, miss, pr::glsl_ray_payload_in<Interface, Colour>("payload"));
     const auto h = add(vk::ShaderStage::closest_hit, hit,
                        pr::glsl_ray_payload_in<Interface, Colour>("payload") +
-                           pr::glsl_shader_record<Interface, HitRecord>("record"));
+                           pr::glsl_root_arguments<Interface, HitRecord>("arguments"));
     const auto i = add(vk::ShaderStage::intersection, isect, "");
     desc.groups = {vk::ShaderGroup::general_shader(r), vk::ShaderGroup::general_shader(m),
                    vk::ShaderGroup::procedural(h, i)};
@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
                                        {{{1, 0}, {1, 0}, {1, std::uint32_t{sizeof(HitRecord)}}, {}}});
     const vk::RecordWrite records[] = {{pr::SbtRegionKind::raygen, 0, 0},
                                        {pr::SbtRegionKind::miss, 0, 1},
-                                       {pr::SbtRegionKind::hit, 0, 2, Interface::record_data(green)}};
+                                       {pr::SbtRegionKind::hit, 0, 2, Interface::root_arguments(green)}};
     const vk::SbtBuffer sbt(ctx, pipeline, layout, records);
     vk::trace(ctx, pipeline, set, sbt, 64, 64);
     const auto rgba = image.read();

@@ -14,7 +14,7 @@ Diagnostics point at the header's or README's own lines (#line), so a failure re
 The usage block is the first run of code lines in a header's top comment: lines indented by two or
 more spaces after `//` (`//   code`), with blank `//` lines allowed inside; the first prose line
 (`// text`) after it ends it. Inside a block:
-  - `...` stands for what the reader fills in; it is dropped (so `Args{...}` compiles as `Args{}`,
+  - `...` stands for what the reader fills in; it is dropped (so `Arguments{...}` compiles as `Arguments{}`,
     `f(...)` as `f()`). Write a block so that it still compiles with the dots removed.
   - `#include` lines are moved to the top of the batch; a prelude line `// @skip-include "x.hpp"`
     drops the block's include of a file that exists only in the example (the prelude declares it).
@@ -42,14 +42,15 @@ DOCS = os.path.join(ROOT, 'tests', 'docs')
 BATCHES = {
     'shader': ['include/proceduray/shader/*.hpp'],
     'scene': ['include/proceduray/scene/*.hpp'],
+    'accuracy': ['include/proceduray/accuracy/*.hpp'],
     # scene/ headers whose blocks show the renderer are compiled with vk/ (the scene batch stays pure).
     'vk': ['include/proceduray/vk/*.hpp',
            'include/proceduray/scene/uniform_slot.hpp'],
     'umbrella': ['include/proceduray/*.hpp', 'include/proceduray/image/*.hpp', 'examples/common/*.hpp'],
     'readme': ['README.md'],
 }
-# Batches whose headers must not pull in Vulkan (scene/ and shader/ stay pure): checked in the same compile.
-PURE = {'shader', 'scene'}
+# Batches whose headers must not pull in Vulkan (scene/, shader/ and accuracy/ stay pure): checked in the same compile.
+PURE = {'shader', 'scene', 'accuracy'}
 DECLARATION = re.compile(r'(struct|class|enum|union|using|namespace|template|inline|int main'
                          r'|PROCEDURAY_STRUCT|PROCEDURAY_DEFINE_STRUCT)\b')
 
@@ -177,7 +178,7 @@ def translation_unit(batch):
             head += [f'#line {number} "{name}"', line]
     if batch in PURE:
         head += ['#if defined(VULKAN_CORE_H_) || defined(VULKAN_HPP)',
-                 f'#error "a header of {batch}/ includes a Vulkan header: shader/ and scene/ must stay pure"',
+                 f'#error "a header of {batch}/ includes a Vulkan header: shader/, scene/ and accuracy/ must stay pure"',
                  '#endif']
     return '\n'.join(head + body) + '\n'
 

@@ -33,7 +33,7 @@ using ProceduralHit = SphereHit;
 using Hit = SphereHit;
 struct ProceduralArgs { glm::vec4 albedo; std::uint32_t instance; };
 PROCEDURAY_STRUCT(ProceduralArgs, scalar, albedo, instance);
-using Args = ProceduralArgs;
+using Arguments = ProceduralArgs;
 using TriangleArgs = ProceduralArgs;
 using SkyArgs = BoxRecord;
 struct TintCall { glm::vec3 colour; };

@@ -77,7 +77,7 @@ TEST_CASE("hello sphere colours come from each instance's hit record") {
   const auto bytes = sbt.bytes();
   for (std::uint32_t i = 0; i < 2; ++i) {
     glm::vec4 stored;
-    std::memcpy(&stored, bytes.data() + sbt.layout().data_offset(SbtRegionKind::hit, i), sizeof stored);
+    std::memcpy(&stored, bytes.data() + sbt.layout().arguments_offset(SbtRegionKind::hit, i), sizeof stored);
     CHECK(stored == (i == 0 ? green : white));
   }
 }

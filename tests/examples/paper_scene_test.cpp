@@ -141,9 +141,9 @@ struct ExpectedHit {
   const paper::MaterialRecord* material;
 };
 
-/// Record data of a record as a MaterialRecord (48 bytes), or nothing.
+/// Root arguments of a record as a MaterialRecord (48 bytes), or nothing.
 std::optional<paper::MaterialRecord> material_of(const Plan& plan, const SbtRecord& r) {
-  const auto bytes = plan.record_data(r);
+  const auto bytes = plan.root_arguments(r);
   if (bytes.size() != sizeof(paper::MaterialRecord)) return std::nullopt;
   paper::MaterialRecord m;
   std::memcpy(&m, bytes.data(), sizeof m);
@@ -180,7 +180,7 @@ TEST_CASE("paper scene plan equals the recorded groups records and bytes") {
   CHECK(pipeline.recursion_depth_declared);
   CHECK(pipeline.max_payload_size == sizeof(paper::RadiancePayload));
   CHECK(pipeline.max_attribute_size == sizeof(paper::ProceduralHit));
-  CHECK(pipeline.max_record_data_size == std::array<std::uint32_t, 4>{0, 0, sizeof(paper::MaterialRecord), 0});
+  CHECK(pipeline.max_root_arguments_size == std::array<std::uint32_t, 4>{0, 0, sizeof(paper::MaterialRecord), 0});
 
   // Hit records: the plane's shared block, one block per Pac-man (each has its own material),
   // then the Julia set's and the Mandelbulb's shared blocks; ray-minor inside each block.
@@ -211,7 +211,7 @@ TEST_CASE("paper scene plan equals the recorded groups records and bytes") {
   // Raygen and miss records carry no data; TLAS instances point at their blocks.
   CHECK(plan.records(SbtRegionKind::raygen).size() == 1);
   CHECK(plan.records(SbtRegionKind::miss).size() == 2);
-  CHECK(plan.record_data(plan.records(SbtRegionKind::miss)[0]).empty());
+  CHECK(plan.root_arguments(plan.records(SbtRegionKind::miss)[0]).empty());
   std::vector<std::uint32_t> offsets;
   for (const TlasInstance& i : plan.instances()) offsets.push_back(i.sbt_offset);
   CHECK(offsets == std::vector<std::uint32_t>{0, 2, 4, 6, 8});

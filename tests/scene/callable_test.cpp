@@ -37,7 +37,7 @@ PROCEDURAY_STRUCT(TintArgs, scalar, factor);
 using namespace callable_test;
 
 namespace {
-/// One ray, one triangle, two callables ("tint" with record data, "noise" without).
+/// One ray, one triangle, two callables ("tint" with root arguments, "noise" without).
 struct Fixture {
   Scene scene;
   std::optional<Plan> sbt;
@@ -83,18 +83,18 @@ TEST_CASE("callable records fill the callable region in callable order with thei
   CHECK(plan.groups[records[0].group].name == "tint.rcall");
   CHECK(plan.groups[records[1].group].name == "noise.rcall");
   CHECK(plan.stages[plan.groups[records[1].group].general].stage == ShaderStage::callable);
-  CHECK(plan.max_record_data_size[3] == sizeof(TintArgs));
+  CHECK(plan.max_root_arguments_size[3] == sizeof(TintArgs));
   const SbtLayout layout = sbt.layout(DeviceLimits{});
   const SbtRegion& region = layout.regions[3];
   CHECK(region.count == 2);
   CHECK(region.stride >= layout.properties.handle_size + sizeof(TintArgs));
   CHECK(region.offset >= layout.regions[2].offset + layout.regions[2].size);
-  const auto data = sbt.record_data(records[0]);
+  const auto data = sbt.root_arguments(records[0]);
   REQUIRE(data.size() == sizeof(TintArgs));
   TintArgs back{};
   std::memcpy(&back, data.data(), sizeof back);
   CHECK(back.factor.z == 2.0f);
-  CHECK(sbt.record_data(records[1]).empty());
+  CHECK(sbt.root_arguments(records[1]).empty());
   // The callable groups come after every hit group, so hit group handles keep their order.
   CHECK(records[0].group > sbt.records(SbtRegionKind::hit)[0].group);
 }
@@ -123,7 +123,7 @@ TEST_CASE("glsl_for declares callable data for callers and the callee") {
   CHECK(has(glsl_for(*f.sbt, ShaderStage::miss, "sky.rmiss"), "callableDataEXT TintCall tint_call;"));
   const std::string tint = glsl_for(*f.sbt, ShaderStage::callable, "tint.rcall");
   CHECK(has(tint, "layout(location = 0) callableDataInEXT TintCall call;"));
-  CHECK(has(tint, "layout(shaderRecordEXT, scalar) buffer TintArgsShaderRecord {"));
+  CHECK(has(tint, "layout(shaderRecordEXT, scalar) buffer TintArgsRootArguments {"));
   CHECK_FALSE(has(tint, "callableDataEXT TintCall"));  // its own location is the incoming data
   CHECK(has(tint, "layout(location = 1) callableDataEXT NoiseCall noise_call;"));
   CHECK_FALSE(has(tint, "rayPayload"));  // callables do not trace rays

@@ -18,8 +18,8 @@ using namespace proceduray::test;
 namespace {
 
 // An entry whose arguments type differs from its local signature's does not compile.
-template <class Signature, class Args>
-concept CanAddHit = requires(Scene t, RayId<> r, HitGroupId h, Signature s, Args a, GeometryId g) {
+template <class Signature, class Arguments>
+concept CanAddHit = requires(Scene t, RayId<> r, HitGroupId h, Signature s, Arguments a, GeometryId g) {
   t.add_hit(r, h, s, a, g);
 };
 struct OtherArgs { std::uint32_t x; };
@@ -29,8 +29,8 @@ static_assert(!CanAddHit<LocalSignatureId<ProceduralRootArguments>, TriangleRoot
 static_assert(!CanAddHit<LocalSignatureId<OtherArgs>, std::uint32_t>);
 static_assert(!CanAddHit<LocalSignatureId<>, OtherArgs>);  // an untyped id cannot carry data
 
-template <class Signature, class Args>
-concept CanAddMiss = requires(Scene t, RayId<> r, Signature s, Args a) { t.add_miss(r, s, a); };
+template <class Signature, class Arguments>
+concept CanAddMiss = requires(Scene t, RayId<> r, Signature s, Arguments a) { t.add_miss(r, s, a); };
 static_assert(CanAddMiss<LocalSignatureId<OtherArgs>, OtherArgs>);
 static_assert(!CanAddMiss<LocalSignatureId<OtherArgs>, TriangleRootArguments>);
 
@@ -68,9 +68,9 @@ TEST_CASE("compile report scene resolves every ray geometry and instance") {
       CHECK(r.scene.hit_groups().name(shadow.entry->hit_group) == name + "_Shadow");
       CHECK(radiance.entry->instance == i);
       ProceduralRootArguments args;
-      std::memcpy(&args, r.scene.entries().data().data() + radiance.entry->data_offset, sizeof args);
+      std::memcpy(&args, r.scene.entries().data().data() + radiance.entry->arguments_offset, sizeof args);
       CHECK(args.instance_index == instance_index);
-      CHECK(bytes_equal(sbt.record_data(*radiance.sbt_record), args));
+      CHECK(bytes_equal(sbt.root_arguments(*radiance.sbt_record), args));
       CHECK(radiance.record == sbt.instance_sbt_offset(g, i) + sbt.geometry_index(g) * 2 + 0);
       CHECK(shadow.record == radiance.record + 1);
       // The plan holds its own copy of the entry the scene holds.
@@ -112,7 +112,7 @@ TEST_CASE("compile D3D12 sample 22-record hit table in any insertion order") {
     CHECK(example.record == 5);
     // Every record holds the args of the slot it was bound for, whatever the insertion order.
     for (std::uint32_t slot = 0; slot < 22; ++slot) {
-      const auto data = sbt.record_data(hit[slot]);
+      const auto data = sbt.root_arguments(hit[slot]);
       D3D12RootArguments args;
       REQUIRE(data.size() == sizeof args);
       std::memcpy(&args, data.data(), sizeof args);
@@ -293,9 +293,9 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   }
   // No record is unreachable: the table holds no more than the scene needs.
   CHECK(std::count(reached.begin(), reached.end(), false) == 0);
-  check_layout_invariants(layout, {{{1, sbt.pipeline().max_record_data_size[0]},
-                                    {ray_count, sbt.pipeline().max_record_data_size[1]},
-                                    {static_cast<std::uint32_t>(hit.size()), sbt.pipeline().max_record_data_size[2]},
+  check_layout_invariants(layout, {{{1, sbt.pipeline().max_root_arguments_size[0]},
+                                    {ray_count, sbt.pipeline().max_root_arguments_size[1]},
+                                    {static_cast<std::uint32_t>(hit.size()), sbt.pipeline().max_root_arguments_size[2]},
                                     {}}});
   return checked;
 }

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <type_traits>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
@@ -11,6 +13,23 @@ namespace {
 constexpr float k_nan = std::numeric_limits<float>::quiet_NaN();
 constexpr float k_inf = std::numeric_limits<float>::infinity();
 }  // namespace
+
+// glm converts any matrix into a glm::mat3x4 implicitly, taking a mat4's first three columns: the
+// transform type must not accept a mat4 except through instance_transform(), which transposes.
+static_assert(!std::is_convertible_v<glm::mat4, InstanceTransform>);
+static_assert(!std::is_constructible_v<InstanceTransform, glm::mat4>);
+
+TEST_CASE("geometry instance transforms round-trip through matrix_of") {
+  const glm::mat4 m = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)), 0.7f, glm::vec3(0, 1, 0)),
+                                 glm::vec3(2.0f));
+  const InstanceTransform t = instance_transform(m);
+  const glm::vec4 p(0.3f, -1.0f, 2.0f, 1.0f);
+  // Row r of t dotted with a point is coordinate r of the transformed point.
+  for (int r = 0; r < 3; ++r) CHECK(glm::dot(t[r], p) == doctest::Approx((m * p)[r]).epsilon(1e-6));
+  CHECK(matrix_of(t) == m);
+  CHECK(identity_transform() == instance_transform(glm::mat4(1.0f)));
+  CHECK_FALSE(InstanceTransform{} == identity_transform());
+}
 
 TEST_CASE("geometry instance transforms match VkTransformMatrixKHR rows") {
   const InstanceTransform t = instance_transform(glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)));
@@ -53,7 +72,7 @@ TEST_CASE("geometry non-finite or singular transforms throw") {
   t = identity_transform();
   t[1] = t[0];  // two equal rows
   CHECK_THROWS_AS(validate(t, "t"), InvalidGeometryError);
-  CHECK_THROWS_AS(validate(InstanceTransform(0.0f), "t"), InvalidGeometryError);
+  CHECK_THROWS_AS(validate(InstanceTransform{}, "t"), InvalidGeometryError);
 }
 
 TEST_CASE("geometry one transform rule: relative flatness and an absolute determinant floor") {
@@ -90,6 +109,6 @@ TEST_CASE("geometry descriptions are validated as a whole") {
                        doctest::Contains("index 2 is 3 but there are 3 vertices"), InvalidGeometryError);
   CHECK_THROWS_WITH_AS(validate(GeometryDesc::triangles({{{0, 0, 0}, {k_nan, 0, 0}, {0, 1, 0}}, {0, 1, 2}}), "Mesh", "op"),
                        doctest::Contains("vertex 1"), InvalidGeometryError);
-  CHECK_THROWS_WITH_AS(validate(GeometryDesc::procedural({Aabb{}}, {identity_transform(), InstanceTransform(0.0f)}), "P", "op"),
+  CHECK_THROWS_WITH_AS(validate(GeometryDesc::procedural({Aabb{}}, {identity_transform(), InstanceTransform{}}), "P", "op"),
                        doctest::Contains("instance 1 transform is singular"), InvalidGeometryError);
 }

@@ -124,12 +124,12 @@ TEST_CASE("glsl_for declares payloads by stage") {
   CHECK(has(hit, "layout(location = 1) rayPayloadEXT Shadow shadow_ray;"));  // to trace shadow rays
   CHECK_FALSE(has(hit, "rayPayloadEXT Light"));  // location 0 is the incoming payload
   CHECK(has(hit, "hitAttributeEXT Hit hit;"));
-  CHECK(has(hit, "layout(shaderRecordEXT, scalar) buffer MaterialShaderRecord {"));
+  CHECK(has(hit, "layout(shaderRecordEXT, scalar) buffer MaterialRootArguments {"));
   const std::string isect = f(ShaderStage::intersection, "ball.rint");
   CHECK(has(isect, "hitAttributeEXT Hit hit;"));
   CHECK_FALSE(has(isect, "rayPayload"));
   const std::string floor = f(ShaderStage::closest_hit, "floor.rchit");
-  CHECK(has(floor, "OtherShaderRecord"));
+  CHECK(has(floor, "OtherRootArguments"));
   CHECK_FALSE(has(floor, "hitAttributeEXT"));  // triangles use the built-in barycentrics
 }
 
@@ -144,7 +144,7 @@ TEST_CASE("glsl_for names a shader used with two record types") {
   CHECK_NOTHROW(Fixture()(ShaderStage::intersection, "ball.rint"));
   const Scenes f(Misuse::two_records);
   CHECK_THROWS_WITH_AS(compile(f.scene),
-                       doctest::Contains("compile: shader \"ball.rint\" is used with two record data types, Material and Other"),
+                       doctest::Contains("compile: shader \"ball.rint\" is used with two root arguments types, Material and Other"),
                        SceneError);
 }
 

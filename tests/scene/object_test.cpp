@@ -53,7 +53,7 @@ std::vector<std::string> describe(const Scene& s, const Plan& sbt) {
   std::vector<std::string> out;
   for (const SbtRecord& rec : sbt.records(SbtRegionKind::hit)) {
     Material m{};
-    const auto data = sbt.record_data(rec);
+    const auto data = sbt.root_arguments(rec);
     if (data.size() == sizeof(Material)) std::memcpy(&m, data.data(), sizeof m);
     out.push_back(sbt.pipeline().groups[rec.group].name + " " + s.rays().name(rec.ray) + " " +
                   s.geometries().name(rec.geometry) + " " +

@@ -59,9 +59,9 @@ TEST_CASE("pipeline_plan report scene holds exactly the used stages and groups")
   CHECK(plan.recursion_depth_declared);
   CHECK(plan.max_payload_size == sizeof(RayPayload));
   CHECK(plan.max_attribute_size == sizeof(FractalAttributes));
-  CHECK(plan.max_record_data_size[0] == 0);
-  CHECK(plan.max_record_data_size[1] == 0);
-  CHECK(plan.max_record_data_size[2] == sizeof(ProceduralRootArguments));
+  CHECK(plan.max_root_arguments_size[0] == 0);
+  CHECK(plan.max_root_arguments_size[1] == 0);
+  CHECK(plan.max_root_arguments_size[2] == sizeof(ProceduralRootArguments));
   CHECK(sbt.layout(lavapipe_limits).region(SbtRegionKind::hit).stride == detail::align_up(32 + sizeof(ProceduralRootArguments), 16));
   CHECK(plan.global_signature == r.scene.global_signature_id("Global"));
   CHECK(plan.local_signatures.size() == 2);

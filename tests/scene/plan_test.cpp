@@ -1,6 +1,6 @@
 // Tests for proceduray/scene/plan.hpp: what compile(scene) returns is a value (it outlives its scene,
 // equals its copies and does not follow later changes to the scene); layout(limits) makes the device
-// checks, naming the limit, the value and the device; write() fills handles and record data.
+// checks, naming the limit, the value and the device; write() fills handles and root arguments.
 #include "proceduray/scene/plan.hpp"
 
 #include "proceduray/scene/compile.hpp"
@@ -56,7 +56,7 @@ TEST_CASE("plan is a value that outlives its scene and equals a copy") {
   const Plan plan = plan_of_spheres();
   // Everything it answers comes from the plan itself: the scene was destroyed.
   REQUIRE(plan.records(SbtRegionKind::hit).size() == 1);
-  const auto data = plan.record_data(plan.records(SbtRegionKind::hit)[0]);
+  const auto data = plan.root_arguments(plan.records(SbtRegionKind::hit)[0]);
   REQUIRE(data.size() == sizeof(Tint));
   Tint back{};
   std::memcpy(&back, data.data(), sizeof back);
@@ -68,7 +68,7 @@ TEST_CASE("plan is a value that outlives its scene and equals a copy") {
   CHECK(plan.geometries()[0].name == "sphere");
   CHECK(plan.blases()[0].name == "sphere");
   CHECK(plan.resolve(RayId<>(0), GeometryId(0), 1).record == 0);
-  CHECK(plan.resolve(RayId<>(0), GeometryId(0), 1).entry->data_size == sizeof(Tint));
+  CHECK(plan.resolve(RayId<>(0), GeometryId(0), 1).entry->arguments_size == sizeof(Tint));
   REQUIRE(plan.global_signature() != nullptr);
   CHECK(*plan.global_signature() == default_global_signature());
   CHECK(glsl_for(plan, ShaderStage::closest_hit, "sphere.rchit").find("struct Tint {") != std::string::npos);
@@ -116,7 +116,7 @@ TEST_CASE("plan does not change when the scene changes after compile") {
   CHECK(plan.instances().size() == 2);
   CHECK(plan.pipeline().max_recursion_depth == 1);
   CHECK(plan.pipeline().global_signature == scene.global_signature_id("global"));
-  CHECK(plan.record_data(plan.records(SbtRegionKind::miss)[0]).empty());
+  CHECK(plan.root_arguments(plan.records(SbtRegionKind::miss)[0]).empty());
   // Compiling again sees the changes.
   const Plan after = compile(scene);
   CHECK_FALSE(after == plan);
@@ -125,15 +125,15 @@ TEST_CASE("plan does not change when the scene changes after compile") {
   CHECK(after.instances().size() == 3);
   CHECK(after.pipeline().max_recursion_depth == 5);
   CHECK(after.pipeline().global_signature == scene.global_signature_id("other"));
-  CHECK(after.record_data(after.records(SbtRegionKind::miss)[0]).size() == sizeof(Tint));
+  CHECK(after.root_arguments(after.records(SbtRegionKind::miss)[0]).size() == sizeof(Tint));
 }
 
-TEST_CASE("plan records the global signature and the record data sizes") {
+TEST_CASE("plan records the global signature and the root arguments sizes") {
   const Scene scene = spheres();
   const Plan plan = compile(scene);
   CHECK(plan.records(SbtRegionKind::hit).size() == 1);
   CHECK(plan.pipeline().global_signature == scene.global_signature_id("global"));
-  CHECK(plan.pipeline().max_record_data_size[2] == sizeof(Tint));
+  CHECK(plan.pipeline().max_root_arguments_size[2] == sizeof(Tint));
   const SbtLayout layout = plan.layout(test::lavapipe_limits);
   CHECK(layout.region(SbtRegionKind::hit).count == 1);
   CHECK(layout.region(SbtRegionKind::hit).stride == detail::align_up(32 + sizeof(Tint), 16));
@@ -193,7 +193,7 @@ TEST_CASE("plan layout checks device limits naming the limit the value and the d
   static_assert(!std::is_base_of_v<SceneError, DeviceLimitError>);
 }
 
-TEST_CASE("plan write puts handles and record data at their offsets") {
+TEST_CASE("plan write puts handles and root arguments at their offsets") {
   test::D3D12Scene d;
   test::build_d3d12_scene_in_order(d);
   const Plan sbt = compile(d.scene);
@@ -210,13 +210,13 @@ TEST_CASE("plan write puts handles and record data at their offsets") {
         const std::uint64_t at = layout.record_offset(kind, i);
         CHECK(buffer[at] == std::byte(records[i].group + 1));
         CHECK(buffer[at + h - 1] == std::byte(records[i].group + 1));
-        const auto data = sbt.record_data(records[i]);
-        CHECK(std::equal(data.begin(), data.end(), buffer.begin() + static_cast<std::ptrdiff_t>(layout.data_offset(kind, i))));
+        const auto data = sbt.root_arguments(records[i]);
+        CHECK(std::equal(data.begin(), data.end(), buffer.begin() + static_cast<std::ptrdiff_t>(layout.arguments_offset(kind, i))));
       }
     }
     // Padding is zeroed: the byte after the last hit record's data.
     const auto last = static_cast<std::uint32_t>(sbt.records(SbtRegionKind::hit).size() - 1);
-    const std::uint64_t after = layout.data_offset(SbtRegionKind::hit, last) + sizeof(test::D3D12RootArguments);
+    const std::uint64_t after = layout.arguments_offset(SbtRegionKind::hit, last) + sizeof(test::D3D12RootArguments);
     if (after < layout.size) CHECK(buffer[after] == std::byte{0});
     std::vector<std::byte> small(layout.size - 1);
     CHECK_THROWS_WITH_AS(sbt.write(layout, small, handles), doctest::Contains("Plan::write: buffer has"), UsageError);

@@ -26,7 +26,7 @@ TEST_CASE("sbt_layout lavapipe: handle alignment below handle size") {
   CHECK(l.region(SbtRegionKind::hit).stride == 48);  // 32 + 8 -> multiple of 16, not of 32
   CHECK(l.region(SbtRegionKind::hit).size == 192);
   CHECK(l.size == 288);
-  CHECK(l.data_offset(SbtRegionKind::hit, 3) == 96 + 3 * 48 + 32);
+  CHECK(l.arguments_offset(SbtRegionKind::hit, 3) == 96 + 3 * 48 + 32);
 }
 
 TEST_CASE("sbt_layout h100: stride and regions follow the 32 and 64 alignments") {
@@ -62,7 +62,7 @@ TEST_CASE("sbt_layout random records hold the invariants on every profile") {
       std::array<SbtRegionRecords, 4> in{};
       for (std::uint32_t k = 0; k < 4; ++k) {
         in[k].count = (k == 0 ? 1u : 0u) + rng() % 20;
-        in[k].max_data_size = rng() % 4 == 0 ? 0u : static_cast<std::uint32_t>(rng() % (p.max_stride - p.base_alignment - p.handle_size));
+        in[k].max_arguments_size = rng() % 4 == 0 ? 0u : static_cast<std::uint32_t>(rng() % (p.max_stride - p.base_alignment - p.handle_size));
       }
       const SbtLayout l = layout_sbt(p, in);
       check_layout_invariants(l, in);
@@ -70,7 +70,7 @@ TEST_CASE("sbt_layout random records hold the invariants on every profile") {
   }
 }
 
-TEST_CASE("sbt_layout record data written at data offsets never overlaps another record") {
+TEST_CASE("sbt_layout root arguments written at arguments offsets never overlaps another record") {
   for (const SbtProperties& p : test::all_sbt_profiles()) {
     const std::array<SbtRegionRecords, 4> in{{{2, 12}, {3, 20}, {7, 36}, {2, 4}}};
     const SbtLayout l = layout_sbt(p, in);
@@ -80,7 +80,7 @@ TEST_CASE("sbt_layout record data written at data offsets never overlaps another
       for (std::uint32_t i = 0; i < in[k].count; ++i, ++id) {
         const auto kind = static_cast<SbtRegionKind>(k);
         const std::uint64_t begin = l.record_offset(kind, i);
-        const std::uint64_t end = l.data_offset(kind, i) + in[k].max_data_size;
+        const std::uint64_t end = l.arguments_offset(kind, i) + in[k].max_arguments_size;
         REQUIRE(end <= l.size);
         for (std::uint64_t b = begin; b < end; ++b) {
           CHECK(owner[b] == -1);
@@ -121,7 +121,7 @@ TEST_CASE("sbt_layout record_offset past the region count throws") {
   CHECK(l.record_offset(SbtRegionKind::miss, 1) == 64);
   CHECK_THROWS_WITH_AS(l.record_offset(SbtRegionKind::miss, 2), doctest::Contains("miss record 2 does not exist"),
                        UsageError);
-  CHECK_THROWS_AS(l.data_offset(SbtRegionKind::hit, 0), UsageError);
+  CHECK_THROWS_AS(l.arguments_offset(SbtRegionKind::hit, 0), UsageError);
 }
 
 namespace {

@@ -71,20 +71,20 @@ inline void check_layout_invariants(const SbtLayout& layout, const std::array<Sb
     CHECK(r.offset % p.base_alignment == 0);
     CHECK(r.offset >= end);
     CHECK(r.stride % p.handle_alignment == 0);
-    CHECK(r.stride >= p.handle_size + in[k].max_data_size);
+    CHECK(r.stride >= p.handle_size + in[k].max_arguments_size);
     CHECK(r.stride <= p.max_stride);
     if (k == 0) {
       CHECK(r.stride % p.base_alignment == 0);
-      CHECK(r.stride == detail::align_up(p.handle_size + in[k].max_data_size, p.base_alignment));
+      CHECK(r.stride == detail::align_up(p.handle_size + in[k].max_arguments_size, p.base_alignment));
       CHECK(r.size == r.stride);
     } else {
-      CHECK(r.stride == detail::align_up(p.handle_size + in[k].max_data_size, p.handle_alignment));
+      CHECK(r.stride == detail::align_up(p.handle_size + in[k].max_arguments_size, p.handle_alignment));
       CHECK(r.size == r.stride * r.count);
     }
     for (std::uint32_t i = 0; i < r.count; ++i) {
       const auto kind = static_cast<SbtRegionKind>(k);
       CHECK(layout.record_offset(kind, i) == r.offset + i * r.stride);
-      CHECK(layout.data_offset(kind, i) + in[k].max_data_size <= layout.record_offset(kind, i) + r.stride);
+      CHECK(layout.arguments_offset(kind, i) + in[k].max_arguments_size <= layout.record_offset(kind, i) + r.stride);
     }
     end = r.offset + r.stride * r.count;
   }

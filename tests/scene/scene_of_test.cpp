@@ -20,7 +20,7 @@ struct Material {
   glm::vec4 albedo;
 };
 PROCEDURAY_STRUCT(Material, scalar, albedo);
-struct Huge {  // record data no entry uses
+struct Huge {  // root arguments no entry uses
   glm::mat4 m[4];
 };
 PROCEDURAY_STRUCT(Huge, scalar, m);
@@ -50,8 +50,8 @@ TEST_CASE("SceneOf registers each category's alternatives and compiles as a Scen
   const auto material = scene.add_local_signature<Material>("material");
   // The report's style: the alternative a RootArguments value holds is the record type.
   const pr::LocalSignatureId<> huge = scene.add_local_signature("huge", Interface::RootArgumentsSet(Huge{}));
-  CHECK(scene.local_signature(huge).data_size == sizeof(Huge));
-  CHECK(scene.local_signature(huge).data_type == typeid(Huge));
+  CHECK(scene.local_signature(huge).arguments_size == sizeof(Huge));
+  CHECK(scene.local_signature(huge).arguments_type == typeid(Huge));
   CHECK(scene.local_signature_id<Huge>("huge") == pr::LocalSignatureId<Huge>(huge.index()));
   scene.add_hit_group<Wide>("unused", {.kind = pr::HitGroupKind::procedural, .intersection = "wide.rint"});
   scene.add_raygen("camera.rgen");
@@ -61,7 +61,7 @@ TEST_CASE("SceneOf registers each category's alternatives and compiles as a Scen
   const pr::Plan plan = pr::compile(scene);
   // The maxima come from what the records use, not from every alternative listed (static_assert above).
   CHECK(plan.pipeline().max_payload_size == sizeof(Radiance));
-  CHECK(plan.pipeline().max_record_data_size[2] == sizeof(Material));
+  CHECK(plan.pipeline().max_root_arguments_size[2] == sizeof(Material));
   CHECK(plan.pipeline().max_attribute_size == sizeof(Hit));
   // Unused entities are not planned.
   for (const pr::PlannedGroup& g : plan.pipeline().groups) CHECK(g.name != "unused");

@@ -19,11 +19,11 @@ using namespace proceduray;
 namespace {
 struct TestPayload { float value; };
 struct OtherPayload { std::uint32_t hit; };
-struct Args { std::uint32_t index; };
+struct Arguments { std::uint32_t index; };
 struct TestAttributes { float normal[3]; };
 PROCEDURAY_STRUCT(TestPayload, scalar, value);
 PROCEDURAY_STRUCT(OtherPayload, scalar, hit);
-PROCEDURAY_STRUCT(Args, scalar, index);
+PROCEDURAY_STRUCT(Arguments, scalar, index);
 PROCEDURAY_STRUCT(TestAttributes, scalar, normal);
 TriangleMesh triangle() { return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}; }
 }  // namespace
@@ -36,7 +36,7 @@ TEST_CASE("scene entities register by id and return typed ids") {
   const HitGroupId proc = s.add_hit_group<TestAttributes>("Proc", {.kind = HitGroupKind::procedural, .intersection = "isect"});
   const GeometryId plane = s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
   const GlobalSignatureId global = s.add_global_signature("Global", {.bindings = {{.kind = BindingKind::acceleration_structure}}});
-  const LocalSignatureId<Args> local = s.add_local_signature<Args>("Local");
+  const LocalSignatureId<Arguments> local = s.add_local_signature<Arguments>("Local");
   CHECK(radiance.index() == 0);
   CHECK(shadow.index() == 1);
   CHECK(s.ray_id<TestPayload>("Radiance") == radiance);
@@ -44,12 +44,12 @@ TEST_CASE("scene entities register by id and return typed ids") {
   CHECK(s.hit_group_id("Proc") == proc);
   CHECK(s.geometry_id("Plane") == plane);
   CHECK(s.global_signature_id("Global") == global);
-  CHECK(s.local_signature_id<Args>("Local") == local);
+  CHECK(s.local_signature_id<Arguments>("Local") == local);
   CHECK(s.ray(radiance).payload_size == sizeof(TestPayload));
   CHECK(s.ray("Shadow").desc.miss == "miss_shadow");
   CHECK(s.hit_group(tri).attribute_size == triangle_attribute_size);
   CHECK(s.hit_group(proc).attribute_size == sizeof(TestAttributes));
-  CHECK(s.local_signature(local).data_size == sizeof(Args));
+  CHECK(s.local_signature(local).arguments_size == sizeof(Arguments));
   CHECK(s.global_signature(global).desc.bindings.size() == 1);
   CHECK(s.geometry(plane).desc.kind == GeometryKind::triangles);
 }
@@ -59,7 +59,7 @@ TEST_CASE("scene find returns a pointer or nullptr") {
   s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   s.add_hit_group("Triangle", {});
   s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
-  s.add_local_signature<Args>("Local");
+  s.add_local_signature<Arguments>("Local");
   s.add_global_signature("Global", {});
   REQUIRE(s.find_ray("Radiance") != nullptr);
   CHECK(s.find_ray("Radiance")->desc.miss == "miss");
@@ -82,8 +82,8 @@ TEST_CASE("scene duplicate ids throw naming the id") {
   CHECK_THROWS_WITH_AS(s.add_geometry("Plane", GeometryDesc::triangles(triangle())),
                        doctest::Contains("duplicate geometry id \"Plane\""), DuplicateIdError);
   CHECK(s.blases().size() == 1);  // the failed add left no BLAS behind
-  s.add_local_signature<Args>("Local");
-  CHECK_THROWS_AS(s.add_local_signature<Args>("Local"), DuplicateIdError);
+  s.add_local_signature<Arguments>("Local");
+  CHECK_THROWS_AS(s.add_local_signature<Arguments>("Local"), DuplicateIdError);
   s.add_hit_group("G", {});
   CHECK_THROWS_WITH_AS(s.add_hit_group("G", {}), doctest::Contains("choose a unique id"), DuplicateIdError);
 }
@@ -106,7 +106,7 @@ TEST_CASE("scene unknown ids name the nearest known ids") {
 TEST_CASE("scene typed lookups check the registered type") {
   Scene s;
   s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
-  s.add_local_signature<Args>("Local");
+  s.add_local_signature<Arguments>("Local");
   CHECK_NOTHROW(s.ray_id<TestPayload>("Radiance"));
   CHECK_THROWS_WITH_AS(s.ray_id<OtherPayload>("Radiance"), doctest::Contains("ray \"Radiance\" has payload type"),
                        TypeMismatchError);
@@ -246,7 +246,7 @@ TEST_CASE("scene add_hit: string ids are checked at run time") {
   test::build_report_scene(r);
   Scene& t = r.scene;
   CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", test::TriangleRootArguments{}, "Pacman"),
-                       doctest::Contains("local signature \"Procedural\" has record data type"), TypeMismatchError);
+                       doctest::Contains("local signature \"Procedural\" has root arguments type"), TypeMismatchError);
   CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacmam", "Procedural", test::ProceduralRootArguments{}, "Pacman"),
                        doctest::Contains("unknown hit group id \"Pacmam\"; nearest known ids: \"Pacman\""), UnknownIdError);
   CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", test::ProceduralRootArguments{}, "Pacman", 3),
@@ -256,18 +256,18 @@ TEST_CASE("scene add_hit: string ids are checked at run time") {
   CHECK(t.entries().all().empty());
 }
 
-TEST_CASE("scene entries keep the order they were added in and copies of their record data") {
+TEST_CASE("scene entries keep the order they were added in and copies of their root arguments") {
   Scene s;
   const auto ray = s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   const auto group = s.add_hit_group("Triangle", {.closest_hit = "chit"});
   const auto plane = s.add_geometry("Plane", GeometryDesc::triangles(triangle(), {identity_transform(), identity_transform()}));
-  const auto sig = s.add_local_signature<Args>("Local");
-  s.reserve_entries(4, 3 * sizeof(Args));
-  Args args{7};
+  const auto sig = s.add_local_signature<Arguments>("Local");
+  s.reserve_entries(4, 3 * sizeof(Arguments));
+  Arguments args{7};
   const EntryId hit = s.add_hit(ray, group, sig, args, plane, 1);
   args.index = 8;  // the entry copied the bytes when it was added
-  const EntryId raygen = s.add_raygen("rgen", sig, Args{9});
-  const EntryId miss = s.add_miss(ray, sig, Args{10});
+  const EntryId raygen = s.add_raygen("rgen", sig, Arguments{9});
+  const EntryId miss = s.add_miss(ray, sig, Arguments{10});
   const EntryId wide = s.add_hit(ray, group, plane);
   CHECK(hit.index() == 0);
   CHECK(raygen.index() == 1);
@@ -283,18 +283,18 @@ TEST_CASE("scene entries keep the order they were added in and copies of their r
   CHECK(list.all()[2].region == SbtRegionKind::miss);
   CHECK(list.all()[3].instance == all_instances);
   CHECK(list.all()[3].local_signature == no_index);
-  CHECK(list.data().size() == 3 * sizeof(Args));
-  Args back{};
-  REQUIRE(list.data(list.all()[0]).size() == sizeof(Args));
+  CHECK(list.data().size() == 3 * sizeof(Arguments));
+  Arguments back{};
+  REQUIRE(list.data(list.all()[0]).size() == sizeof(Arguments));
   std::memcpy(&back, list.data(list.all()[0]).data(), sizeof back);
   CHECK(back.index == 7);
   std::memcpy(&back, list.data(list.all()[2]).data(), sizeof back);
   CHECK(back.index == 10);
   CHECK(list.data(list.all()[3]).empty());
   CHECK_THROWS_WITH_AS(s.add_raygen(""), doctest::Contains("Scene::add_raygen: empty raygen shader name"), SceneError);
-  CHECK_THROWS_WITH_AS(s.add_raygen("rgen", LocalSignatureId<Args>(3), Args{}),
+  CHECK_THROWS_WITH_AS(s.add_raygen("rgen", LocalSignatureId<Arguments>(3), Arguments{}),
                        doctest::Contains("Scene::add_raygen: local signature #3 is not registered"), UnknownIdError);
-  CHECK_THROWS_WITH_AS(s.add_hit(ray, group, LocalSignatureId<Args>(3), Args{}, plane),
+  CHECK_THROWS_WITH_AS(s.add_hit(ray, group, LocalSignatureId<Arguments>(3), Arguments{}, plane),
                        doctest::Contains("Scene::add_hit: local signature #3"), UnknownIdError);
   CHECK(list.all().size() == 4);
 }

@@ -22,22 +22,22 @@ struct WithString { std::string s; };
 struct Virtual { virtual ~Virtual() = default; };
 }  // namespace
 
-static_assert(RecordData<Registered>);
+static_assert(RootArgumentsData<Registered>);
 static_assert(PayloadData<Registered>);
 static_assert(AttributeData<SmallHit>);
-static_assert(!RecordData<Unregistered>, "a plain struct without a field list has no checked GLSL twin");
+static_assert(!RootArgumentsData<Unregistered>, "a plain struct without a field list has no checked GLSL twin");
 static_assert(!PayloadData<Unregistered>);
 static_assert(!AttributeData<Unregistered>);
-static_assert(RecordData<LargeHit> && !AttributeData<LargeHit>, "hit attributes are at most 32 bytes");
+static_assert(RootArgumentsData<LargeHit> && !AttributeData<LargeHit>, "hit attributes are at most 32 bytes");
 static_assert(!AttributeData<float>, "a scalar is not a registered struct");
-static_assert(!RecordData<WithString>, "bytes of a std::string mean nothing to a shader");
-static_assert(!RecordData<Virtual>);
-static_assert(!RecordData<Registered*>, "a host pointer is not a device address");
-static_assert(!RecordData<std::vector<int>>);
+static_assert(!RootArgumentsData<WithString>, "bytes of a std::string mean nothing to a shader");
+static_assert(!RootArgumentsData<Virtual>);
+static_assert(!RootArgumentsData<Registered*>, "a host pointer is not a device address");
+static_assert(!RootArgumentsData<std::vector<int>>);
 
 // Everything shader_data.hpp declares is a concept, so the static_asserts above are the test:
 // a concept that accepted a wrong type, or refused a right one, stops this file compiling. What a
-// user sees when an API refuses a type is checked by compile_fail/unregistered_record_data.cpp,
+// user sees when an API refuses a type is checked by compile_fail/unregistered_root_arguments.cpp,
 // unregistered_payload.cpp and oversized_attributes.cpp (each asserts the diagnostic text).
 static_assert(sizeof(SmallHit) == max_hit_attribute_size / 2 && sizeof(LargeHit) > max_hit_attribute_size,
               "the two hit types straddle the 32-byte limit, so the AttributeData asserts test the bound");

@@ -53,9 +53,9 @@ TEST_CASE("empty categories have size zero") {
   CHECK(Bare::types.size() == 1);
 }
 
-TEST_CASE("record data is the bytes of the root arguments") {
+TEST_CASE("root arguments is the bytes of the root arguments") {
   const SphereRecord record{proceduray::DeviceAddress<Sphere>{0x1000}, glm::vec4(0.5f), 3, 0};
-  const auto bytes = Interface::record_data(record);
+  const auto bytes = Interface::root_arguments(record);
   REQUIRE(bytes.size() == sizeof(SphereRecord));
   std::uint32_t count = 0;
   std::memcpy(&count, bytes.data() + offsetof(SphereRecord, count), sizeof(count));

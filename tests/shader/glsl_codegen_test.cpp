@@ -81,15 +81,15 @@ TEST_CASE("payload declarations carry the payload location") {
 
 TEST_CASE("hit attributes and shader records are declared from their types") {
   CHECK(proceduray::glsl_hit_attribute<Interface, SphereHit>("hit") == "hitAttributeEXT SphereHit hit;\n");
-  CHECK(proceduray::glsl_shader_record<Interface, SphereRecord>("record") ==
-        "layout(shaderRecordEXT, scalar) buffer SphereRecordShaderRecord {\n"
+  CHECK(proceduray::glsl_root_arguments<Interface, SphereRecord>("arguments") ==
+        "layout(shaderRecordEXT, scalar) buffer SphereRecordRootArguments {\n"
         "    SphereRef spheres;\n"
         "    vec4 albedo;\n"
         "    uint count;\n"
         "    uint pad;\n"
-        "} record;\n");
-  CHECK(proceduray::glsl_shader_record<Interface, Material430>("material").starts_with(
-      "layout(shaderRecordEXT, std430) buffer Material430ShaderRecord {\n    mat4 transform;\n"));
+        "} arguments;\n");
+  CHECK(proceduray::glsl_root_arguments<Interface, Material430>("material").starts_with(
+      "layout(shaderRecordEXT, std430) buffer Material430RootArguments {\n    mat4 transform;\n"));
 }
 
 TEST_CASE("push constants are declared from their type and rule") {

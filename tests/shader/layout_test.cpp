@@ -242,16 +242,16 @@ TEST_CASE("the shaderRecordEXT block of a closest-hit shader has the C++ offsets
       proceduray::glsl_ray_payload_in<Interface, RadiancePayload>("payload") +
       proceduray::glsl_ray_payload<Interface, ShadowPayload>("shadow") +
       proceduray::glsl_hit_attribute<Interface, SphereHit>("hit") +
-      proceduray::glsl_shader_record<Interface, SphereRecord>("record") +
+      proceduray::glsl_root_arguments<Interface, SphereRecord>("arguments") +
       "void main() {\n"
-      "    payload.color = record.albedo.rgb * hit.normal * record.spheres.data[record.count - 1].radius;\n"
+      "    payload.color = arguments.albedo.rgb * hit.normal * arguments.spheres.data[arguments.count - 1].radius;\n"
       "    shadow.occluded = 0;\n"
       "}\n";
-  const Reflected glsl = reflect(source, EShLangClosestHit, "SphereRecordShaderRecord");
+  const Reflected glsl = reflect(source, EShLangClosestHit, "SphereRecordRootArguments");
   REQUIRE_MESSAGE(glsl.log.empty(), glsl.log);
   Leaves host;
   flatten(type_ops<SphereRecord>, LayoutRule::scalar, true, "", 0, host);
-  // glslang also reflects what the shader reads through the buffer reference: record.spheres.data[i].radius.
+  // glslang also reflects what the shader reads through the buffer reference: arguments.spheres.data[i].radius.
   host[".spheres.radius"] = {offsetof(Sphere, radius), 0};
   REQUIRE(glsl.leaves.size() == host.size());
   for (const auto& [name, leaf] : glsl.leaves) {

@@ -109,7 +109,7 @@ struct Outer140 {
 };
 PROCEDURAY_STRUCT(Outer140, std140, head, inner, tail, pad0, pad1, pad2);
 
-// A small ray-tracing interface: two ray types, record data with an address, one attribute type.
+// A small ray-tracing interface: two ray types, root arguments with an address, one attribute type.
 struct RadiancePayload {
   glm::vec3 color;
   std::uint32_t depth;

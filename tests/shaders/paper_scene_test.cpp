@@ -87,7 +87,7 @@ TEST_CASE("paper types fit the pipeline limits") {
   CHECK(plan.max_payload_size == sizeof(paper::RadiancePayload));
   CHECK(sizeof(paper::RadiancePayload) == 28);  // colour, depth, object id, steps, weight
   CHECK(sizeof(paper::ShadowPayload) == 4);
-  CHECK(plan.max_record_data_size[2] == 48);  // a MaterialRecord per hit record
+  CHECK(plan.max_root_arguments_size[2] == 48);  // a MaterialRecord per hit record
   CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 12 + 4 * 9);  // camera, three vec3+float rows, nine knobs
   // Payload locations are ray indices: radiance 0, shadow 1 (the shaders' radiance_ray, shadow_ray).
   CHECK(paper_scene().ray_id<paper::RadiancePayload>("radiance").index() == 0);
@@ -98,7 +98,7 @@ TEST_CASE("paper types fit the pipeline limits") {
 TEST_CASE("generated declarations carry the uniform block and no hand copies") {
   const std::string decl = declarations("shade.rchit");
   CHECK(decl.find("layout(set = 0, binding = 2, scalar) uniform SceneConstantsUniform {") != std::string::npos);
-  CHECK(decl.find("layout(shaderRecordEXT, scalar) buffer MaterialRecordShaderRecord {") != std::string::npos);
+  CHECK(decl.find("layout(shaderRecordEXT, scalar) buffer MaterialRecordRootArguments {") != std::string::npos);
   CHECK(decl.find("hitAttributeEXT ProceduralHit hit;") != std::string::npos);
   CHECK(decl.find("layout(location = 0) rayPayloadInEXT RadiancePayload payload;") != std::string::npos);
   CHECK(decl.find("layout(location = 1) rayPayloadEXT ShadowPayload shadow;") != std::string::npos);

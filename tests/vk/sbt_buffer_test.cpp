@@ -12,7 +12,7 @@ using namespace proceduray;
 
 namespace {
 
-/// Hit record data: one colour; its shaderRecordEXT block is generated from this struct.
+/// Hit root arguments: one colour; its shaderRecordEXT block is generated from this struct.
 struct ColourRecord {
   glm::vec4 colour;
 };
@@ -25,7 +25,7 @@ constexpr const char* miss =
     "void main() { p = vec4(0); }\n";
 constexpr const char* hit =
     "#version 460\n#extension GL_EXT_ray_tracing : require\nlayout(location = 0) rayPayloadInEXT vec4 p;\n"
-    "void main() { p = record.colour; }\n";
+    "void main() { p = arguments.colour; }\n";
 constexpr const char* isect =
     "#version 460\n#extension GL_EXT_ray_tracing : require\nvoid main() { reportIntersectionEXT(1.0, 0u); }\n";
 
@@ -35,7 +35,7 @@ vk::Pipeline small_pipeline(const vk::Context& ctx) {
   auto add = [&](vk::ShaderStage s, const char* code) {
     std::string declarations;
     if (s == vk::ShaderStage::closest_hit) {
-      declarations = glsl_declarations<Interface>() + glsl_shader_record<Interface, ColourRecord>("record");
+      declarations = glsl_declarations<Interface>() + glsl_root_arguments<Interface, ColourRecord>("arguments");
     }
     return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "sbt_test", .code = code,
                                                 .preamble = std::move(declarations)}));
@@ -58,7 +58,7 @@ TEST_CASE("shader binding table writes handles and data where the layout says") 
   const ColourRecord colours[3] = {{{1, 0, 0, 1}}, {{0, 1, 0, 1}}, {{0, 0, 1, 1}}};
   std::vector<vk::RecordWrite> records{{SbtRegionKind::raygen, 0, 0}, {SbtRegionKind::miss, 0, 1},
                                      {SbtRegionKind::miss, 1, 1}};
-  for (std::uint32_t i = 0; i < 3; ++i) records.push_back({SbtRegionKind::hit, i, 2, Interface::record_data(colours[i])});
+  for (std::uint32_t i = 0; i < 3; ++i) records.push_back({SbtRegionKind::hit, i, 2, Interface::root_arguments(colours[i])});
   const vk::SbtBuffer sbt(t.ctx, pipeline, layout, records);
 
   const auto bytes = sbt.bytes();
@@ -66,7 +66,7 @@ TEST_CASE("shader binding table writes handles and data where the layout says") 
     const auto handle = pipeline.group_handle(r.group);
     CHECK(std::memcmp(bytes.data() + layout.record_offset(r.region, r.index), handle.data(), handle.size()) == 0);
     if (!r.data.empty()) {
-      CHECK(std::memcmp(bytes.data() + layout.data_offset(r.region, r.index), r.data.data(), r.data.size()) == 0);
+      CHECK(std::memcmp(bytes.data() + layout.arguments_offset(r.region, r.index), r.data.data(), r.data.size()) == 0);
     }
   }
   const auto base = t.ctx.sbt_properties().base_alignment;

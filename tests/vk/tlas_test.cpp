@@ -16,10 +16,10 @@ TEST_CASE("build_tlas rejects a missing BLAS and singular or non-finite transfor
   const auto blas = vk::build_blas(t.ctx, {&geometry, 1});
   vk::Instance none{};
   CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&none, 1}), doctest::Contains("has no BLAS"), UsageError);
-  vk::Instance flat{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1, 0, 1))};
+  vk::Instance flat{.blas = &blas, .transform = proceduray::instance_transform(glm::scale(glm::mat4(1), glm::vec3(1, 0, 1)))};
   CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&flat, 1}), doctest::Contains("build_tlas: instance 0 transform is singular"), InvalidGeometryError);
   vk::Instance inf{.blas = &blas};
-  inf.transform[3][0] = std::numeric_limits<float>::infinity();
+  inf.transform[0][3] = std::numeric_limits<float>::infinity();  // row 0, column 3: the x translation
   CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&inf, 1}), doctest::Contains("build_tlas: instance 0 transform has a non-finite element"), InvalidGeometryError);
   vk::Instance big{.blas = &blas, .sbt_offset = 1u << 24};
   CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&big, 1}), doctest::Contains("24 bits"), DeviceLimitError);
@@ -30,12 +30,12 @@ TEST_CASE("build_tlas applies the scene's transform rule: a 1e-11 uniform scale 
   const VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
   const vk::AabbGeometry geometry{{&box, 1}};
   const auto blas = vk::build_blas(t.ctx, {&geometry, 1});
-  const vk::Instance tiny{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1e-11f))};
-  CHECK_FALSE(detail::valid_transform(instance_transform(tiny.transform)));  // the rule Scene::add_geometry applies
+  const vk::Instance tiny{.blas = &blas, .transform = proceduray::instance_transform(glm::scale(glm::mat4(1), glm::vec3(1e-11f)))};
+  CHECK_FALSE(detail::valid_transform(tiny.transform));  // the rule Scene::add_geometry applies
   CHECK_THROWS_WITH_AS(vk::build_tlas(t.ctx, {&tiny, 1}), doctest::Contains("build_tlas: instance 0 transform is singular"),
                        InvalidGeometryError);
-  const vk::Instance small{.blas = &blas, .transform = glm::scale(glm::mat4(1), glm::vec3(1e-3f))};
-  CHECK(detail::valid_transform(instance_transform(small.transform)));
+  const vk::Instance small{.blas = &blas, .transform = proceduray::instance_transform(glm::scale(glm::mat4(1), glm::vec3(1e-3f)))};
+  CHECK(detail::valid_transform(small.transform));
   CHECK_NOTHROW(vk::build_tlas(t.ctx, {&small, 1}));
 }
 
@@ -59,12 +59,12 @@ TEST_CASE("tlas update refuses a TLAS built without allow_update and a changed i
   CHECK(moving.updatable());
   CHECK(moving.instance_count() == 2);
   const VkAccelerationStructureKHR handle = moving.get();
-  instances[0].transform = glm::translate(glm::mat4(1), {3, 0, 0});
+  instances[0].transform = proceduray::instance_transform(glm::translate(glm::mat4(1), {3, 0, 0}));
   moving.update(t.ctx, instances);
   CHECK(moving.get() == handle);  // refitted in place
   CHECK_THROWS_WITH_AS(moving.update(t.ctx, {instances.data(), 1}), doctest::Contains("1 instances given, the TLAS has 2"),
                        UsageError);
-  instances[1].transform = glm::scale(glm::mat4(1), glm::vec3(0));
+  instances[1].transform = proceduray::instance_transform(glm::scale(glm::mat4(1), glm::vec3(0)));
   CHECK_THROWS_WITH_AS(moving.update(t.ctx, instances), doctest::Contains("Tlas::update: instance 1 transform"),
                        InvalidGeometryError);
 }

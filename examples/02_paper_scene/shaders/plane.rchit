@@ -5,13 +5,13 @@
 void main() {
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
   vec3 n = safe_normalize(transpose(mat3(gl_WorldToObjectEXT)) * vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0));
-  vec3 albedo = record.albedo;
-  if (record.checker_size > 0.0) {
-    ivec2 cell = ivec2(floor(vec2(p.x, p.z) / record.checker_size));
-    if (((cell.x + cell.y) & 1) != 0) albedo = record.albedo_alt;
+  vec3 albedo = arguments.albedo;
+  if (arguments.checker_size > 0.0) {
+    ivec2 cell = ivec2(floor(vec2(p.x, p.z) / arguments.checker_size));
+    if (((cell.x + cell.y) & 1) != 0) albedo = arguments.albedo_alt;
   }
   vec3 colour = shade_surface(p, n, albedo, 0.0);
   payload.colour = colour;
-  payload.object_id = record.object_id;
+  payload.object_id = arguments.object_id;
   payload.steps = 0.0;
 }

@@ -10,8 +10,8 @@ void main() {
   // Marched surfaces are found within this threshold (as the intersection shader set it):
   // secondary rays start twice as far out so they do not find the same surface at once.
   float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);
-  vec3 colour = shade_surface(p, n, record.albedo, hit.steps > 0.0 ? 2.0 * threshold : constants.epsilon);
+  vec3 colour = shade_surface(p, n, arguments.albedo, hit.steps > 0.0 ? 2.0 * threshold : constants.epsilon);
   payload.colour = colour;
-  payload.object_id = record.object_id;
+  payload.object_id = arguments.object_id;
   payload.steps = hit.steps;
 }

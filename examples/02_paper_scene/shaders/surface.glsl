@@ -3,7 +3,7 @@
 //
 //   payload.colour = shade_surface(p, n, albedo, offset);
 //
-// Needs the generated `constants`, `record` (MaterialRecord), `payload` (incoming radiance)
+// Needs the generated `constants`, `arguments` (MaterialRecord), `payload` (incoming radiance)
 // and `shadow` (outgoing shadow payload). The reflection is traced with the incoming payload
 // itself (Vulkan allows a rayPayloadInEXT as traceRayEXT's payload; glslang rejects a second
 // payload at location 0), saving and restoring it around the call.
@@ -52,11 +52,11 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float offset) {
   float visible = 1.0;
   if ((constants.flags & flag_shadows) != 0u) visible = dot(n, l) > 0.0 ? light_visibility(origin, l, dist) : 0.0;
   vec3 colour = constants.ambient * albedo +
-                visible * phong(albedo, n, l, v, constants.light_colour, record.diffuse, record.specular, record.shininess);
+                visible * phong(albedo, n, l, v, constants.light_colour, arguments.diffuse, arguments.specular, arguments.shininess);
   uint depth_max = min(constants.max_depth, max_depth_limit);
-  if ((constants.flags & flag_reflections) != 0u && record.reflectance > 0.0 && payload.depth + 1u < depth_max) {
+  if ((constants.flags & flag_reflections) != 0u && arguments.reflectance > 0.0 && payload.depth + 1u < depth_max) {
     // Model no more than the pixel shows: a reflection adding under min_weight is not traced.
-    float f = schlick_fresnel(record.reflectance, dot(n, v));
+    float f = schlick_fresnel(arguments.reflectance, dot(n, v));
     float weight = payload.weight * f;
     if (weight >= constants.min_weight) colour = mix(colour, reflected_colour(origin, reflect(-v, n), weight), f);
   }

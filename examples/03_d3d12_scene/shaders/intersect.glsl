@@ -24,7 +24,7 @@ void intersect_record_primitive() {
   float t;
   vec3 n;
   float steps;
-  if (!d3d12_intersect(record.kind, record.params, record.spin, constants.time, o, d, gl_RayTminEXT, gl_RayTmaxEXT,
+  if (!d3d12_intersect(arguments.kind, arguments.params, arguments.spin, constants.time, o, d, gl_RayTminEXT, gl_RayTmaxEXT,
                        cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps)) {
     // Shadow rays skip closest-hit shaders and must not be occluded: they never report.
     if ((constants.flags & flag_count_misses) != 0u && steps > 0.0 &&

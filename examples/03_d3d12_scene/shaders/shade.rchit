@@ -17,9 +17,9 @@ void main() {
   vec3 n = safe_normalize(transpose(mat3(gl_WorldToObjectEXT)) * hit.normal, -gl_WorldRayDirectionEXT);
   // Marched surfaces are found within this threshold: secondary rays start twice as far out.
   float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);
-  vec3 colour = shade_surface(p, n, record.albedo, record.reflectance, hit.steps > 0.0 ? 2.0 * threshold : 0.0);
+  vec3 colour = shade_surface(p, n, arguments.albedo, arguments.reflectance, hit.steps > 0.0 ? 2.0 * threshold : 0.0);
   payload.nonfinite |= (bad || nonfinite3(colour)) ? 1u : 0u;
   payload.colour = colour;
-  payload.object_id = record.object_id;
+  payload.object_id = arguments.object_id;
   payload.steps = hit.steps;
 }

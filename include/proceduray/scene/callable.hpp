@@ -2,7 +2,7 @@
 //
 //   struct TintCall { glm::vec3 colour; };  PROCEDURAY_STRUCT(TintCall, scalar, colour);
 //   auto tint = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
-//   scene.add_callable_record(tint, tint_signature, TintArgs{...});   // optional record data
+//   scene.add_callable_record(tint, tint_signature, TintArgs{...});   // optional root arguments
 //
 // Callable index = registration order = the callable region's record index = the index a
 // shader passes to executeCallableEXT (glsl_for declares it as `<id>_callable`). The data

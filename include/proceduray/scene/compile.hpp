@@ -222,8 +222,8 @@ inline void PlanBuilder::pipeline() {
     if (ray != no_index) plan.max_payload_size = std::max(plan.max_payload_size, s.ray(RayId<>(ray)).payload_size);
     if (entry_index == no_index) return;
     const Entry& e = entry(entry_index);
-    auto& max = plan.max_record_data_size[static_cast<std::uint32_t>(region)];
-    max = std::max(max, e.data_size);
+    auto& max = plan.max_root_arguments_size[static_cast<std::uint32_t>(region)];
+    max = std::max(max, e.arguments_size);
     if (e.local_signature != no_index) signature_used[e.local_signature] = true;
   };
   for (std::uint32_t i : raygen) {

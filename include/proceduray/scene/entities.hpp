@@ -130,11 +130,11 @@ class Entities {
                                                      GlobalSignature{std::move(desc)}));
   }
 
-  /// Registers a local signature whose records carry Args; throws DuplicateIdError.
-  template <RecordData Args>
-  LocalSignatureId<Args> add_local_signature(std::string id) {
-    return LocalSignatureId<Args>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
-                                                         LocalSignature{sizeof(Args), typeid(Args), &type_ops<Args>}));
+  /// Registers a local signature whose records carry Arguments; throws DuplicateIdError.
+  template <RootArgumentsData Arguments>
+  LocalSignatureId<Arguments> add_local_signature(std::string id) {
+    return LocalSignatureId<Arguments>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
+                                                         LocalSignature{sizeof(Arguments), typeid(Arguments), &type_ops<Arguments>}));
   }
 
   /// The ray registered as `id`, or nullptr.
@@ -166,14 +166,14 @@ class Entities {
     return GlobalSignatureId(m_global_signatures.index_of(id, "Scene::global_signature_id"));
   }
   /// The local signature of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
-  template <class Args = void>
-  LocalSignatureId<Args> local_signature_id(std::string_view id) const {
+  template <class Arguments = void>
+  LocalSignatureId<Arguments> local_signature_id(std::string_view id) const {
     const std::uint32_t index = m_local_signatures.index_of(id, "Scene::local_signature_id");
-    if constexpr (!std::is_void_v<Args>) {
-      check_type(m_local_signatures.entities()[index].data_type, typeid(Args), "Scene::local_signature_id",
-                 "local signature", id, "record data");
+    if constexpr (!std::is_void_v<Arguments>) {
+      check_type(m_local_signatures.entities()[index].arguments_type, typeid(Arguments), "Scene::local_signature_id",
+                 "local signature", id, "root arguments");
     }
-    return LocalSignatureId<Args>(index);
+    return LocalSignatureId<Arguments>(index);
   }
 
   /// The callable of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.

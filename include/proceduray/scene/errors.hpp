@@ -37,7 +37,7 @@ class UnknownIdError : public SceneError {
  public:
   using SceneError::SceneError;
 };
-/// A run-time type check failed (payload or record data type differs from the registered one).
+/// A run-time type check failed (payload or root arguments type differs from the registered one).
 class TypeMismatchError : public SceneError {
  public:
   using SceneError::SceneError;

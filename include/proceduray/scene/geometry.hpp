@@ -18,6 +18,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -56,14 +57,45 @@ struct TriangleMesh {
   std::vector<std::uint32_t> indices;   ///< three per triangle
 };
 
-/// Rows of a 3x4 affine transform: t[r][c] is row r, column c; memory-identical to VkTransformMatrixKHR.
-using InstanceTransform = glm::mat3x4;
+/// An instance's object-to-world transform as Vulkan takes it: the three rows of a 3x4 affine
+/// matrix, t[r][c] = row r, column c, memory-identical to VkTransformMatrixKHR, so the TLAS gets
+/// these bytes as they are. A struct rather than glm::mat3x4: glm converts any matrix into a
+/// mat3x4 implicitly, keeping the first three *columns* of a column-major mat4, which is not its
+/// rows; here a glm::mat4 goes in only through instance_transform(), which transposes.
+struct InstanceTransform {
+  glm::vec4 rows[3]{};  ///< all zero by default (not a valid transform: use identity_transform())
+
+  glm::vec4& operator[](int r) {
+    assert(r >= 0 && r < 3 && "InstanceTransform has rows 0..2: t[row][column]");
+    return rows[r];
+  }
+  const glm::vec4& operator[](int r) const {
+    assert(r >= 0 && r < 3 && "InstanceTransform has rows 0..2: t[row][column]");
+    return rows[r];
+  }
+  friend bool operator==(const InstanceTransform& a, const InstanceTransform& b) {
+    return a.rows[0] == b.rows[0] && a.rows[1] == b.rows[1] && a.rows[2] == b.rows[2];
+  }
+};
+static_assert(sizeof(InstanceTransform) == 12 * sizeof(float), "InstanceTransform must be VkTransformMatrixKHR's 48 bytes");
+
+/// Converts a column-major glm::mat4 (affine: its last row is dropped) to an InstanceTransform.
+inline InstanceTransform instance_transform(const glm::mat4& m) {
+  InstanceTransform t;
+  for (int r = 0; r < 3; ++r) t[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
+  return t;
+}
 
 /// The identity instance transform.
-inline InstanceTransform identity_transform() { return InstanceTransform(glm::transpose(glm::mat4(1.0f))); }
+inline InstanceTransform identity_transform() { return instance_transform(glm::mat4(1.0f)); }
 
-/// Converts a column-major glm::mat4 (affine) to an InstanceTransform.
-inline InstanceTransform instance_transform(const glm::mat4& m) { return InstanceTransform(glm::transpose(m)); }
+/// The affine glm::mat4 of an InstanceTransform (last row (0, 0, 0, 1)), e.g. to transform points.
+inline glm::mat4 matrix_of(const InstanceTransform& t) {
+  glm::mat4 m(1.0f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];
+  return m;
+}
 
 /// What the user declares for a geometry.
 struct GeometryDesc {

@@ -17,13 +17,13 @@
 //   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of,
 //                 and the callables' data
 //   closest hit   `rayPayloadInEXT <Payload> payload` of the rays whose records use it, the
-//                 group's `hitAttributeEXT <Attributes> hit`, the entries' `record` block,
+//                 group's `hitAttributeEXT <Attributes> hit`, the entries' `arguments` block (root arguments),
 //                 `rayPayloadEXT` for the other ray types (to trace shadow rays, say), and the
 //                 callables' data
 //   any hit       as closest hit, without outgoing payloads or callable data
-//   intersection  `hitAttributeEXT <Attributes> hit` and the entries' `record` block
+//   intersection  `hitAttributeEXT <Attributes> hit` and the entries' `arguments` block (root arguments)
 //   callable      `callableDataInEXT <Data> call` of the callables it implements, their
-//                 `record` block, and the other callables' data
+//                 `arguments` block (root arguments), and the other callables' data
 // compile() throws SceneError when one shader is used in ways that need two different types
 // (two payloads, attributes or record types), naming them: split the shader or unify the types.
 // Every block comes from shader/glsl_codegen.hpp, the one GLSL emitter.
@@ -100,7 +100,7 @@ inline std::string common_declarations(const Scene& scene, const Plan& plan) {
   };
   for (const Ray& r : scene.rays().entities()) add_root(r.payload_glsl);
   for (const HitGroup& g : scene.hit_groups().entities()) add_root(g.attribute_glsl);
-  for (const LocalSignature& l : scene.local_signatures().entities()) add_root(l.data_glsl);
+  for (const LocalSignature& l : scene.local_signatures().entities()) add_root(l.arguments_glsl);
   for (const Callable& c : scene.callables().entities()) add_root(c.data_glsl);
   const GlobalSignatureDesc* global = plan.global_signature();
   if (global != nullptr) {
@@ -133,8 +133,8 @@ inline std::string common_declarations(const Scene& scene, const Plan& plan) {
 
 /// The record block of a shader whose records carry `types` (one type, or none).
 inline std::string record_block(const std::vector<const TypeOps*>& types, std::string_view shader) {
-  const TypeOps* t = one_type(types, shader, "record data");
-  return t == nullptr ? std::string() : glsl_shader_record(*t, "record");
+  const TypeOps* t = one_type(types, shader, "root arguments");
+  return t == nullptr ? std::string() : glsl_root_arguments(*t, "arguments");
 }
 
 /// Outgoing callable data of every callable but `skip` (the one a callable shader receives).
@@ -148,11 +148,11 @@ inline std::string callable_data(const Scene& scene, std::uint32_t skip) {
   return text;
 }
 
-/// The record data type of a record, or nullptr.
-inline const TypeOps* data_type(const Scene& scene, const Plan& plan, const SbtRecord& record) {
+/// The root arguments type of a record, or nullptr.
+inline const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const SbtRecord& record) {
   const Entry* e = plan.entry(record);
   if (e == nullptr || e->local_signature == no_index) return nullptr;
-  return scene.local_signature(LocalSignatureId<>(e->local_signature)).data_glsl;
+  return scene.local_signature(LocalSignatureId<>(e->local_signature)).arguments_glsl;
 }
 
 /// Payload, attributes, record and outgoing payloads of a hit-group stage.
@@ -167,7 +167,7 @@ inline std::string hit_declarations(const Scene& scene, const Plan& plan, Shader
                                                                 : group.desc.intersection;
     if (uses != shader) continue;
     attributes.push_back(group.attribute_glsl);
-    records.push_back(data_type(scene, plan, rec));
+    records.push_back(arguments_type(scene, plan, rec));
     payloads.push_back(scene.ray(RayId<>(rec.ray)).payload_glsl);
     location = std::min(location, rec.ray);
   }
@@ -202,14 +202,14 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
         out += glsl_ray_payload(r, *scene.ray(RayId<>(r)).payload_glsl, glsl_identifier(scene.rays().name(r)));
       }
       for (const SbtRecord& rec : plan.records(SbtRegionKind::raygen)) {
-        if (plan.pipeline().groups[rec.group].name == shader) records.push_back(data_type(scene, plan, rec));
+        if (plan.pipeline().groups[rec.group].name == shader) records.push_back(arguments_type(scene, plan, rec));
       }
       return out + record_block(records, shader) + callable_data(scene, no_index);
     case ShaderStage::miss:
       for (const SbtRecord& rec : plan.records(SbtRegionKind::miss)) {
         if (scene.ray(RayId<>(rec.ray)).desc.miss != shader) continue;
         payloads.push_back(scene.ray(RayId<>(rec.ray)).payload_glsl);
-        records.push_back(data_type(scene, plan, rec));
+        records.push_back(arguments_type(scene, plan, rec));
         location = std::min(location, rec.ray);
       }
       if (const TypeOps* p = one_type(payloads, shader, "payload"); p != nullptr) {
@@ -224,7 +224,7 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
       for (std::uint32_t c = 0; c < list.size(); ++c) {
         if (scene.callable(CallableId<>(c)).desc.shader != shader) continue;
         payloads.push_back(scene.callable(CallableId<>(c)).data_glsl);
-        records.push_back(data_type(scene, plan, list[c]));
+        records.push_back(arguments_type(scene, plan, list[c]));
         location = std::min(location, c);
       }
       if (const TypeOps* d = one_type(payloads, shader, "callable data"); d != nullptr) {

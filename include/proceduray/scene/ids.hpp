@@ -3,7 +3,7 @@
 //
 //   proceduray::RayId<RayPayload> radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss"});
 //   proceduray::RayId<> any_ray = radiance;          // typed ids convert to untyped ones
-//   proceduray::LocalSignatureId<Args> sig = scene.add_local_signature<Args>("Procedural");
+//   proceduray::LocalSignatureId<Arguments> sig = scene.add_local_signature<Arguments>("Procedural");
 //
 // Ids are never raw integers: a GeometryId does not convert to a HitGroupId.
 #pragma once
@@ -59,9 +59,9 @@ using HitGroupId = Id<HitGroupTag>;
 using GeometryId = Id<GeometryTag>;
 /// A global signature (descriptor set layouts + push constants).
 using GlobalSignatureId = Id<GlobalSignatureTag>;
-/// A local signature; Args is its record data type (void: untyped).
-template <class Args = void>
-using LocalSignatureId = Id<LocalSignatureTag, Args>;
+/// A local signature; Arguments is its root arguments type (void: untyped).
+template <class Arguments = void>
+using LocalSignatureId = Id<LocalSignatureTag, Arguments>;
 /// A callable shader; Data is the type it is called with (void: untyped).
 template <class Data = void>
 using CallableId = Id<CallableTag, Data>;

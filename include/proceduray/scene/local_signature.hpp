@@ -1,11 +1,11 @@
-// A local signature: the type of the record data (shaderRecordEXT block) its entries carry
+// A local signature: the type of the root arguments (shaderRecordEXT block) its entries carry
 // (DXR's local root signature + root arguments type).
 //
 //   struct ProceduralArgs { glm::vec4 albedo; std::uint32_t instance; };
-//   PROCEDURAY_STRUCT(ProceduralArgs, scalar, albedo, instance);   // record data is a registered struct
+//   PROCEDURAY_STRUCT(ProceduralArgs, scalar, albedo, instance);   // root arguments is a registered struct
 //   proceduray::LocalSignatureId<ProceduralArgs> sig =
 //       scene.add_local_signature<ProceduralArgs>("Procedural");
-//   scene.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Args must match
+//   scene.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Arguments must match
 #pragma once
 
 #include <cstdint>
@@ -19,9 +19,9 @@ namespace proceduray {
 
 /// A registered local signature.
 struct LocalSignature {
-  std::uint32_t data_size = 0;                  ///< sizeof(Args): bytes after the handle in each record
-  std::type_index data_type = typeid(void);     ///< Args, for run-time checks of string lookups
-  const TypeOps* data_glsl = nullptr;           ///< Args' GLSL description (shader layer)
+  std::uint32_t arguments_size = 0;                  ///< sizeof(Arguments): bytes after the handle in each record
+  std::type_index arguments_type = typeid(void);     ///< Arguments, for run-time checks of string lookups
+  const TypeOps* arguments_glsl = nullptr;           ///< Arguments' GLSL description (shader layer)
 };
 
 }  // namespace proceduray

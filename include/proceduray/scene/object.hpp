@@ -135,9 +135,9 @@ std::pair<GeometryId, std::vector<HitGroupId>> register_object(AnyScene& scene, 
 /// instance) under `signature`; Attributes is what its intersection shader reports (void for
 /// triangles). Throws SceneError and its subclasses, naming the object, before changing anything.
 /// On a SceneOf<Interface>, Attributes must be in the interface's Attributes<...> (else it does not compile).
-template <class Attributes = void, std::derived_from<Scene> AnyScene, RecordData Args>
-GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc, LocalSignatureId<Args> signature,
-                      std::type_identity_t<std::vector<Args>> records) {
+template <class Attributes = void, std::derived_from<Scene> AnyScene, RootArgumentsData Arguments>
+GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc, LocalSignatureId<Arguments> signature,
+                      std::type_identity_t<std::vector<Arguments>> records) {
   if (records.empty()) {
     throw SceneError("add_object: object \"" + id + "\" has a local signature but no record; give one record for "
                      "all instances, or one per instance (or call add_object without a signature)");

@@ -1,6 +1,6 @@
 // The pipeline plan: what a ray-tracing pipeline needs, derived by compile(scene): the shader
 // stages and groups records actually reference (each stage with its GLSL declarations), the
-// recursion depth the scene declares, and the largest payload, hit attributes and record data
+// recursion depth the scene declares, and the largest payload, hit attributes and root arguments
 // of what the records use.
 //
 //   const proceduray::PipelinePlan& pipeline = proceduray::compile(scene).pipeline();
@@ -57,7 +57,7 @@ struct PipelinePlan {
   bool recursion_depth_declared = false;
   std::uint32_t max_payload_size = 0;             ///< largest payload of a ray type records use (bytes)
   std::uint32_t max_attribute_size = 0;           ///< largest hit attributes of a used hit group (bytes)
-  std::array<std::uint32_t, 4> max_record_data_size{};  ///< per region (SbtRegionKind order), bytes after the handle
+  std::array<std::uint32_t, 4> max_root_arguments_size{};  ///< per region (SbtRegionKind order), bytes after the handle
   GlobalSignatureId global_signature;             ///< invalid when none was set
   std::vector<LocalSignatureId<>> local_signatures;  ///< local signatures used by records, in registration order
   friend bool operator==(const PipelinePlan&, const PipelinePlan&) = default;

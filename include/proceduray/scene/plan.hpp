@@ -146,11 +146,11 @@ class Plan {
   }
   /// The entry a record holds, or nullptr.
   const Entry* entry(const SbtRecord& record) const { return record.entry == no_index ? nullptr : &m_entries[record.entry]; }
-  /// The record data bytes of a record (empty when it has none).
-  std::span<const std::byte> record_data(const SbtRecord& record) const {
+  /// The root arguments bytes of a record (empty when it has none).
+  std::span<const std::byte> root_arguments(const SbtRecord& record) const {
     const Entry* e = entry(record);
-    if (e == nullptr || e->data_size == 0) return {};
-    return std::span<const std::byte>(m_data).subspan(e->data_offset, e->data_size);
+    if (e == nullptr || e->arguments_size == 0) return {};
+    return std::span<const std::byte>(m_data).subspan(e->arguments_offset, e->arguments_size);
   }
   /// The GLSL declarations compile() derived for `shader` as `stage`; throws UnknownIdError if
   /// the plan has no such stage.
@@ -161,7 +161,7 @@ class Plan {
   SbtLayout layout(const DeviceLimits& limits) const;
   /// Writes every record into `buffer` (at least layout.size bytes, placed at a multiple of
   /// base_alignment): the handle of its group from `group_handles` (handle_size bytes per
-  /// planned group), then its record data. Padding and null handles are zeroed.
+  /// planned group), then its root arguments. Padding and null handles are zeroed.
   void write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> group_handles) const;
 
   friend bool operator==(const Plan&, const Plan&) = default;
@@ -219,7 +219,7 @@ inline SbtLayout Plan::layout(const DeviceLimits& limits) const {
   }
   std::array<SbtRegionRecords, 4> counts;
   for (std::uint32_t k = 0; k < 4; ++k) {
-    counts[k] = {static_cast<std::uint32_t>(m_records[k].size()), m_pipeline.max_record_data_size[k]};
+    counts[k] = {static_cast<std::uint32_t>(m_records[k].size()), m_pipeline.max_root_arguments_size[k]};
   }
   return layout_sbt(limits.sbt, counts);
 }
@@ -244,7 +244,7 @@ inline void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, st
       if (list[i].group != no_index) {
         std::memcpy(buffer.data() + at, handles.data() + std::uint64_t{list[i].group} * handle, handle);
       }
-      const auto data = record_data(list[i]);
+      const auto data = root_arguments(list[i]);
       if (!data.empty()) std::memcpy(buffer.data() + at + handle, data.data(), data.size());
     }
   }

@@ -3,18 +3,18 @@
 //   proceduray::SbtProperties props{.handle_size = 32, .handle_alignment = 16,
 //                                   .base_alignment = 32, .max_stride = 16384};
 //   auto layout = proceduray::layout_sbt(props, {{
-//       {.count = 1, .max_data_size = 0},    // raygen
-//       {.count = 2, .max_data_size = 0},    // miss
-//       {.count = 4, .max_data_size = 16},   // hit
+//       {.count = 1, .max_arguments_size = 0},    // raygen
+//       {.count = 2, .max_arguments_size = 0},    // miss
+//       {.count = 4, .max_arguments_size = 16},   // hit
 //       {}}});                                // callable
-//   layout.data_offset(proceduray::SbtRegionKind::hit, 3);  // where record 3's data goes
+//   layout.arguments_offset(proceduray::SbtRegionKind::hit, 3);  // where record 3's data goes
 //
 // The buffer this describes must itself start at a multiple of base_alignment.
 //
 //   offset 0          base-aligned       base-aligned             base-aligned
 //   | raygen record  | miss 0 | miss 1 | hit 0 | hit 1 | ...     | callable ...
 //   |<- stride ----->|<-stride->        |<-stride->
-//   record = [ group handle (handle_size) | record data (shaderRecordEXT) | pad ]
+//   record = [ group handle (handle_size) | root arguments (shaderRecordEXT) | pad ]
 //   stride = align(handle_size + max data of the region, handle_alignment)
 //   raygen: stride = size = align(handle_size + data, base_alignment) (Vulkan requires size == stride)
 //
@@ -47,10 +47,10 @@ inline const char* to_string(SbtRegionKind kind) {
   return names[static_cast<std::uint32_t>(kind)];
 }
 
-/// What one region holds: its record count and the largest record data (bytes after the handle).
+/// What one region holds: its record count and the largest root arguments (bytes after the handle).
 struct SbtRegionRecords {
   std::uint32_t count = 0;          ///< records in the region; 0 = empty region
-  std::uint32_t max_data_size = 0;  ///< largest shaderRecordEXT block of the region; 0 = handles only
+  std::uint32_t max_arguments_size = 0;  ///< largest shaderRecordEXT block of the region; 0 = handles only
 };
 
 /// One region as vkCmdTraceRaysKHR sees it, offsets relative to the SBT buffer start.
@@ -81,7 +81,7 @@ struct SbtLayout {
   }
 
   /// Byte offset of a record's data (its shaderRecordEXT block), right after the handle.
-  std::uint64_t data_offset(SbtRegionKind kind, std::uint32_t index) const {
+  std::uint64_t arguments_offset(SbtRegionKind kind, std::uint32_t index) const {
     return record_offset(kind, index) + properties.handle_size;
   }
 };
@@ -116,14 +116,14 @@ inline SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegi
     SbtRegion& out = layout.regions[k];
     out.count = in.count;
     if (in.count == 0) continue;
-    const std::uint64_t record = std::uint64_t{props.handle_size} + in.max_data_size;
+    const std::uint64_t record = std::uint64_t{props.handle_size} + in.max_arguments_size;
     out.stride = align_up(record, kind == SbtRegionKind::raygen ? props.base_alignment : props.handle_alignment);
     if (out.stride > props.max_stride) {
       throw DeviceLimitError("layout_sbt: " + std::string(to_string(kind)) + " record stride " +
                              std::to_string(out.stride) + " bytes (handle " + std::to_string(props.handle_size) +
-                             " + data " + std::to_string(in.max_data_size) + ", aligned) exceeds the device's "
+                             " + data " + std::to_string(in.max_arguments_size) + ", aligned) exceeds the device's "
                              "maxShaderGroupStride " + std::to_string(props.max_stride) +
-                             "; move large record data into a buffer and store its device address instead");
+                             "; move large root arguments into a buffer and store its device address instead");
     }
     out.offset = align_up(cursor, props.base_alignment);
     // Vulkan requires the raygen region's size to equal its stride: a trace reads one raygen record.

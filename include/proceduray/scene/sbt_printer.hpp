@@ -5,7 +5,7 @@
 //   std::cout << proceduray::format_sbt(plan, plan.layout(limits));
 //
 // It prints the regions (offset, stride, size, count), every record (region, index, byte
-// offset, group, ray, geometry, instance, data offset and size; instance "*" = the block
+// offset, group, ray, geometry, instance, arguments offset and size; instance "*" = the block
 // shared by instances without their own entries), and the TLAS instances' SBT offsets and masks.
 #pragma once
 
@@ -66,7 +66,7 @@ inline std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::siz
   out += detail::format_table(regions) + '\n';
   auto name_or_dash = [](const std::string& s) { return s.empty() ? std::string("-") : s; };
   std::vector<std::vector<std::string>> records{
-      {"region", "record", "offset", "group", "ray", "geometry", "instance", "data offset", "data bytes"}};
+      {"region", "record", "offset", "group", "ray", "geometry", "instance", "arguments at", "arguments bytes"}};
   for (std::uint32_t k = 0; k < 4; ++k) {
     const auto kind = static_cast<SbtRegionKind>(k);
     const auto list = sbt.records(kind);
@@ -79,7 +79,7 @@ inline std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::siz
            r.ray == no_index ? "-" : name_or_dash(sbt.ray_name(r.ray)),
            r.geometry == no_index ? "-" : sbt.geometries()[r.geometry].name,
            kind != SbtRegionKind::hit ? "-" : (r.instance == no_index ? "*" : std::to_string(r.instance)),
-           std::to_string(layout.data_offset(kind, i)), std::to_string(e ? e->data_size : 0)});
+           std::to_string(layout.arguments_offset(kind, i)), std::to_string(e ? e->arguments_size : 0)});
     }
     if (list.size() > max_records) {
       records.push_back({to_string(kind), "...", "", std::string("(") + std::to_string(list.size() - max_records) + " more)"});

@@ -15,7 +15,7 @@
 //   scene.add_hit(radiance, ball, material, Material{red}, balls, 0);    // instance 0
 //   scene.add_hit(radiance, ball, material, Material{blue}, balls, 1);   // instance 1
 //   scene.add_hit(shadow, occluder, balls);                              // every instance, no data
-//   scene.add_miss(radiance, sky_signature, Sky{...});                   // optional miss record data
+//   scene.add_miss(radiance, sky_signature, Sky{...});                   // optional miss root arguments
 //   scene.set_global_signature({.bindings = {...}});                     // registered as "global"
 //   scene.set_max_recursion_depth(2);                                    // closest hits trace shadow rays
 //
@@ -42,52 +42,52 @@ namespace proceduray {
 /// A scene's entities and entries.
 class Scene : public Entities {
  public:
-  /// Adds a raygen record for `shader`, without record data.
+  /// Adds a raygen record for `shader`, without root arguments.
   EntryId add_raygen(std::string shader) { return add_raygen_entry(std::move(shader), no_index, nullptr, 0); }
   /// Adds a raygen record for `shader` carrying `data` (type fixed by the local signature).
-  template <RecordData Args, class Given>
-    requires ArgumentsMatchSignature<Given, Args>
-  EntryId add_raygen(std::string shader, LocalSignatureId<Args> signature, const Given& data) {
-    return add_raygen_entry(std::move(shader), signature_index(signature, "Scene::add_raygen"), &data, sizeof(Args));
+  template <RootArgumentsData Arguments, class Given>
+    requires ArgumentsMatchSignature<Given, Arguments>
+  EntryId add_raygen(std::string shader, LocalSignatureId<Arguments> signature, const Given& data) {
+    return add_raygen_entry(std::move(shader), signature_index(signature, "Scene::add_raygen"), &data, sizeof(Arguments));
   }
 
-  /// Gives the miss record of `ray` record data; rays without it get a record with none.
-  template <class Payload, RecordData Args, class Given>
-    requires ArgumentsMatchSignature<Given, Args>
-  EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Args> signature, const Given& data) {
+  /// Gives the miss record of `ray` root arguments; rays without it get a record with none.
+  template <class Payload, RootArgumentsData Arguments, class Given>
+    requires ArgumentsMatchSignature<Given, Arguments>
+  EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Arguments> signature, const Given& data) {
     Entry e{.region = SbtRegionKind::miss, .ray = ray.index(), .local_signature = signature_index(signature, "Scene::add_miss")};
-    return add_entry("Scene::add_miss", e, &data, sizeof(Args));
+    return add_entry("Scene::add_miss", e, &data, sizeof(Arguments));
   }
 
-  /// Gives the record of callable `callable` record data; callables without it get a record with none.
-  template <class Data, RecordData Args, class Given>
-    requires ArgumentsMatchSignature<Given, Args>
-  EntryId add_callable_record(CallableId<Data> callable, LocalSignatureId<Args> signature, const Given& data) {
+  /// Gives the record of callable `callable` root arguments; callables without it get a record with none.
+  template <class Data, RootArgumentsData Arguments, class Given>
+    requires ArgumentsMatchSignature<Given, Arguments>
+  EntryId add_callable_record(CallableId<Data> callable, LocalSignatureId<Arguments> signature, const Given& data) {
     Entry e{.region = SbtRegionKind::callable, .local_signature = signature_index(signature, "Scene::add_callable_record"),
             .shader = callable.index()};
-    return add_entry("Scene::add_callable_record", e, &data, sizeof(Args));
+    return add_entry("Scene::add_callable_record", e, &data, sizeof(Arguments));
   }
 
-  /// Binds <ray, hit group> (no record data) to a geometry, or one instance of it.
+  /// Binds <ray, hit group> (no root arguments) to a geometry, or one instance of it.
   template <class Payload>
   EntryId add_hit(RayId<Payload> ray, HitGroupId group, GeometryId geometry, std::uint32_t instance = all_instances) {
     Entry e{.ray = ray.index(), .hit_group = group.index(), .geometry = geometry.index(), .instance = instance};
     return add_entry("Scene::add_hit", e, nullptr, 0);
   }
   /// Binds <ray, hit group, local signature, arguments> to a geometry, or one instance of it.
-  template <class Payload, RecordData Args, class Given>
-    requires ArgumentsMatchSignature<Given, Args>
-  EntryId add_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args,
+  template <class Payload, RootArgumentsData Arguments, class Given>
+    requires ArgumentsMatchSignature<Given, Arguments>
+  EntryId add_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Arguments> signature, const Given& args,
                   GeometryId geometry, std::uint32_t instance = all_instances) {
     Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature_index(signature, "Scene::add_hit"),
             .geometry = geometry.index(), .instance = instance};
-    return add_entry("Scene::add_hit", e, &args, sizeof(Args));
+    return add_entry("Scene::add_hit", e, &args, sizeof(Arguments));
   }
-  /// The same by string ids; throws UnknownIdError, or TypeMismatchError when Args is not the signature's type.
-  template <RecordData Args>
-  EntryId add_hit(std::string_view ray, std::string_view group, std::string_view signature, const Args& args,
+  /// The same by string ids; throws UnknownIdError, or TypeMismatchError when Arguments is not the signature's type.
+  template <RootArgumentsData Arguments>
+  EntryId add_hit(std::string_view ray, std::string_view group, std::string_view signature, const Arguments& args,
                   std::string_view geometry, std::uint32_t instance = all_instances) {
-    return add_hit(ray_id(ray), hit_group_id(group), local_signature_id<Args>(signature), args, geometry_id(geometry),
+    return add_hit(ray_id(ray), hit_group_id(group), local_signature_id<Arguments>(signature), args, geometry_id(geometry),
                    instance);
   }
 
@@ -97,13 +97,13 @@ class Scene : public Entities {
     Entry e{.ray = ray.index(), .hit_group = group.index(), .is_default = true};
     return add_entry("Scene::set_default_hit", e, nullptr, 0);
   }
-  /// The same, with record data.
-  template <class Payload, RecordData Args, class Given>
-    requires ArgumentsMatchSignature<Given, Args>
-  EntryId set_default_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Args> signature, const Given& args) {
+  /// The same, with root arguments.
+  template <class Payload, RootArgumentsData Arguments, class Given>
+    requires ArgumentsMatchSignature<Given, Arguments>
+  EntryId set_default_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Arguments> signature, const Given& args) {
     Entry e{.ray = ray.index(), .hit_group = group.index(),
             .local_signature = signature_index(signature, "Scene::set_default_hit"), .is_default = true};
-    return add_entry("Scene::set_default_hit", e, &args, sizeof(Args));
+    return add_entry("Scene::set_default_hit", e, &args, sizeof(Arguments));
   }
 
   /// Makes a registered global signature the one the pipeline uses; default: none.
@@ -130,9 +130,9 @@ class Scene : public Entities {
   GlobalSignatureId pipeline_global_signature() const { return m_global_signature; }
   /// The declared recursion depth, if any.
   std::optional<std::uint32_t> max_recursion_depth() const { return m_max_recursion_depth; }
-  /// Every entry and its record data.
+  /// Every entry and its root arguments.
   const EntryList& entries() const { return m_entries; }
-  /// Reserves room for `entries` entries and `data_bytes` of record data.
+  /// Reserves room for `entries` entries and `data_bytes` of root arguments.
   void reserve_entries(std::size_t entries, std::size_t data_bytes) { m_entries.reserve(entries, data_bytes); }
 
  private:

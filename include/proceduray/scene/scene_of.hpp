@@ -1,5 +1,5 @@
 // A scene whose types are the alternatives of the user's std::variant categories (the report's
-// shader compatibility layer): a payload, attribute, record data or callable data type that is
+// shader compatibility layer): a payload, attribute, root arguments or callable data type that is
 // not in its category does not compile.
 //
 //   using Interface = proceduray::ShaderInterface<
@@ -13,7 +13,7 @@
 //   auto sky = scene.add_local_signature("sky", Interface::RootArgumentsSet(Material{}));  // the report's style
 //   proceduray::Plan plan = proceduray::compile(scene);   // a SceneOf is a Scene
 //
-// The maxima the pipeline needs (payload, attributes, record data) are derived by compile()
+// The maxima the pipeline needs (payload, attributes, root arguments) are derived by compile()
 // from the alternatives the records actually use, not from every alternative listed.
 #pragma once
 
@@ -51,17 +51,17 @@ class SceneOf : public Scene {
     return Scene::add_hit_group<Attributes>(std::move(id), std::move(desc));
   }
 
-  /// Scene::add_local_signature, for record data in Interface's RootArguments<...>.
-  template <class Args>
-  LocalSignatureId<Args> add_local_signature(std::string id) {
-    static_assert(Interface::RootArgumentsSet::template contains<Args>,
-                  "SceneOf::add_local_signature: the record data type (Args in the instantiation above) is not an "
+  /// Scene::add_local_signature, for root arguments in Interface's RootArguments<...>.
+  template <class Arguments>
+  LocalSignatureId<Arguments> add_local_signature(std::string id) {
+    static_assert(Interface::RootArgumentsSet::template contains<Arguments>,
+                  "SceneOf::add_local_signature: the root arguments type (Arguments in the instantiation above) is not an "
                   "alternative of the interface's RootArguments<...> category; add it there");
-    return Scene::add_local_signature<Args>(std::move(id));
+    return Scene::add_local_signature<Arguments>(std::move(id));
   }
-  /// The report's style: the record data type is the alternative `type` holds.
+  /// The report's style: the root arguments type is the alternative `type` holds.
   LocalSignatureId<> add_local_signature(std::string id, const typename Interface::RootArgumentsSet& type) {
-    return std::visit([&]<class Args>(const Args&) { return LocalSignatureId<>(add_local_signature<Args>(std::move(id))); },
+    return std::visit([&]<class Arguments>(const Arguments&) { return LocalSignatureId<>(add_local_signature<Arguments>(std::move(id))); },
                       static_cast<const typename Interface::RootArgumentsSet::Base&>(type));
   }
 

@@ -1,9 +1,9 @@
 // The one seam between scene/ and the shader compatibility layer (shader/): which C++
-// types may be a ray payload, hit attributes or record data (shaderRecordEXT block).
+// types may be a ray payload, hit attributes or root arguments (shaderRecordEXT block).
 //
-//   struct Args { glm::vec4 color; std::uint32_t instance; };
-//   PROCEDURAY_STRUCT(Args, scalar, color, instance);   // at namespace scope, in Args' namespace
-//   static_assert(proceduray::RecordData<Args>);
+//   struct Arguments { glm::vec4 color; std::uint32_t instance; };
+//   PROCEDURAY_STRUCT(Arguments, scalar, color, instance);   // at namespace scope, in Arguments' namespace
+//   static_assert(proceduray::RootArgumentsData<Arguments>);
 //
 // A type qualifies only when it is registered with PROCEDURAY_STRUCT: then its layout is
 // checked against its GLSL rule and its GLSL declaration is generated from the same list,
@@ -29,8 +29,8 @@ concept PayloadData = ShaderData<T>;
 /// A hit attribute type (hitAttributeEXT, what an intersection shader reports): at most 32 bytes.
 template <class T>
 concept AttributeData = ShaderData<T> && (sizeof(T) <= max_hit_attribute_size);
-/// A record data type: the shaderRecordEXT block after an SBT handle (a RootArguments type).
+/// A root arguments type: the shaderRecordEXT block after an SBT handle (a RootArguments type).
 template <class T>
-concept RecordData = ShaderData<T>;
+concept RootArgumentsData = ShaderData<T>;
 
 }  // namespace proceduray

@@ -8,9 +8,9 @@
 //       proceduray::Attributes<SphereHit>>;                      // hitAttributeEXT, <= 32 bytes
 //   Interface::max_payload_size;                  // max sizeof over the payloads
 //   Interface::max_attribute_size;                // for maxPipelineRayHitAttributeSize
-//   Interface::max_root_arguments_size;           // largest record data, for the SBT stride
+//   Interface::max_root_arguments_size;           // largest root arguments, for the SBT stride
 //   Interface::payload_location<ShadowPayload>(); // 1; a type outside Payload does not compile
-//   Interface::record_data(SphereRecord{...});    // bytes to copy after the group handle
+//   Interface::root_arguments(SphereRecord{...});    // bytes to copy after the group handle
 //   Interface::Payloads p = ShadowPayload{};      // each category is a std::variant of its types
 //
 // Payload, RootArguments and Attributes hold structs registered with PROCEDURAY_STRUCT;
@@ -103,12 +103,12 @@ template <class... Ts>
 struct Payload : Category<CategoryKind::payload, Ts...> {
   using Category<CategoryKind::payload, Ts...>::Category;
 };
-/// Values and device addresses that record data is built from (inline constants, buffers).
+/// Values and device addresses that root arguments is built from (inline constants, buffers).
 template <class... Ts>
 struct RootComponent : Category<CategoryKind::root_component, Ts...> {
   using Category<CategoryKind::root_component, Ts...>::Category;
 };
-/// Record data types: each is one shaderRecordEXT block, written after a group handle in the SBT.
+/// Root arguments types: each is one shaderRecordEXT block, written after a group handle in the SBT.
 template <class... Ts>
 struct RootArguments : Category<CategoryKind::root_arguments, Ts...> {
   using Category<CategoryKind::root_arguments, Ts...>::Category;
@@ -187,7 +187,7 @@ struct ShaderInterface {
  public:
   static constexpr std::size_t max_payload_size = P::max_size;          ///< maxPipelineRayPayloadSize
   static constexpr std::size_t max_attribute_size = H::max_size;        ///< maxPipelineRayHitAttributeSize
-  static constexpr std::size_t max_root_arguments_size = A::max_size;   ///< largest record data (0: none)
+  static constexpr std::size_t max_root_arguments_size = A::max_size;   ///< largest root arguments (0: none)
   /// Every type of the interface, categories in order P, C, A, H (roots for GLSL generation).
   static constexpr auto types = AllTypes::types;
 
@@ -223,11 +223,11 @@ struct ShaderInterface {
                   "category; add it to RootComponent<...>");
     return C::template index_of<T>;
   }
-  /// The bytes of record data `args` (a RootArguments type), to copy right after a group handle.
+  /// The bytes of root arguments `args` (a RootArguments type), to copy right after a group handle.
   template <class T>
-  static std::span<const std::byte, sizeof(T)> record_data(const T& args) {
+  static std::span<const std::byte, sizeof(T)> root_arguments(const T& args) {
     static_assert(A::template contains<T>,
-                  "ShaderInterface::record_data: the type is not in this interface's RootArguments category; "
+                  "ShaderInterface::root_arguments: the type is not in this interface's RootArguments category; "
                   "add it to RootArguments<...>");
     return std::as_bytes(std::span<const T, 1>(&args, 1));
   }

@@ -6,13 +6,13 @@
 //   glsl += proceduray::glsl_ray_payload<Interface, ShadowPayload>("shadow");  // layout(location = 1) rayPayloadEXT ...
 //   glsl += proceduray::glsl_ray_payload_in<Interface, RadiancePayload>("payload");
 //   glsl += proceduray::glsl_hit_attribute<Interface, SphereHit>("hit");      // hitAttributeEXT SphereHit hit;
-//   glsl += proceduray::glsl_shader_record<Interface, SphereRecord>("record"); // layout(shaderRecordEXT, scalar) buffer ...
+//   glsl += proceduray::glsl_root_arguments<Interface, SphereRecord>("arguments"); // layout(shaderRecordEXT, scalar) buffer ...
 //   glsl += proceduray::glsl_push_constant<Camera>("camera");  // layout(push_constant, std430) uniform ...
 //   glsl += proceduray::glsl_uniform<SceneConstants>(0, 2, "constants");  // layout(set = 0, binding = 2, scalar) uniform ...
 //   std::string source = proceduray::insert_after_version(user_shader_text, glsl);
 //
 // A buffer reference for DeviceAddress<T> is named after T: SphereRef for a struct Sphere,
-// Vec3Ref for glm::vec3; its elements are `data[]`, so `record.spheres.data[i].radius`.
+// Vec3Ref for glm::vec3; its elements are `data[]`, so `arguments.spheres.data[i].radius`.
 // Generation throws GlslNameError (a proceduray::UsageError) when two different types would get
 // the same GLSL name.
 #pragma once
@@ -214,9 +214,9 @@ inline std::string glsl_block(const TypeOps& t, LayoutRule rule, std::string_vie
   return "layout(" + std::string(qualifiers) + ", " + std::string(to_string(rule)) + ") buffer " +
          std::string(block_name) + " {\n" + detail::member_lines(t) + "} " + std::string(instance_name) + ";\n";
 }
-/// Record data: `layout(shaderRecordEXT, rule) buffer TShaderRecord {...} name;`.
-inline std::string glsl_shader_record(const TypeOps& t, std::string_view name) {
-  return glsl_block(t, t.rule, "shaderRecordEXT", std::string(t.glsl_name) + "ShaderRecord", name);
+/// Root arguments: `layout(shaderRecordEXT, rule) buffer TRootArguments {...} name;`.
+inline std::string glsl_root_arguments(const TypeOps& t, std::string_view name) {
+  return glsl_block(t, t.rule, "shaderRecordEXT", std::string(t.glsl_name) + "RootArguments", name);
 }
 /// A push-constant block with t's members and rule: `layout(push_constant, rule) uniform TPushConstants {...} name;`.
 inline std::string glsl_push_constant(const TypeOps& t, std::string_view name) {
@@ -254,11 +254,11 @@ std::string glsl_hit_attribute(std::string_view name) {
   static_cast<void>(Interface::template attributes_index<T>());
   return glsl_hit_attribute(type_ops<T>, name);
 }
-/// The record data block of a RootArguments type: `layout(shaderRecordEXT, rule) buffer TShaderRecord {...} name;`.
+/// The root arguments block of a RootArguments type: `layout(shaderRecordEXT, rule) buffer TRootArguments {...} name;`.
 template <class Interface, class T>
-std::string glsl_shader_record(std::string_view name) {
+std::string glsl_root_arguments(std::string_view name) {
   static_cast<void>(Interface::template root_arguments_index<T>());
-  return glsl_shader_record(type_ops<T>, name);
+  return glsl_root_arguments(type_ops<T>, name);
 }
 /// A push-constant block of T (see glsl_push_constant(const TypeOps&, name)).
 template <RegisteredStruct T>

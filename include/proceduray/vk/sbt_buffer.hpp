@@ -1,4 +1,4 @@
-// The SBT buffer: group handles and record data written where layout_sbt says.
+// The SBT buffer: group handles and root arguments written where layout_sbt says.
 //
 //   auto layout = layout_sbt(ctx.sbt_properties(), {{{1, 0}, {1, 0}, {2, sizeof(Colour)}, {}}});
 //   std::vector<proceduray::vk::RecordWrite> records{
@@ -21,10 +21,10 @@
 
 namespace proceduray::vk {
 
-/// The bytes of a trivially copyable value, for record data.
+/// The bytes of a trivially copyable value, for root arguments.
 template <class T>
 std::span<const std::byte> bytes_of(const T& value) {
-  static_assert(std::is_trivially_copyable_v<T>, "bytes_of: record data must be trivially copyable");
+  static_assert(std::is_trivially_copyable_v<T>, "bytes_of: root arguments must be trivially copyable");
   return std::as_bytes(std::span<const T>(&value, 1));
 }
 
@@ -33,7 +33,7 @@ struct RecordWrite {
   SbtRegionKind region = SbtRegionKind::hit;
   std::uint32_t index = 0;  ///< slot within the region
   std::uint32_t group = 0;  ///< pipeline group whose handle heads the record
-  std::span<const std::byte> data{};  ///< shaderRecordEXT bytes; at most the region's max_data_size
+  std::span<const std::byte> data{};  ///< shaderRecordEXT bytes; at most the region's max_arguments_size
 };
 
 /// A host-visible buffer holding the SBT, its start aligned to shaderGroupBaseAlignment.
@@ -116,7 +116,7 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
       throw UsageError("SbtBuffer: " + std::string(to_string(r.region)) + " record " +
                        std::to_string(r.index) + " has " + std::to_string(r.data.size()) +
                        " bytes of data but the layout left room for " + std::to_string(room) +
-                       "; lay the table out with the region's largest record data");
+                       "; lay the table out with the region's largest root arguments");
     }
     if (written[k][r.index]) {
       throw UsageError("SbtBuffer: " + std::string(to_string(r.region)) + " record " +

@@ -92,7 +92,7 @@ class SceneAcceleration {
   /// The TLAS index of (geometry, instance) of a movable geometry; throws InvalidGeometryError or UsageError.
   std::uint32_t movable_instance(GeometryId geometry, std::uint32_t instance, std::string_view op) const;
   /// InvalidGeometryError naming `op`, the geometry and the instance for a non-finite or singular matrix.
-  void check_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& m, std::string_view op) const;
+  void check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t, std::string_view op) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
   void record_refit(VkCommandBuffer cmd, std::uint32_t blas);
@@ -125,11 +125,7 @@ inline SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray
   }
   const auto instances = m_plan->instances();
   for (std::uint32_t k = 0; k < instances.size(); ++k) {
-    const InstanceTransform& t = instances[k].transform;
-    glm::mat4 m(1.0f);
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];  // InstanceTransform holds the rows of the 3x4 matrix
-    m_instances.push_back({.blas = &m_blases[instances[k].blas].get(), .transform = m, .custom_index = k,
+    m_instances.push_back({.blas = &m_blases[instances[k].blas].get(), .transform = instances[k].transform, .custom_index = k,
                            .sbt_offset = instances[k].sbt_offset, .mask = instances[k].mask});
   }
   // Only a scene that changes pays for a refittable TLAS.
@@ -218,9 +214,9 @@ inline std::uint32_t SceneAcceleration::movable_instance(GeometryId geometry, st
   return k;
 }
 
-inline void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
+inline void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t,
                                                std::string_view op) const {
-  detail::check_matrix(m, [&] {
+  detail::check_matrix(t, [&] {
     return std::string(op) + ": geometry \"" + m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
            " transform";
   });
@@ -238,8 +234,13 @@ inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<con
   }
   // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
   // matrix leaves every instance where it was.
-  for (std::uint32_t i = 0; i < blas.instance_count; ++i) check_transform(geometry, i, object_to_world[i], op);
-  for (std::uint32_t i = 0; i < blas.instance_count; ++i) m_instances[blas.first_instance + i].transform = object_to_world[i];
+  // The one conversion of a user's matrix: into Vulkan's rows, kept as they are up to the TLAS.
+  std::vector<InstanceTransform> rows(blas.instance_count);
+  for (std::uint32_t i = 0; i < blas.instance_count; ++i) {
+    rows[i] = instance_transform(object_to_world[i]);
+    check_transform(geometry, i, rows[i], op);
+  }
+  for (std::uint32_t i = 0; i < blas.instance_count; ++i) m_instances[blas.first_instance + i].transform = rows[i];
   m_transforms_dirty = true;
 }
 
@@ -254,8 +255,9 @@ inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t insta
 inline void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
                                              std::string_view op) {
   const std::uint32_t k = movable_instance(geometry, instance, op);
-  check_transform(geometry, instance, object_to_world, op);  // throws
-  m_instances[k].transform = object_to_world;
+  const InstanceTransform rows = instance_transform(object_to_world);  // the one conversion
+  check_transform(geometry, instance, rows, op);                        // throws
+  m_instances[k].transform = rows;
   m_transforms_dirty = true;
 }
 

@@ -5,11 +5,11 @@
 //   const proceduray::vk::AabbGeometry boxes{.boxes = {&box, 1}};
 //   auto blas = proceduray::vk::build_blas(ctx, {&boxes, 1});
 //   std::vector<proceduray::vk::Instance> instances{
-//       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {-1.5f, 0, 0}), .sbt_offset = 0},
-//       {.blas = &blas, .transform = glm::translate(glm::mat4(1), {+1.5f, 0, 0}), .sbt_offset = 1}};
+//       {.blas = &blas, .transform = proceduray::instance_transform(glm::translate(glm::mat4(1), {-1.5f, 0, 0})), .sbt_offset = 0},
+//       {.blas = &blas, .transform = proceduray::instance_transform(glm::translate(glm::mat4(1), {+1.5f, 0, 0})), .sbt_offset = 1}};
 //   auto tlas = proceduray::vk::build_tlas(ctx, instances);                // built and waited for
 //   proceduray::vk::Tlas moving(ctx, instances, {.allow_update = true});
-//   instances[0].transform = moved;  moving.update(ctx, instances);        // refit and wait
+//   instances[0].transform = proceduray::instance_transform(moved);  moving.update(ctx, instances);        // refit and wait
 //   ctx.submit([&](VkCommandBuffer cmd) { moving.record_update(ctx, cmd, instances); });  // or record it
 //
 // Instances are checked by the scene's rules (scene/geometry.hpp): a non-finite or singular
@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string>
 #include <string_view>
@@ -38,7 +39,7 @@ namespace proceduray::vk {
 /// One instance of a BLAS in the TLAS.
 struct Instance {
   const AccelerationStructure* blas = nullptr;  ///< required
-  glm::mat4 transform{1.0f};                    ///< object to world; the last row must be (0, 0, 0, 1)
+  InstanceTransform transform = identity_transform();  ///< object to world, rows as Vulkan takes them (instance_transform(mat4))
   std::uint32_t custom_index = 0;               ///< gl_InstanceCustomIndexEXT, 24 bits
   std::uint32_t sbt_offset = 0;                 ///< instanceShaderBindingTableRecordOffset, 24 bits
   std::uint8_t mask = 0xFF;                     ///< visibility mask tested against the ray's cull mask
@@ -47,12 +48,11 @@ struct Instance {
 
 namespace detail {
 
-/// Throws InvalidGeometryError for a non-finite or singular object-to-world matrix: the scene's
-/// rule (proceduray::detail::check_transform_at), applied in place; `where` is built only on failure.
+/// Throws InvalidGeometryError for a non-finite or singular transform: the scene's rule
+/// (proceduray::detail::check_transform), applied in place; `where` is built only on failure.
 template <class Where>
-void check_matrix(const glm::mat4& m, Where where) {
-  const auto c = proceduray::detail::check_transform_at([&m](int r, int col) { return m[col][r]; });
-  if (c.row >= 0 || c.singular) proceduray::validate(instance_transform(m), where());  // throws
+void check_matrix(const InstanceTransform& t, Where where) {
+  if (!proceduray::detail::valid_transform(t)) proceduray::validate(t, where());  // throws
 }
 
 /// Throws for an instance Vulkan cannot take: no BLAS (UsageError), indices past 24 bits
@@ -78,11 +78,10 @@ inline void pack_instances(std::span<const Instance> instances, std::span<VkAcce
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance& in = instances[i];
     check_instance(in, i, operation);
-    const glm::mat4& m = in.transform;
     VkAccelerationStructureInstanceKHR& out = packed[i];
     out = {};
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) out.transform.matrix[r][c] = m[c][r];  // glm is column-major, Vulkan row-major 3x4
+    static_assert(sizeof(out.transform) == sizeof(in.transform), "InstanceTransform is VkTransformMatrixKHR's layout");
+    std::memcpy(&out.transform, &in.transform, sizeof(out.transform));  // rows as they are: no conversion
     out.instanceCustomIndex = in.custom_index;
     out.mask = in.mask;
     out.instanceShaderBindingTableRecordOffset = in.sbt_offset;

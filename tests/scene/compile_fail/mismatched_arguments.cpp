@@ -1,10 +1,10 @@
-// An entry whose arguments type differs from its local signature's record data type does not compile.
+// An entry whose arguments type differs from its local signature's root arguments type does not compile.
 // expect: no matching function for call to
 // expect: proceduray::Scene::add_hit(
 // expect: required for the satisfaction of
-// expect: ArgumentsMatchSignature<Given, Args>
+// expect: ArgumentsMatchSignature<Given, Arguments>
 // expect: with Given = demo::TriangleArgs
-// expect: Args = demo::ProceduralArgs]
+// expect: Arguments = demo::ProceduralArgs]
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 

@@ -1,5 +1,5 @@
-// Record data that is not an alternative of RootArguments<...> does not compile.
-// expect: SceneOf::add_local_signature: the record data type (Args in the instantiation above) is not an alternative of the interface's RootArguments<...> category
+// Root arguments that is not an alternative of RootArguments<...> does not compile.
+// expect: SceneOf::add_local_signature: the root arguments type (Arguments in the instantiation above) is not an alternative of the interface's RootArguments<...> category
 // expect: Stray
 #include "scene_of_types.hpp"
 

@@ -1,9 +1,9 @@
-// A callable record's data must be registered record data, like every record's.
+// A callable record's data must be registered root arguments, like every record's.
 // expect: no matching function for call to
 // expect: proceduray::Scene::add_callable_record(
 // expect: required for the satisfaction of
-// expect: RecordData<Args>
-// expect: [with Args = demo::TintArgs]
+// expect: RootArgumentsData<Arguments>
+// expect: [with Arguments = demo::TintArgs]
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 

@@ -1,5 +1,5 @@
-// A payload type is not record data: using it as RootArguments does not compile.
-// expect: static assertion failed: ShaderInterface::record_data: the type is not in this interface's RootArguments category
+// A payload type is not root arguments: using it as RootArguments does not compile.
+// expect: static assertion failed: ShaderInterface::root_arguments: the type is not in this interface's RootArguments category
 // expect: [with T = demo::Radiance
 #include <proceduray/shader/categories.hpp>
 #include <proceduray/shader/field_list.hpp>
@@ -16,5 +16,5 @@ struct Record {
 PROCEDURAY_STRUCT(Record, scalar, albedo);
 using Interface = proceduray::ShaderInterface<proceduray::Payload<Radiance>, proceduray::RootComponent<>,
                                               proceduray::RootArguments<Record>, proceduray::Attributes<>>;
-auto bytes = Interface::record_data(Radiance{});
+auto bytes = Interface::root_arguments(Radiance{});
 }  // namespace demo

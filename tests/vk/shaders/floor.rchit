@@ -1,2 +1,2 @@
 #version 460
-void main() { payload.rgb = record.rgb.rgb; }
+void main() { payload.rgb = arguments.rgb.rgb; }

@@ -3,7 +3,7 @@
 // the light hits something on the "casts_shadow" layer: to 0.35 when the hit was opaque, to
 // 0.5 when a cut-out's shadow any-hit accepted it (occluded = 2).
 void main() {
-  tint_call.colour = record.rgb.rgb;
+  tint_call.colour = arguments.rgb.rgb;
   executeCallableEXT(tint_callable, int(tint_callable));
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
   shadow.occluded = 1u;

@@ -1,7 +1,7 @@
-// Record data must come from the shader layer: a struct without PROCEDURAY_STRUCT is not record data.
+// Root arguments must come from the shader layer: a struct without PROCEDURAY_STRUCT is not root arguments.
 // expect: required for the satisfaction of
-// expect: RecordData<Args>
-// expect: [with Args = demo::Material]
+// expect: RootArgumentsData<Arguments>
+// expect: [with Arguments = demo::Material]
 // expect: proceduray_fields(proceduray::detail::TypeTag<T>{})
 #include <proceduray/scene/scene.hpp>
 
