@@ -20,7 +20,7 @@
 //     constants PROCEDURAY_CONST, and no prototypes in C++ (see below).
 //
 // In C++ the includer binds `real` (and real2..4, uint, GLM's names) and chooses the scope.
-// tests/shaders/glsl_cpp.hpp gives both ways:
+// examples/common/glsl_cpp.hpp gives both ways:
 //   namespace mine { using namespace proceduray_glsl_cpp;       // float, as before
 //   #include "primitives/julia.glsl"
 //   }

@@ -1,5 +1,5 @@
 // The searchers of proceduray/accuracy/ground_truth.hpp on the library's own primitives, with
-// the shared GLSL compiled as C++ in double (tests/shaders/glsl_cpp.hpp): the power-8
+// the shared GLSL compiled as C++ in double (examples/common/glsl_cpp.hpp): the power-8
 // Mandelbulb by its escape test (written here, not the shader's distance estimate), and the
 // Pac-man by membership and by a 1-Lipschitz bound, against pacman.glsl's interval CSG.
 #include "proceduray/accuracy/closed_form.hpp"
@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace primitive_reference_test {
 using namespace proceduray_glsl_cpp;

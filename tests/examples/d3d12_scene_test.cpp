@@ -1,6 +1,6 @@
 // examples/03_d3d12_scene: the host checks, the hit table, and every primitive rendered alone
 // through the Renderer against the same GLSL compiled as C++ (coverage, AABB clip, no NaN).
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace d3d12_cpu {
 using namespace proceduray_glsl_cpp;

@@ -3,7 +3,7 @@
 // paper scene's defaults: 8 iterations, 256 steps, step scale 1, threshold 0.5 pixel footprints.
 // Seen: no ray changes class and hits move by at most 3 float spacings, so at this view the
 // threshold, not float, sets the accuracy; the test fails if float marching drifts from that.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace fractal_reference_test {
 using namespace proceduray_glsl_cpp;

@@ -1,5 +1,5 @@
 // Tests for shaders/primitives/julia.glsl, compiled as C++: the quaternion Julia estimate and the cut.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace julia_test {
 using namespace proceduray_glsl_cpp;

@@ -1,5 +1,5 @@
 // Tests for shaders/primitives/mandelbulb.glsl, compiled as C++: the power-8 estimate.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace mandelbulb_test {
 using namespace proceduray_glsl_cpp;

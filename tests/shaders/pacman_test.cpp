@@ -1,5 +1,5 @@
 // Tests for shaders/primitives/pacman.glsl, compiled as C++: interval CSG of sphere minus wedge.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace pacman_test {
 using namespace proceduray_glsl_cpp;

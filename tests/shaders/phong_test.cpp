@@ -1,5 +1,5 @@
 // Tests for shaders/shading/phong.glsl, compiled as C++.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace phong_test {
 using namespace proceduray_glsl_cpp;

@@ -4,7 +4,7 @@
 // t for far and small spheres, where the textbook b^2 - ac form loses the hit or the answer.
 // Sphere tracing: float hit distances of SDF primitives equal the double march at the same knobs
 // within the hit threshold.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 #include <type_traits>
 

@@ -1,5 +1,5 @@
 // Tests for shaders/common/ray.glsl, compiled as C++: the slab clip without infinities.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 namespace ray_test {
 using namespace proceduray_glsl_cpp;

@@ -1,6 +1,6 @@
 // Tests for shaders/marching/sphere_trace.glsl, compiled as C++: hits, misses, exhausted steps,
 // over-relaxation on a thin plate (also at the range's end) and its fallback, tetrahedral normals.
-#include "shaders/glsl_cpp.hpp"
+#include "common/glsl_cpp.hpp"
 
 #include <cmath>
 #include <initializer_list>

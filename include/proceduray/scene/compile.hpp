@@ -191,8 +191,25 @@ struct PlanBuilder {
   }
 
   void pipeline();
+  void outputs();
   void declarations();
 };
+
+/// The outputs' image bindings: set 0, after the highest binding the global signature uses
+/// there (a signature is made when the scene has none).
+inline void PlanBuilder::outputs() {
+  if (s.outputs().empty()) return;
+  if (!out.m_global) out.m_global = GlobalSignatureDesc{};
+  std::uint32_t next = 0;
+  for (const Binding& b : out.m_global->bindings) {
+    if (b.set == 0) next = std::max(next, b.binding + 1);
+  }
+  s.outputs().each([&](Output o) {
+    out.m_outputs.push_back({o, next});
+    out.m_global->bindings.push_back({BindingKind::output_image, next, 0, 1, "", nullptr});
+    ++next;
+  });
+}
 
 /// Stages and groups that records use, the record groups, and the maxima over used entities.
 inline void PlanBuilder::pipeline() {
@@ -201,6 +218,7 @@ inline void PlanBuilder::pipeline() {
   plan.recursion_depth_declared = s.max_recursion_depth().has_value();
   plan.global_signature = s.pipeline_global_signature();
   if (plan.global_signature.valid()) out.m_global = s.global_signature(plan.global_signature).desc;
+  outputs();
   // A stage is shared by every group that names it, except that an intersection shader gets one
   // stage per any-hit shader it is paired with: lavapipe (Mesa 25.0) binds the any-hit of the
   // first group to an intersection stage for every group sharing it.

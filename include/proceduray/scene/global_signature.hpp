@@ -23,11 +23,14 @@
 
 namespace proceduray {
 
-/// What a descriptor binding holds.
-enum class BindingKind : std::uint32_t { acceleration_structure, storage_image, uniform_buffer, storage_buffer };
+/// What a descriptor binding holds. output_image: a per-pixel output's storage image, added by
+/// compile() for Scene::set_outputs (never declared by the user); the renderer binds its own
+/// image there, not the colour image.
+enum class BindingKind : std::uint32_t { acceleration_structure, storage_image, uniform_buffer, storage_buffer, output_image };
 
 inline const char* to_string(BindingKind kind) {
-  constexpr const char* names[] = {"acceleration_structure", "storage_image", "uniform_buffer", "storage_buffer"};
+  constexpr const char* names[] = {"acceleration_structure", "storage_image", "uniform_buffer", "storage_buffer",
+                                   "output_image"};
   return names[static_cast<std::uint32_t>(kind)];
 }
 
@@ -72,6 +75,10 @@ inline void validate(const GlobalSignatureDesc& desc, std::string_view id, std::
   const std::string where = std::string(operation) + ": global signature \"" + std::string(id) + "\"";
   for (std::size_t i = 0; i < desc.bindings.size(); ++i) {
     const Binding& b = desc.bindings[i];
+    if (b.kind == BindingKind::output_image) {
+      throw SceneError(where + " binding " + std::to_string(b.binding) + " is an output_image; outputs get their "
+                       "bindings from compile(): ask for them with Scene::set_outputs");
+    }
     if (b.count == 0) {
       throw SceneError(where + " binding " + std::to_string(b.binding) + " has count 0; use count >= 1");
     }

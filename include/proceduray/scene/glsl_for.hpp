@@ -11,7 +11,9 @@
 //                 `ray_count`; `layer_<name>` per layer; `<id>_callable` per callable; each
 //                 named binding of the global signature (acceleration structure, rgba8 storage
 //                 image, typed uniform, or a readonly storage buffer of T[] read as `<name>.data[i]`),
-//                 and its named push constant block (`<name>.member`)
+//                 and its named push constant block (`<name>.member`); the per-pixel output
+//                 helpers output_t/normal/ids/steps/flags (outputs_glsl.hpp: empty macros for
+//                 outputs not asked for), and output_hit(n) in closest-hit and any-hit stages
 //   raygen        `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index,
 //                 and `callableDataEXT <Data> <id>_call` per callable, at location = its index
 //   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of,
@@ -29,6 +31,7 @@
 // Every block comes from shader/glsl_codegen.hpp, the one GLSL emitter.
 #pragma once
 
+#include "proceduray/scene/outputs_glsl.hpp"
 #include "proceduray/scene/plan.hpp"
 #include "proceduray/scene/scene.hpp"
 #include "proceduray/shader/glsl_codegen.hpp"
@@ -75,6 +78,7 @@ inline std::string binding_glsl(const Binding& b) {
   switch (b.kind) {
     case BindingKind::acceleration_structure: return where + ") uniform accelerationStructureEXT " + name + ";\n";
     case BindingKind::storage_image: return where + ", rgba8) uniform image2D " + name + ";\n";
+    case BindingKind::output_image: return {};  // declared with its format by glsl_outputs
     case BindingKind::uniform_buffer:
     case BindingKind::storage_buffer:
       if (b.type == nullptr) {
@@ -128,7 +132,7 @@ inline std::string common_declarations(const Scene& scene, const Plan& plan) {
     const PushConstantBlock& push = global->push_constants;
     if (push.type != nullptr && !push.name.empty()) out += glsl_push_constant(*push.type, glsl_identifier(push.name));
   }
-  return out;
+  return out + glsl_outputs(plan.outputs());
 }
 
 /// The record block of a shader whose records carry `types` (one type, or none).
@@ -180,6 +184,7 @@ inline std::string hit_declarations(const Scene& scene, const Plan& plan, Shader
   }
   if (const TypeOps* a = one_type(attributes, shader, "hit attribute"); a != nullptr) out += glsl_hit_attribute(*a, "hit");
   out += record_block(records, shader);
+  if (stage != ShaderStage::intersection) out += glsl_output_hit(plan.outputs());
   if (stage == ShaderStage::closest_hit) {
     for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
       if (r != location) out += glsl_ray_payload(r, *scene.ray(RayId<>(r)).payload_glsl, glsl_identifier(scene.rays().name(r)));

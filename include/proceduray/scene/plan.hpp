@@ -34,6 +34,7 @@
 #include "proceduray/scene/errors.hpp"
 #include "proceduray/scene/geometry.hpp"
 #include "proceduray/scene/global_signature.hpp"
+#include "proceduray/scene/outputs.hpp"
 #include "proceduray/scene/ids.hpp"
 #include "proceduray/scene/pipeline_plan.hpp"
 #include "proceduray/scene/sbt_layout.hpp"
@@ -100,6 +101,9 @@ class Plan {
   const PipelinePlan& pipeline() const { return m_pipeline; }
   /// The global signature the pipeline uses, or nullptr.
   const GlobalSignatureDesc* global_signature() const { return m_global ? &*m_global : nullptr; }
+  /// The per-pixel outputs the scene asked for, in Output order, with their bindings in set 0
+  /// (also in global_signature() as BindingKind::output_image).
+  std::span<const PlannedOutput> outputs() const { return m_outputs; }
   /// traceRayEXT's sbtRecordStride: the number of ray types.
   std::uint32_t ray_count() const { return static_cast<std::uint32_t>(m_ray_names.size()); }
   /// A ray type's id.
@@ -177,6 +181,7 @@ class Plan {
   std::vector<std::byte> m_data;
   PipelinePlan m_pipeline;
   std::optional<GlobalSignatureDesc> m_global;
+  std::vector<PlannedOutput> m_outputs;
 };
 
 inline const std::string& Plan::declarations(ShaderStage stage, std::string_view shader) const {

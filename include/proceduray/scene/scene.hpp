@@ -18,6 +18,7 @@
 //   scene.add_miss(radiance, sky_signature, Sky{...});                   // optional miss root arguments
 //   scene.set_global_signature({.bindings = {...}});                     // registered as "global"
 //   scene.set_max_recursion_depth(2);                                    // closest hits trace shadow rays
+//   scene.set_outputs({proceduray::Output::t, proceduray::Output::normal});   // per-pixel images (outputs.hpp)
 //
 // An entry whose arguments type differs from its local signature's does not compile; the
 // string-id overload checks it at run time (TypeMismatchError). The order entries are added
@@ -36,6 +37,7 @@
 #include "proceduray/scene/entities.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/outputs.hpp"
 
 namespace proceduray {
 
@@ -130,6 +132,11 @@ class Scene : public Entities {
   GlobalSignatureId pipeline_global_signature() const { return m_global_signature; }
   /// The declared recursion depth, if any.
   std::optional<std::uint32_t> max_recursion_depth() const { return m_max_recursion_depth; }
+  /// Asks for per-pixel outputs besides colour (outputs.hpp): compile() gives each an image
+  /// binding in set 0 after the global signature's, and every shader the helpers that write it.
+  void set_outputs(OutputSet outputs) { m_outputs = outputs; }
+  /// The outputs asked for (none by default).
+  OutputSet outputs() const { return m_outputs; }
   /// Every entry and its root arguments.
   const EntryList& entries() const { return m_entries; }
   /// Reserves room for `entries` entries and `data_bytes` of root arguments.
@@ -154,6 +161,7 @@ class Scene : public Entities {
   EntryList m_entries;
   GlobalSignatureId m_global_signature;
   std::optional<std::uint32_t> m_max_recursion_depth;
+  OutputSet m_outputs;
 };
 
 inline EntryId Scene::add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size) {

@@ -61,6 +61,8 @@ class Bindings {
   void bind_image(VkImageView view) {
     for (auto [set, binding] : m_images) m_sets[set]->write(binding, view);
   }
+  /// Writes an output's image (Plan::outputs) to its binding in set 0.
+  void bind_output(std::uint32_t binding, VkImageView view) { m_sets.at(0)->write(binding, view); }
   /// Throws UsageError, naming `op`, when a uniform, storage buffer or push constant block was never given.
   void check_ready(std::string_view op) const;
   /// Copies changed uniform values into their buffers.
@@ -142,7 +144,7 @@ inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, c
     }
     static constexpr VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR,
                                                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     by_set[b.set].push_back({b.binding, types[static_cast<std::uint32_t>(b.kind)]});
     last_set = std::max(last_set, b.set);
   }
@@ -157,6 +159,7 @@ inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, c
       case BindingKind::storage_image: m_images.emplace_back(b.set, b.binding); break;
       case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false}); break;
       case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr}); break;
+      case BindingKind::output_image: break;  // the renderer binds each output's image (bind_output)
     }
   }
 }

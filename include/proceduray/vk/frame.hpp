@@ -5,6 +5,7 @@
 //   frame.rgba;          // width * height RGBA8 pixels (empty without readback)
 //   frame.trace_ms;      // GPU time of vkCmdTraceRaysKHR
 //   frame.work == proceduray::vk::FrameWork{.tlas_updates = 1};   // a DynamicTransform frame
+//   frame.outputs.t;     // per-pixel hit distances, when the scene asked for Output::t
 #pragma once
 
 #include <cstdint>
@@ -21,6 +22,16 @@ struct FrameWork {
   friend bool operator==(const FrameWork&, const FrameWork&) = default;
 };
 
+/// Per-pixel outputs read back (scene/outputs.hpp), rows top to bottom; an output the scene did
+/// not ask for is empty.
+struct Outputs {
+  std::vector<float> t;                ///< width * height; -1 where nothing was written
+  std::vector<float> normal;           ///< width * height * 4 (xyz, 0); 0 where nothing was written
+  std::vector<std::uint32_t> ids;      ///< width * height * 4 (instance, geometry, primitive, 0); 0xffffffff: none
+  std::vector<std::uint32_t> steps;    ///< width * height evaluation counts (summed)
+  std::vector<std::uint32_t> flags;    ///< width * height output_flag_* bits (or-ed)
+};
+
 /// One traced frame.
 struct Frame {
   std::uint32_t width = 0;
@@ -30,6 +41,7 @@ struct Frame {
   double host_ms = 0;   ///< host work before submit: uniform uploads, BLAS input and TLAS instance writes, recording
   bool tlas_refit = false;  ///< the frame refit or rebuilt the TLAS (work.tlas_updates + work.tlas_builds > 0)
   FrameWork work;           ///< acceleration-structure work done for this frame
+  Outputs outputs;          ///< per-pixel outputs, when the scene asks for any (with readback)
 };
 
 }  // namespace proceduray::vk

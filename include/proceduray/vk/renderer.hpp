@@ -11,6 +11,7 @@
 //   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
+//   frame.outputs.t;                                  // per-pixel outputs the scene asked for (Scene::set_outputs)
 //   frame.work.blas_builds;                           // what the frame rebuilt: BLAS builds, refits, TLAS work
 //   ctx.submit([&](VkCommandBuffer cmd) { renderer.record(cmd, 1024, 768); });   // or into your own command buffer
 //   renderer.image().read();                          // then read the image it traced into
@@ -23,6 +24,7 @@
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/bindings.hpp>
 #include <proceduray/vk/frame.hpp>
+#include <proceduray/vk/output_images.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/scene_acceleration.hpp>
 #include <proceduray/vk/scene_pipeline.hpp>
@@ -138,6 +140,7 @@ class Renderer {
   std::unique_ptr<Pipeline> m_pipeline;
   std::unique_ptr<SbtBuffer> m_sbt;
   std::unique_ptr<StorageImage> m_image;
+  std::unique_ptr<OutputImages> m_outputs;
   DeviceHandle<VkQueryPool> m_queries;
 };
 
@@ -156,6 +159,7 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, Re
   m_timings.pipeline_ms = pipeline.pipeline_ms;
   m_timings.pipeline_cached = pipeline.pipeline_cached;
   m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout);
+  m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
   if (ctx.timestamp_period_ns() > 0) {
     auto info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -169,6 +173,7 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, Re
 inline void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
   check_trace_size(*m_ctx, width, height);
   m_bindings->check_ready(op);
+  m_outputs->resize(width, height, *m_bindings);
   if (m_image && m_image->width() == width && m_image->height() == height) return;
   m_image = std::make_unique<StorageImage>(*m_ctx, width, height);
   m_bindings->bind_image(m_image->view());
@@ -178,6 +183,7 @@ inline FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width
                                         const std::function<void(VkCommandBuffer, std::uint32_t)>& stamp) {
   const FrameWork work = m_structures->record(cmd);  // each structure build ends with a barrier for the trace
   m_bindings->upload();
+  m_outputs->record_clear(cmd);
   record_trace(*m_ctx, cmd, *m_pipeline, m_bindings->sets(), *m_sbt, width, height, m_bindings->push(),
                std::function<void(VkCommandBuffer)>([&](VkCommandBuffer c) { stamp(c, 0); }),
                std::function<void(VkCommandBuffer)>([&](VkCommandBuffer c) { stamp(c, 1); }));
@@ -191,7 +197,7 @@ inline FrameWork Renderer::record(VkCommandBuffer cmd, std::uint32_t width, std:
 
 inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool readback) {
   prepare(width, height, "Renderer::render");
-  Frame frame{width, height, {}, 0, 0, false, {}};
+  Frame frame{width, height, {}, 0, 0, false, {}, {}};
   const VkQueryPool queries = m_queries.get();
   const auto host_start = Clock::now();
   const auto wall_start = host_start;
@@ -214,7 +220,10 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   } else {
     frame.trace_ms = ms_since(wall_start);
   }
-  if (readback) frame.rgba = m_image->read();
+  if (readback) {
+    frame.rgba = m_image->read();
+    frame.outputs = m_outputs->read();
+  }
   return frame;
 }
 

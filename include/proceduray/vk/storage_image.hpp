@@ -1,32 +1,63 @@
-// An RGBA8 storage image that ray-tracing shaders write and the host reads back.
+// A storage image that ray-tracing shaders write and the host reads back: RGBA8 colour by
+// default, or one of the 32-bit formats of per-pixel outputs (scene/outputs.hpp).
 //
 //   proceduray::vk::StorageImage image(ctx, 640, 480);   // in VK_IMAGE_LAYOUT_GENERAL
 //   set.write(1, image.view());
 //   // ... trace ...
 //   std::vector<std::uint8_t> rgba = image.read();        // width * height * 4 bytes, rows top to bottom
+//   proceduray::vk::StorageImage depth(ctx, 640, 480, VK_FORMAT_R32_SFLOAT);
+//   ctx.submit([&](VkCommandBuffer cmd) { depth.record_clear(cmd, {.float32 = {-1.0f}}); });
+//   std::vector<float> t = depth.read_as<float>();        // width * height floats
 //
-// A zero size throws proceduray::UsageError, one past maxImageDimension2D proceduray::DeviceLimitError.
+// A zero size throws proceduray::UsageError, one past maxImageDimension2D proceduray::DeviceLimitError,
+// a format other than those five UsageError.
 #pragma once
 
 #include <proceduray/vk/buffer.hpp>
 
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <vector>
 
 namespace proceduray::vk {
 
-/// A 2D VK_FORMAT_R8G8B8A8_UNORM image in the general layout, with a view for storage writes.
+/// Bytes per pixel of the formats a StorageImage takes; 0 for any other.
+inline std::uint32_t storage_pixel_bytes(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_R32_SFLOAT:
+    case VK_FORMAT_R32_UINT: return 4;
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+    case VK_FORMAT_R32G32B32A32_UINT: return 16;
+    default: return 0;
+  }
+}
+
+/// A 2D image in the general layout, with a view for storage writes (formats: storage_pixel_bytes).
 class StorageImage {
  public:
-  StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height);
+  StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format = VK_FORMAT_R8G8B8A8_UNORM);
 
   VkImage get() const noexcept { return m_image.get(); }
   VkImageView view() const noexcept { return m_view.get(); }
   std::uint32_t width() const noexcept { return m_width; }
   std::uint32_t height() const noexcept { return m_height; }
-  /// Copies the image to the host (waits for the queue): width * height RGBA8 pixels, row by row.
+  VkFormat format() const noexcept { return m_format; }
+  /// Copies the image to the host (waits for the queue): width * height pixels, row by row, as bytes.
   std::vector<std::uint8_t> read() const;
+  /// The same as values of T (float or std::uint32_t), channels of a pixel consecutive.
+  template <class T>
+  std::vector<T> read_as() const {
+    static_assert(sizeof(T) == 4, "StorageImage::read_as: 32-bit channels (float, std::uint32_t)");
+    const std::vector<std::uint8_t> bytes = read();
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+  }
+  /// Records a clear of the whole image to `value` (float32 or uint32 as the format is), with
+  /// barriers from and to ray-tracing shader writes; the image stays in the general layout.
+  void record_clear(VkCommandBuffer cmd, const VkClearColorValue& value) const;
 
  private:
   void transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
@@ -35,14 +66,20 @@ class StorageImage {
   const Context* m_ctx;
   std::uint32_t m_width;
   std::uint32_t m_height;
+  VkFormat m_format;
   DeviceHandle<VkDeviceMemory> m_memory;
   DeviceHandle<VkImage> m_image;
   DeviceHandle<VkImageView> m_view;
   mutable std::unique_ptr<Buffer> m_staging;  // readback target, made at the first read()
 };
 
-inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height)
-    : m_ctx(&ctx), m_width(width), m_height(height) {
+inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format)
+    : m_ctx(&ctx), m_width(width), m_height(height), m_format(format) {
+  if (storage_pixel_bytes(format) == 0) {
+    throw UsageError("StorageImage: format " + std::to_string(static_cast<int>(format)) +
+                     " is not one it takes; use VK_FORMAT_R8G8B8A8_UNORM, R32_SFLOAT, R32_UINT, "
+                     "R32G32B32A32_SFLOAT or R32G32B32A32_UINT");
+  }
   const std::uint32_t limit = ctx.properties().limits.maxImageDimension2D;
   if (width == 0 || height == 0 || width > limit || height > limit) {
     const std::string message = "StorageImage: size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -53,13 +90,13 @@ inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::
   }
   auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = VK_FORMAT_R8G8B8A8_UNORM;
+  info.format = format;
   info.extent = {width, height, 1};
   info.mipLevels = 1;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkImage image = VK_NULL_HANDLE;
   check(vkCreateImage(ctx.device(), &info, nullptr, &image), "vkCreateImage");
@@ -79,7 +116,7 @@ inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::
   auto view_info = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
   view_info.image = image;
   view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  view_info.format = VK_FORMAT_R8G8B8A8_UNORM;
+  view_info.format = format;
   view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(ctx.device(), &view_info, nullptr, &view), "vkCreateImageView");
@@ -106,8 +143,19 @@ inline void StorageImage::transition(VkCommandBuffer cmd, VkImageLayout from, Vk
   vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
+inline void StorageImage::record_clear(VkCommandBuffer cmd, const VkClearColorValue& value) const {
+  // Earlier traces' writes before the clear; the clear before this trace's writes.
+  transition(cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT,
+             VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(cmd, m_image.get(), VK_IMAGE_LAYOUT_GENERAL, &value, 1, &range);
+  transition(cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+}
+
 inline std::vector<std::uint8_t> StorageImage::read() const {
-  const VkDeviceSize size = VkDeviceSize{m_width} * m_height * 4;
+  const VkDeviceSize size = VkDeviceSize{m_width} * m_height * storage_pixel_bytes(m_format);
   // Made once: a renderer reads its frames back every frame.
   if (!m_staging) m_staging = std::make_unique<Buffer>(*m_ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   m_ctx->submit([&](VkCommandBuffer cmd) {

@@ -1,0 +1,89 @@
+// The images of a scene's per-pixel outputs (scene/outputs.hpp): one per output the plan lists,
+// bound to its binding, cleared before every trace, read back into a Frame's `outputs`.
+//
+//   proceduray::vk::OutputImages outputs(ctx, plan.outputs());
+//   outputs.resize(width, height, bindings);           // makes and binds the images for this size
+//   ctx.submit([&](VkCommandBuffer cmd) { outputs.record_clear(cmd); /* ... trace ... */ });
+//   proceduray::vk::Outputs read = outputs.read();     // read.t: width * height floats, -1 where nothing hit
+//
+// Renderer does all of this when the scene asks for outputs; a scene that asks for none gets no image.
+#pragma once
+
+#include <proceduray/scene/outputs.hpp>
+#include <proceduray/vk/bindings.hpp>
+#include <proceduray/vk/frame.hpp>
+#include <proceduray/vk/storage_image.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace proceduray::vk {
+
+/// What an output's image is cleared to before a trace: the value of "nothing written".
+inline VkClearColorValue output_clear_value(Output o) {
+  VkClearColorValue v{};
+  if (o == Output::t) v.float32[0] = -1.0f;
+  if (o == Output::ids) v.uint32[0] = v.uint32[1] = v.uint32[2] = v.uint32[3] = 0xffffffffu;
+  return v;
+}
+
+/// The Vulkan format of an output's image (format_of(o) in GLSL terms).
+inline VkFormat output_format(Output o) {
+  switch (o) {
+    case Output::t: return VK_FORMAT_R32_SFLOAT;
+    case Output::normal: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case Output::ids: return VK_FORMAT_R32G32B32A32_UINT;
+    case Output::steps:
+    case Output::flags: return VK_FORMAT_R32_UINT;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+/// One storage image per planned output.
+class OutputImages {
+ public:
+  OutputImages(const Context& ctx, std::span<const PlannedOutput> planned)
+      : m_ctx(&ctx), m_planned(planned.begin(), planned.end()) {}
+
+  /// Makes the images for width x height (when the size changed) and binds them in `bindings`.
+  void resize(std::uint32_t width, std::uint32_t height, Bindings& bindings) {
+    if (m_planned.empty() || (m_width == width && m_height == height)) return;
+    m_images.clear();
+    for (const PlannedOutput& p : m_planned) {
+      m_images.push_back(std::make_unique<StorageImage>(*m_ctx, width, height, output_format(p.output)));
+      bindings.bind_output(p.binding, m_images.back()->view());
+    }
+    m_width = width;
+    m_height = height;
+  }
+  /// Records the clears that make every pixel "nothing written" before a trace.
+  void record_clear(VkCommandBuffer cmd) const {
+    for (std::size_t i = 0; i < m_images.size(); ++i) m_images[i]->record_clear(cmd, output_clear_value(m_planned[i].output));
+  }
+  /// Reads every output back (waits for the queue).
+  Outputs read() const {
+    Outputs out;
+    for (std::size_t i = 0; i < m_images.size(); ++i) {
+      const StorageImage& image = *m_images[i];
+      switch (m_planned[i].output) {
+        case Output::t: out.t = image.read_as<float>(); break;
+        case Output::normal: out.normal = image.read_as<float>(); break;
+        case Output::ids: out.ids = image.read_as<std::uint32_t>(); break;
+        case Output::steps: out.steps = image.read_as<std::uint32_t>(); break;
+        case Output::flags: out.flags = image.read_as<std::uint32_t>(); break;
+      }
+    }
+    return out;
+  }
+  bool empty() const noexcept { return m_planned.empty(); }
+
+ private:
+  const Context* m_ctx;
+  std::vector<PlannedOutput> m_planned;
+  std::vector<std::unique_ptr<StorageImage>> m_images;  // m_planned's order
+  std::uint32_t m_width = 0, m_height = 0;
+};
+
+}  // namespace proceduray::vk

@@ -1,0 +1,7 @@
+#include "tests/docs/scene/scene_names.hpp"
+using namespace doc_scene;
+
+// @declarations
+void usage(proceduray::Scene& scene) {
+  // @statements
+}
