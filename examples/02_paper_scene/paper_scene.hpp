@@ -18,7 +18,9 @@ inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .n
 
 /// The scene: its entities and entries, each type from its category of paper::Interface.
 struct PaperScene : pr::SceneOf<Interface> {
-  PaperScene() {
+  /// `outputs`: per-pixel outputs besides colour (the accuracy tool asks for t, normal, steps, flags).
+  explicit PaperScene(pr::OutputSet outputs = {}) {
+    set_outputs(outputs);
     const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
     add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
     const auto material = add_local_signature<MaterialRecord>("material");
@@ -41,11 +43,14 @@ struct PaperScene : pr::SceneOf<Interface> {
 
   /// Shaders from this example's folder, compiled with the declarations the build wrote into
   /// PAPER_GLSL_DIR (glsl/generate.cpp, run with no device; defined by CMake and Meson for every
-  /// target that includes this header), then the flags and the AABBs.
+  /// target that includes this header), then the flags and the AABBs. The build writes the
+  /// scene without outputs; with outputs the renderer derives the declarations at run time.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-            .declarations = pr::glsl_files(examples::generated_glsl_dir(PAPER_GLSL_DIR)),
-            .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this), .pipeline_cache = std::move(cache)};
+    pr::vk::RendererOptions o{.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
+                              .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this),
+                              .pipeline_cache = std::move(cache)};
+    if (outputs().empty()) o.declarations = pr::glsl_files(examples::generated_glsl_dir(PAPER_GLSL_DIR));
+    return o;
   }
 };
 

@@ -1,5 +1,7 @@
 // What the paper scene's marched intersection shaders share: clip to the own AABB, sphere
 // trace with the knobs from `constants`, report t within [gl_RayTminEXT, gl_RayTmaxEXT].
+// With per-pixel outputs it also adds its evaluations (march and normal) and sets the
+// exhausted, started-inside and NaN flags.
 //
 //   float march_distance(vec3 p) { ... }          // object space
 //   vec3 march_normal(vec3 p, float h) { ... }    // unit, outward
@@ -36,10 +38,23 @@ void march_and_report(vec3 box_min, vec3 box_max) {
                                   constants.over_relaxation);
   float s;
   uint steps;
-  if (!sphere_trace(o, u, t0 * len, t1 * len, m, s, steps)) return;
+#ifdef PROCEDURAY_OUTPUTS
+  // One more evaluation, only when outputs are asked for: does the march start inside?
+  if (march_distance(o + t0 * len * u) < 0.0) output_flags(output_flag_started_inside);
+#endif
+  bool found = sphere_trace(o, u, t0 * len, t1 * len, m, s, steps);
+  output_steps(steps);
+#ifdef PROCEDURAY_OUTPUTS
+  if (!found && steps >= m.max_steps) output_flags(output_flag_exhausted);
+#endif
+  if (!found) return;
   float t = s / len;
   if (!t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
   hit.normal = march_normal(o + s * u, max(march_epsilon(m, s), 1.0e-5));
+  output_steps(4u);  // the tetrahedral normal's evaluations
+#ifdef PROCEDURAY_OUTPUTS
+  if (isnan(t) || any(isnan(hit.normal))) output_flags(output_flag_nan);
+#endif
   hit.steps = float(steps);
   reportIntersectionEXT(t, 0u);
 }

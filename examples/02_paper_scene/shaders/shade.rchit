@@ -7,6 +7,9 @@ void main() {
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
   // Normals take the inverse transpose of the object-to-world transform.
   vec3 n = safe_normalize(transpose(mat3(gl_WorldToObjectEXT)) * hit.normal, -gl_WorldRayDirectionEXT);
+#ifdef PROCEDURAY_OUTPUTS
+  if (payload.depth == 0u) output_hit(n);  // the camera ray's hit (reflections reuse this shader)
+#endif
   // Marched surfaces are found within this threshold (as the intersection shader set it):
   // secondary rays start twice as far out so they do not find the same surface at once.
   float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);

@@ -44,14 +44,15 @@
 #include "proceduray/accuracy/outcome.hpp"
 #include "proceduray/accuracy/percentiles.hpp"
 #include "proceduray/error.hpp"
+#include "proceduray/scene/outputs.hpp"
 
 namespace proceduray::accuracy {
 
-/// Bits of Sample::flags; the shaders write the same values.
+/// Bits of Sample::flags: the output_flag_* bits shaders write (scene/outputs.hpp).
 namespace flags {
-inline constexpr std::uint32_t nan_seen = 1u << 0;        ///< a NaN or Inf appeared while tracing the ray
-inline constexpr std::uint32_t exhausted = 1u << 1;       ///< the march ran out of steps
-inline constexpr std::uint32_t started_inside = 1u << 2;  ///< the ray started inside the object
+inline constexpr std::uint32_t nan_seen = output_flag_nan;                ///< a NaN or Inf appeared while tracing the ray
+inline constexpr std::uint32_t exhausted = output_flag_exhausted;         ///< the march ran out of steps
+inline constexpr std::uint32_t started_inside = output_flag_started_inside;  ///< the ray started inside the object
 }  // namespace flags
 
 /// The method under test at one pixel. t and normal are read only when hit is true.
