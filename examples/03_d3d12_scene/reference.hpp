@@ -20,10 +20,13 @@
 // of budget (or whose shape the clipped ray starts in) makes the pixel undetermined unless a
 // determined hit lies before where that search stopped: nothing in front of the stop was missed,
 // so that hit stands. Only primary rays: shadows and reflections start on the method's own hits.
-// Cost (tests/accuracy/d3d12_reference_test.cpp at 48x32, time 2, default options): per ray that
-// reaches the object's AABB, box and spheres 3 to 5 evaluations (box tests and closed forms), the
-// SDFs tens to ~200 distances and the metaballs a few hundred field values (the step is |F - c| / L
-// with L = 9.4 at R = 0.6); the test prints the numbers. Plain loops, one thread.
+// Cost (tests/accuracy/d3d12_reference_test.cpp, 48x32, time 2, default options): evaluations per
+// ray that reaches the object's AABB (per ray that hits it): box 3 (3), spheres 5 (5), metaballs
+// 65 (110; the step is |F - threshold| / L with L = 9.4 at R = 0.6), mini spheres 32 (45), round cube 24
+// (44), square torus 20 (54), twisted torus 46 (119; L = 5.2), cog 14 (51), cylinder 31 (47),
+// fractal pyramid 27 (43); the ground 1 per ray; 13201 for the image, well under a millisecond.
+// A finer floor (1e-9 footprints) adds 2% and moves no hit by more than 4e-12 footprints. Plain
+// loops, one thread.
 #pragma once
 
 #include "reference_objects.hpp"
@@ -83,7 +86,8 @@ namespace detail {
 inline void check_size(std::uint32_t width, std::uint32_t height) {
   if (width == 0 || height == 0) {
     throw proceduray::UsageError("d3d12::reference_image: image size " + std::to_string(width) + "x" +
-                                 std::to_string(height) + " has no pixels; pass width and height >= 1 (the render's size)");
+                                 std::to_string(height) +
+                                 " has no pixels; pass width and height >= 1 (the render's size)");
   }
 }
 

@@ -9,6 +9,7 @@
 // Secondary rays (shadows, reflections) are off, so the steps a pixel reports are its camera
 // ray's: evaluations per ray, a cost that does not depend on the machine.
 #include "02_paper_scene/paper_scene.hpp"
+#include "02_paper_scene/accuracy.hpp"
 #include "02_paper_scene/reference.hpp"
 
 #include <proceduray/accuracy/report.hpp>
@@ -39,45 +40,13 @@ struct Knobs {
 
 namespace acc = proceduray::accuracy;
 
-/// The paper object a device hit belongs to, from its ids output (TLAS instance, as compile()
-/// numbered them): the instance's BLAS names the geometry, the instance index the Pac-man.
-paper::ObjectId object_of(const proceduray::Plan& plan, std::uint32_t instance) {
-  if (instance >= plan.instances().size()) return paper::sky_id;
-  const proceduray::TlasInstance& in = plan.instances()[instance];
-  for (const proceduray::PlannedGeometry& g : plan.geometries()) {
-    if (g.blas != in.blas) continue;
-    if (g.name == "plane") return paper::plane_id;
-    if (g.name == "pacman") return in.instance == 0 ? paper::pacman0_id : paper::pacman1_id;
-    if (g.name == "julia") return paper::julia_id;
-    if (g.name == "mandelbulb") return paper::mandelbulb_id;
-  }
-  return paper::sky_id;
-}
-
-/// One object's view: the reference hits only where it sees that object, the render only where
-/// its hit is on that object; silhouettes are then that object's against everything else.
-acc::Metrics measure_object(const paper::ReferenceImage& truth, const std::vector<acc::Sample>& samples,
-                            const std::vector<paper::ObjectId>& device_objects, paper::ObjectId object) {
-  std::vector<acc::Reference> refs = truth.pixels;
-  std::vector<acc::Sample> mine = samples;
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (refs[i].outcome == acc::Outcome::hit && truth.objects[i] != object) refs[i] = {.outcome = acc::Outcome::miss};
-    if (mine[i].hit && device_objects[i] != object) mine[i].hit = false;
-  }
-  return acc::measure(truth.frame(), mine, refs);
-}
-
-constexpr std::pair<paper::ObjectId, const char*> objects[] = {{paper::plane_id, "plane"}, {paper::pacman0_id, "pacman0"},
-                                                               {paper::pacman1_id, "pacman1"}, {paper::julia_id, "julia"},
-                                                               {paper::mandelbulb_id, "mandelbulb"}};
-
 /// One line per object: what a reader compares first.
 void print_objects(const paper::ReferenceImage& truth, const std::vector<acc::Sample>& samples,
                    const std::vector<paper::ObjectId>& device_objects) {
   std::printf("\n%-11s %6s %8s %9s %9s %9s %9s %9s %9s %9s\n", "object", "hits", "sil1 fh%", "sil2 fh%", "miss%",
               "depth med", "depth p99", "depth max", "normal med", "steps");
-  for (const auto& [id, label] : objects) {
-    const acc::Metrics m = measure_object(truth, samples, device_objects, id);
+  for (const auto& [id, label] : paper::named_objects) {
+    const acc::Metrics m = paper::measure_object(truth, samples, device_objects, id);
     const acc::ClassStats& a = m.all;
     double steps = 0.0;  // mean over the rays that see the object, in the reference or the render
     std::size_t rays = 0;
@@ -107,8 +76,7 @@ int run(const Knobs& k) {
     return 2;
   }
   proceduray::vk::Context ctx({.device = device_of(k.device), .validation = k.validation});
-  const paper::PaperScene scene({proceduray::Output::t, proceduray::Output::normal, proceduray::Output::ids,
-                                 proceduray::Output::steps, proceduray::Output::flags});
+  const paper::PaperScene scene(paper::accuracy_outputs);
   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::SceneConstants constants = paper::default_constants(width, height, k.time);
   constants.flags = 0;  // camera rays only: no shadow or reflection rays
@@ -125,8 +93,7 @@ int run(const Knobs& k) {
       paper::reference_image(constants, width, height, {.spacing = k.spacing, .iteration_factor = k.iteration_factor});
   const double reference_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const proceduray::accuracy::Metrics m = proceduray::accuracy::measure(truth.frame(), samples, truth.pixels);
-  std::vector<paper::ObjectId> device_objects(pixels);
-  for (std::size_t i = 0; i < pixels; ++i) device_objects[i] = object_of(renderer.plan(), frame.outputs.ids[4 * i]);
+  const std::vector<paper::ObjectId> device_objects = paper::device_objects(renderer.plan(), frame.outputs.ids);
 
   std::printf("device: %s\nscene: paper, %ux%u, time %.2f s, %u steps, threshold %.3g footprints, step scale %.3g\n",
               ctx.name().c_str(), width, height, static_cast<double>(k.time), constants.max_steps,
@@ -151,9 +118,9 @@ int run(const Knobs& k) {
     with_object.push_back({"object", "all"});
     if (!k.append || out.tellp() == 0) acc::write_csv_header(out, with_object);
     acc::write_csv_rows(out, m, with_object);
-    for (const auto& [id, label] : objects) {
+    for (const auto& [id, label] : paper::named_objects) {
       with_object.back().value = label;
-      acc::write_csv_rows(out, measure_object(truth, samples, device_objects, id), with_object);
+      acc::write_csv_rows(out, paper::measure_object(truth, samples, device_objects, id), with_object);
     }
     std::printf("\nwrote %s\n", k.csv.c_str());
   }
