@@ -365,23 +365,25 @@ Compared compare(const d3d12::Primitive& p) {
 
 TEST_CASE("d3d12 reference: the float marches of the shaders against the reference per kind") {
   // Seen at 48x32, time 2, the sample's knobs (512 steps, epsilon 1e-4, half a footprint, 128
-  // metaball steps), each primitive alone: both hit / only the march (all within 1 px of the
-  // reference silhouette but 6 of the twisted torus's, at 2 px) / only the reference 0 everywhere;
+  // metaball steps), each primitive alone: both hit / only the march;
   // |t - t_ref| in footprints median / p99 / max; normal error median / max in degrees:
   //   box              23 /  0   2e-6 / 5e-6 / 5e-6   0 / 0
   //   spheres          10 /  0   2e-6 / 9e-6 / 9e-6   8e-5 / 4e-4
   //   metaballs        11 /  0   3e-5 / 5e-5 / 5e-5   1e-3 / 2e-3 (behind by the last bisection bracket)
-  //   mini_spheres     36 / 14   1.30 / 4.50 / 4.50   37 / 101
-  //   round_cube       27 / 12   0.20 / 1.30 / 1.30    8 / 37
-  //   square_torus      8 /  9   0.57 / 3.33 / 3.33   43 / 54
-  //   twisted_torus     7 / 24   2.13 / 2.51 / 2.51   28 / 114
-  //   cog               6 /  8   0.86 / 1.08 / 1.08   33 / 76
-  //   cylinder         19 / 10   0.16 / 2.55 / 2.55   13 / 91
-  //   fractal_pyramid  19 /  7   0.31 / 3.32 / 3.32   48 / 137
-  // Every SDF hit lies in front of the reference (t_ref - t from 0.02 to 4.5 footprints): at
-  // 48x32 half a footprint is ~0.18 units, so marches stop after at most 5 steps, at grazing
-  // incidence several footprints early, and the tetrahedral normal's offset (the same 0.18)
-  // blurs edges. The analytic primitives and the metaballs agree to float rounding.
+  //   mini_spheres     36 /  0   0.006 / 0.015 / 0.015   21 / 39
+  //   round_cube       27 /  0   0.005 / 0.012 / 0.012   14 / 31
+  //   square_torus      8 /  0   0.006 / 0.015 / 0.015   45 / 53
+  //   twisted_torus     7 /  0   0.004 / 0.013 / 0.013   29 / 73
+  //   cog               5 /  0   0.011 / 0.014 / 0.014   34 / 82 (one ray only the reference hits)
+  //   cylinder         19 /  0   0.005 / 0.013 / 0.013   14 / 32
+  //   fractal_pyramid  19 /  0   0.006 / 1.31 / 1.31     54 / 141
+  // Since sphere_trace confirms a hit by a sign change and bisects it (march stops at the last
+  // outside point within 1/32 threshold), SDF hits land at the surface: within 0.015 footprints in
+  // front of it, except where a probe steps over a part thinner than itself (one fractal-pyramid
+  // ray lands 1.3 footprints behind, on the next surface). Before that rule: medians 0.16 to 2.1,
+  // up to 24 march-only rays per kind. Normals still use the threshold as their offset (0.18
+  // units at 48x32), which blurs edges. The analytic primitives and the metaballs agree to float
+  // rounding.
   for (const d3d12::Primitive& p : sample_primitives()) {
     const Compared c = compare(p);
     const acc::ClassStats& a = c.m.all;
@@ -397,18 +399,19 @@ TEST_CASE("d3d12 reference: the float marches of the shaders against the referen
     CAPTURE(p.kind);
     CHECK(a.undetermined == 0);
     CHECK(a.both_hit >= 5);
-    CHECK(a.false_misses <= 1);        // seen: 0
+    CHECK(a.false_misses <= 2);        // seen: 0, and 1 for the cog (a part thinner than a probe)
     CHECK(band_march == a.false_hits);  // only near the silhouette
-    CHECK(a.false_hits <= 30);         // seen: up to 24
+    CHECK(a.false_hits <= 2);          // seen: 0 (up to 24 before hits needed a sign change)
     if (!is_sdf(p.kind)) {
       CHECK(a.false_hits == 0);
       CHECK(a.depth.max <= 1e-3);
       CHECK(a.normal_degrees.max <= 0.05);
       continue;
     }
-    CHECK(c.nearest >= -0.01);  // never behind the surface
-    CHECK(a.depth.median <= 3.5);
-    CHECK(a.depth.max <= 8.0);
+    CHECK(c.nearest >= -2.0);   // behind only by stepping over a thin part (seen: -1.31, one ray)
+    CHECK(c.farthest <= 0.05);  // in front by at most the refinement (seen: 0.015)
+    CHECK(a.depth.median <= 0.05);
+    CHECK(a.depth.max <= 2.0);
     CHECK(a.normal_degrees.median <= 60.0);  // not flipped (that reads ~180)
   }
 }

@@ -316,7 +316,7 @@ Agreement compare(paper::ObjectId id, const proceduray::Aabb& box) {
 
 }  // namespace
 
-TEST_CASE("paper reference: the float sphere tracer stops on or in front of the reference") {
+TEST_CASE("paper reference: the float sphere tracer lands at the reference surface") {
   const paper::SceneConstants& k = constants();
   march<0>::count = paper::glsl::bulb<float>::mandelbulb_animated_iterations(k.mandelbulb_iterations, k.time);
   march<1>::count = std::max(k.julia_iterations, 1u);
@@ -332,22 +332,31 @@ TEST_CASE("paper reference: the float sphere tracer stops on or in front of the 
                  << percentile(error, 0.99) << " max " << percentile(error, 1.0) << "; t_ref - t: min "
                  << percentile(a->front, 0.0) << " max " << percentile(a->front, 1.0));
   }
-  // Seen: Mandelbulb 56 both, 23 only the march, Julia 37 and 29: every one of those within a
-  // pixel of the reference silhouette (the march's threshold of half a footprint catches rays
-  // that pass that close), none only the reference; every march hit in front of the reference,
-  // Mandelbulb by 0.64 to 4.9 footprints (median 1.37: the estimate's underestimate and the
-  // threshold), Julia by 0.014 to 1.3 (median 0.07: its cut face is exact).
+  // Seen: Mandelbulb 53 both, 0 only the march, 3 only the reference (parts thinner than the
+  // probes, which grazing rays step over), Julia 37, 0 and 0; |t_ref - t| in footprints:
+  // Mandelbulb median 0.010, max 1.13 (one hit behind the reference: probes stepped over a
+  // thin part in front of the body), Julia median 0.0009, max 0.008 (within the 1/32-threshold
+  // refinement everywhere; its cut face is exact). With the classic rule (stop below the
+  // threshold): Mandelbulb 56 both, 23 only the march, Julia 37 and 29, every one of those
+  // within a pixel of the reference silhouette (the threshold of half a footprint caught rays
+  // that pass that close), none only the reference; every hit in front of the reference,
+  // Mandelbulb by 0.64 to 4.9 footprints (median 1.37), Julia by 0.014 to 1.3 (median 0.07).
   CHECK(bulb.both >= 40);
   CHECK(julia.both >= 25);
   for (const Agreement* a : {&bulb, &julia}) {
+    std::vector<double> error(a->front.size());
+    std::transform(a->front.begin(), a->front.end(), error.begin(), [](double f) { return std::abs(f); });
     CHECK(a->only_march_off_silhouette == 0);
-    CHECK(a->only_march <= 40);
-    CHECK(a->only_reference <= 2);
+    CHECK(a->only_march <= 2);      // grazing rays are no longer hits
+    CHECK(a->only_reference <= 4);  // but parts thinner than the probes may be missed
     CHECK(a->behind == 0);
-    CHECK(percentile(a->front, 0.0) >= -1.0);
-    CHECK(percentile(a->front, 0.5) <= 3.0);
-    CHECK(percentile(a->front, 1.0) <= 10.0);
+    CHECK(percentile(error, 0.5) <= 0.1);
   }
+  // Every march hit within 2.5 footprints of the reference (Mandelbulb), 0.05 (Julia).
+  CHECK(percentile(bulb.front, 0.0) >= -2.5);
+  CHECK(percentile(bulb.front, 1.0) <= 2.5);
+  CHECK(percentile(julia.front, 0.0) >= -0.05);
+  CHECK(percentile(julia.front, 1.0) <= 0.05);
 }
 
 TEST_CASE("paper reference: the mandelbulb reference converges at the default spacing") {

@@ -193,7 +193,7 @@ TEST_CASE("reference mandelbulb sphere tracing in double lands near the referenc
   constexpr int size = 32;
   const typename bulb<double>::MarchSettings m{256u, 1e-4, 0.5 * pixel_angle(size), 1.0, 1.0};
   int both = 0, only_march = 0, only_reference = 0, behind = 0;
-  std::vector<double> footprints;  // t_ref - s in pixel footprints
+  std::vector<double> footprints, error;  // t_ref - s and |t_ref - s| in pixel footprints
   for (int y = 0; y < size; ++y) {
     for (int x = 0; x < size; ++x) {
       const ViewRay v = view_ray(x, y, size);
@@ -207,27 +207,39 @@ TEST_CASE("reference mandelbulb sphere tracing in double lands near the referenc
       only_reference += reference && !marched;
       if (!(marched && reference)) continue;
       ++both;
-      // The estimate is below the true distance, so the march stops in front of the surface.
-      behind += s > ref.t + ref.bracket;
+      // Behind the reference's first inside sample by more than a refinement tolerance (1/32
+      // threshold): where a probe stepped over a part thinner than it.
+      behind += s > ref.t + ref.bracket + m.footprint * s / 32.0;
       footprints.push_back((ref.t - s) / (ref.t * pixel_angle(size)));
+      error.push_back(std::abs(footprints.back()));
     }
   }
-  MESSAGE("mandelbulb sphere_trace<double> vs reference: both hit " << both << ", only the march " << only_march
-                                                                     << ", only the reference " << only_reference
-                                                                     << ", t_ref - s in pixel footprints: median "
-                                                                     << percentile(footprints, 0.5) << " p99 "
-                                                                     << percentile(footprints, 0.99) << " max "
-                                                                     << percentile(footprints, 1.0));
-  // Seen: 674 both, 118 only the march (a skin where the estimate dips below the threshold
-  // though the set is farther: no inside point within 5 footprints), 0 only the reference,
-  // hits 0.4 to 12 footprints in front (median 1.9): the threshold and the estimate's
-  // underestimate, not rounding, set the error at this view.
-  CHECK(both > 200);
-  CHECK(only_reference <= both / 100);
-  CHECK(only_march <= both / 4);
-  CHECK(behind == 0);
-  CHECK(percentile(footprints, 0.5) <= 4.0);
-  CHECK(percentile(footprints, 1.0) <= 32.0);
+  MESSAGE("mandelbulb sphere_trace<double> vs reference: both hit "
+          << both << ", only the march " << only_march << ", only the reference " << only_reference
+          << ", behind by more than the refinement " << behind << "; t_ref - s in pixel footprints: min "
+          << percentile(footprints, 0.0) << " p10 " << percentile(footprints, 0.1) << " median "
+          << percentile(footprints, 0.5) << " max "
+          << percentile(footprints, 1.0) << "; |t_ref - s| median " << percentile(error, 0.5) << " p99 "
+          << percentile(error, 0.99) << " max " << percentile(error, 1.0));
+  // Seen: 668 both, 1 only the march (an inside point of a speck that the reference's 1e-3
+  // spacing steps over), 6 only the reference (parts thinner than the probes, grazed);
+  // |t_ref - s| median 0.010, p99 1.6, max 10.5 footprints; t_ref - s median +0.006, but the
+  // truncated set's filaments and specks in front of its body (see above) put 10 % of the hits
+  // behind the first inside sample by more than 0.07 footprints (114 beyond the refinement):
+  // the probes step over parts thinner than themselves and the bisection finds a crossing, not
+  // always the first. With the classic rule (stop below the threshold): 674 both, 118 only the
+  // march (a skin where the estimate dips below the threshold though the set is farther: no
+  // inside point within 5 footprints), 0 only the reference, every hit 0.4 to 12 footprints in
+  // front (median 1.9): the threshold and the estimate's underestimate set that error.
+  CHECK(both > 600);
+  CHECK(only_reference <= both / 50);
+  CHECK(only_march <= both / 100);
+  CHECK(std::abs(percentile(footprints, 0.5)) <= 0.05);
+  CHECK(percentile(footprints, 0.1) >= -0.5);
+  CHECK(behind <= both / 4);
+  CHECK(percentile(error, 0.5) <= 0.05);
+  CHECK(percentile(error, 0.99) <= 3.0);
+  CHECK(percentile(error, 1.0) <= 16.0);  // every march hit within 16 footprints of the reference (classic: 32)
 }
 
 TEST_CASE("reference pacman agrees with the interval CSG in double on a grid of rays") {

@@ -1,8 +1,12 @@
 // The power-8 Mandelbulb sphere-traced in float against the same source in double (one class
 // template, compat.glsl's rules): how far float rounding moves a fractal's hits. Knobs as the
 // paper scene's defaults: 8 iterations, 256 steps, step scale 1, threshold 0.5 pixel footprints.
-// Seen: no ray changes class and hits move by at most 3 float spacings, so at this view the
-// threshold, not float, sets the accuracy; the test fails if float marching drifts from that.
+// Seen: 1 ray of 4096 changes class; hits move by a median 0.7 float spacings and a p99 of
+// 1/64 threshold (each march bisects its sign change to 1/32 threshold and stops within
+// that), at most 0.28 thresholds (in the truncated set's dust in front of its body one
+// precision's probe lands in a speck the other's steps over). So at this view the hit rule
+// and the set's fine structure, not float, set the accuracy; the test fails if float
+// marching drifts from that.
 #include "common/glsl_cpp.hpp"
 
 namespace fractal_reference_test {
@@ -65,7 +69,7 @@ Result march(int x, int y, int size, double w = 1.0) {
 TEST_CASE("mandelbulb sphere tracing in float stays near the double march") {
   constexpr int size = 64;
   std::size_t both = 0, differ = 0, within = 0;
-  std::vector<double> gaps;
+  std::vector<double> gaps, gap_thresholds;  // |s_f - s_d| in float spacings of s, in thresholds
   for (int y = 0; y < size; ++y) {
     for (int x = 0; x < size; ++x) {
       const Result f = march<float>(x, y, size), d = march<double>(x, y, size);
@@ -78,15 +82,17 @@ TEST_CASE("mandelbulb sphere tracing in float stays near the double march") {
       const double spacing = double(std::nextafter(float(d.s), 1e30f) - float(d.s));
       gaps.push_back(gap / spacing);
       within += gap <= threshold;
+      gap_thresholds.push_back(gap / threshold);
     }
   }
   std::sort(gaps.begin(), gaps.end());
+  std::sort(gap_thresholds.begin(), gap_thresholds.end());
   MESSAGE("both hit " << both << ", hit differs " << differ << ", |s_f - s_d| within one threshold " << within
                       << ", in float spacings of s: median " << gaps[gaps.size() / 2] << " p99 " << gaps[gaps.size() * 99 / 100]
-                      << " max " << gaps.back());
-  CHECK(both > size * size / 5);     // the view is mostly fractal
-  CHECK(differ <= size * size / 200);  // seen: 0
+                      << " max " << gaps.back() << "; in thresholds: p99 " << gap_thresholds[gap_thresholds.size() * 99 / 100]
+                      << " max " << gap_thresholds.back());
+  CHECK(both > size * size / 5);       // the view is mostly fractal
+  CHECK(differ <= size * size / 200);  // seen: 1 (0 with the classic rule)
   CHECK(within == both);               // float never leaves the threshold's band
-  CHECK(gaps[gaps.size() * 99 / 100] <= 8.0);  // seen: 1.6 float spacings
-  CHECK(gaps.back() <= 64.0);                  // seen: 3
+  CHECK(gap_thresholds[gap_thresholds.size() * 99 / 100] <= 0.05);  // seen: 0.016 (1611 float spacings)
 }

@@ -203,9 +203,10 @@ TEST_CASE("near-tangent rays - the Haines form in float classifies as double doe
 
 TEST_CASE("sphere tracing in float lands where the double march lands") {
   // Every SDF primitive (the fractal pyramid included), 48 x 48 camera rays, same knobs in
-  // both precisions. Float rounding in the distances moves the float march's stopping point
-  // by a few float spacings of t, far below the 1e-4 threshold: the threshold, not float,
-  // limits the accuracy of these primitives at this scale.
+  // both precisions. Each march bisects its sign change until the bracket is 1/32 of the
+  // 1e-4 threshold (3.1e-6) and reports the outside end, so the two stop anywhere within that
+  // of the crossing; float rounding in the distances adds a few float spacings of t, far below
+  // the threshold: the refinement, not float, limits the accuracy at this scale.
   const auto rays = camera_rays(48);
   for (std::uint32_t kind = lib<float>::sdf_mini_spheres; kind <= lib<float>::sdf_fractal_pyramid; ++kind) {
     std::size_t both = 0, differ = 0;
@@ -224,7 +225,7 @@ TEST_CASE("sphere tracing in float lands where the double march lands") {
     CAPTURE(kind);
     CHECK(both > rays.size() / 20);
     CHECK(differ <= 2);        // seen: 0 of 2304 for every primitive
-    CHECK(p99 <= 5e-6);        // about 10 float spacings at t = 4.5 (seen: 1.1e-6)
-    CHECK(worst <= 2e-5);      // seen: 1.8e-6 (the twisted torus)
+    CHECK(p99 <= 5e-6);        // about 10 float spacings at t = 4.5 (seen: 2.7e-6; 1.1e-6 with the classic rule)
+    CHECK(worst <= 6e-6);      // the refinement's 3.1e-6 plus rounding (seen: 3.1e-6, the cylinder)
   }
 }

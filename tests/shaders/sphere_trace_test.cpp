@@ -1,5 +1,7 @@
 // Tests for shaders/marching/sphere_trace.glsl, compiled as C++: hits, misses, exhausted steps,
-// over-relaxation on a thin plate (also at the range's end) and its fallback, tetrahedral normals.
+// the hit rule (a sign change, bisected; grazing rays march on; the threshold on the unscaled
+// distance), over-relaxation on a thin plate (also at the range's end) and its fallback,
+// tetrahedral normals.
 #include "common/glsl_cpp.hpp"
 
 #include <cmath>
@@ -62,10 +64,111 @@ TEST_CASE("sphere_trace footprint threshold grows with distance") {
   CHECK(march_epsilon(m, 10.0f) == doctest::Approx(0.1f));
   float s;
   std::uint32_t coarse, fine;
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, coarse));
-  CHECK(s == doctest::Approx(4.0f).epsilon(0.02));
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.9f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, fine));
-  m.footprint = 0.0f;
+  // A threshold of ~0.04 at s = 4: probes and the bisection's tolerance scale with it.
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, coarse));
+  CHECK(s == doctest::Approx(4.2f).epsilon(0.02));
+  CHECK(std::abs(s - 4.2f) <= march_refine_fraction * march_epsilon(m, s) + 1e-5f);
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, fine));
+  CHECK(coarse < fine);
+}
+
+namespace {
+/// The exact t of the unit sphere along +z from (0, y, -5), |y| < 1.
+float sphere_t(float y) { return 5.0f - std::sqrt(1.0f - y * y); }
+}  // namespace
+
+TEST_CASE("sphere_trace: a grazing ray that passes within the threshold is a miss") {
+  // The classic rule stops at the first distance below the threshold, so a ray passing the
+  // unit sphere 0.3 thresholds away was a hit (a fat silhouette). Now the march probes for an
+  // inside point, finds none, and marches on to the end of the range.
+  shape = 0;
+  for (const float eps : {1e-3f, 1e-2f}) {
+    MarchSettings m = settings(1.0f, 4096);
+    m.epsilon = eps;
+    float s;
+    std::uint32_t steps;
+    CAPTURE(eps);
+    CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 1.0f + 0.3f * eps, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s,
+                             steps));
+    // Plain steps shrink towards the closest approach, then probes of 0.6 to 1 threshold cover
+    // the stretch where the distance stays below it (2 sqrt(1.4 eps) long), then plain steps
+    // to the end: seen 187 evaluations at 1e-3, 60 at 1e-2 (the classic rule took 45 and 14,
+    // to a false hit).
+    CHECK(steps < 256u);
+    MESSAGE("grazing at 0.3 thresholds, threshold " << eps << ": " << steps << " evaluations");
+    // A ray that does enter, a tenth of a threshold inside the silhouette, is a hit.
+    const float y = 1.0f - 0.1f * eps;
+    REQUIRE(sphere_trace(glm::vec3(0.0f, y, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+    CHECK(s <= sphere_t(y));
+    CHECK(march_distance(glm::vec3(0.0f, y, -5.0f + s)) > 0.0f);
+  }
+}
+
+TEST_CASE("sphere_trace: a hit is refined to a fraction of the threshold and stays outside") {
+  // The classic rule stops where the distance first falls below the threshold: at incidence
+  // cos 0.6 (y = 0.8) that is 0.67 to 1.67 thresholds in front of the surface. The sign
+  // change is bisected down to march_refine_fraction (1/32) of the threshold.
+  shape = 0;
+  for (const float eps : {1e-3f, 1e-2f}) {
+    for (const float y : {0.0f, 0.3f, 0.8f, 0.95f, 0.999f}) {
+      for (const float w : {1.0f, 1.6f}) {
+        MarchSettings m = settings(w, 4096);
+        m.epsilon = eps;
+        float s;
+        std::uint32_t steps;
+        CAPTURE(eps);
+        CAPTURE(y);
+        CAPTURE(w);
+        REQUIRE(sphere_trace(glm::vec3(0.0f, y, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+        CHECK(std::abs(s - sphere_t(y)) <= 0.05f * eps);
+        CHECK(march_distance(glm::vec3(0.0f, y, -5.0f + s)) > 0.0f);  // never inside
+      }
+    }
+  }
+}
+
+TEST_CASE("sphere_trace: the threshold compares the unscaled distance") {
+  // step_scale 0.5 halves the steps only. The classic rule tested 0.5 * distance, so a ray
+  // passing 1.5 thresholds from the sphere stopped there; now it does not even probe.
+  shape = 0;
+  MarchSettings m = settings(1.0f, 4096);
+  m.epsilon = 1e-3f;
+  m.step_scale = 0.5f;
+  float s;
+  std::uint32_t steps;
+  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 1.0015f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+  CHECK(std::abs(s - sphere_t(0.8f)) <= 0.05f * m.epsilon);
+}
+
+TEST_CASE("sphere_trace: probes and bisection stay within max_steps") {
+  // Every budget from 1 on: at most max_steps evaluations; a hit (once a sign change is found,
+  // its bisection possibly cut short) is never inside; an unconfirmed march is a miss.
+  shape = 0;
+  std::uint32_t first_hit = 0;
+  for (std::uint32_t n = 1; n <= 40; ++n) {
+    MarchSettings m = settings(1.0f, n);
+    m.epsilon = 1e-3f;
+    float s;
+    std::uint32_t steps;
+    const bool hit = sphere_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps);
+    CAPTURE(n);
+    CHECK(steps <= n);
+    if (!hit) continue;
+    if (first_hit == 0) first_hit = n;
+    CHECK(march_distance(glm::vec3(0.0f, 0.8f, -5.0f + s)) > 0.0f);
+    CHECK(s <= sphere_t(0.8f));
+  }
+  CHECK(first_hit > 0u);
+}
+
+TEST_CASE("sphere_trace: a march that starts inside reports its start") {
+  shape = 0;
+  float s = -1.0f;
+  std::uint32_t steps;
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
+  CHECK(s == 0.0f);
+  CHECK(steps == 1u);
 }
 
 TEST_CASE("over-relaxation does not tunnel through a thin plate") {
@@ -93,7 +196,9 @@ TEST_CASE("over-relaxation finds a thin plate just before the end of the range")
     CAPTURE(w);
     REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 2.0f, settings(w), s, steps));
     CHECK(s == doctest::Approx(1.99f).epsilon(1e-5));
-    CHECK(steps <= 3u);  // the relaxed step, then the plain step's end (a hit there)
+    // The relaxed step (past s_hi: not evaluated) or the start, the plain step's end (inside
+    // by rounding), one probe a threshold back, 5 bisections to 1/32 threshold: seen 8.
+    CHECK(steps <= 8u);
   }
   // Beyond the range it stays a miss, relaxed or not.
   float s;
@@ -105,16 +210,18 @@ TEST_CASE("over-relaxation finds a thin plate just before the end of the range")
 TEST_CASE("relaxed steps fall back once they stop overlapping and then march plainly") {
   // Head-on at the unit sphere from z = -5: r = 4, the relaxed step of 6.4 lands past the
   // sphere (z = 1.4, r = 0.4): 4 + 0.4 < 6.4, the spheres leave a gap, so the march goes back
-  // to s = 4 (the plain step's end) and hits there.
+  // to s = 4 (the plain step's end), exactly on the surface (distance 0: inside), so the hit
+  // is refined there: one probe a threshold back (outside), 5 bisections.
   shape = 0;
   float s;
   std::uint32_t steps;
   REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.6f), s, steps));
   CHECK(s == doctest::Approx(4.0f));
-  CHECK(steps == 3u);  // s = 0, s = 6.4 (rejected), s = 4
-  // w = 1 never falls back: two evaluations.
+  CHECK(s < 4.0f);
+  CHECK(steps == 3u + 6u);  // s = 0, s = 6.4 (rejected), s = 4; then the refinement
+  // w = 1 never falls back: two evaluations, then the same refinement.
   REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f), s, steps));
-  CHECK(steps == 2u);
+  CHECK(steps == 2u + 6u);
 }
 
 TEST_CASE("tetrahedral normal of the sphere is radial") {
