@@ -1,8 +1,11 @@
 // The method under test per pixel, from the per-pixel outputs a device wrote (scene/outputs.hpp,
 // read back as vk::Outputs): the bridge between a render and measure() (metrics.hpp).
 //
-//   const std::vector<proceduray::accuracy::Sample> samples = proceduray::accuracy::samples_from(
-//       width * height, frame.outputs.t, frame.outputs.normal, frame.outputs.steps, frame.outputs.flags);
+//   const std::size_t pixels = 64 * 48;
+//   std::vector<float> t(pixels, -1.0f), normal(4 * pixels);            // a frame's outputs (vk::Frame::outputs)
+//   std::vector<std::uint32_t> steps(pixels), flags(pixels);
+//   const std::vector<proceduray::accuracy::Sample> samples =
+//       proceduray::accuracy::samples_from(pixels, t, normal, steps, flags);   // all misses here
 //
 // A pixel hit when its t is >= 0 (the t image is cleared to -1, "nothing written"); a NaN t is a
 // hit with a NaN t, so measure() counts it as non-finite instead of a miss. normal holds four
