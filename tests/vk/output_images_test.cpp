@@ -98,7 +98,7 @@ TEST_CASE("output images hold the camera ray's t, normal, ids, steps and flags p
   CHECK(again.outputs.t == f.outputs.t);
 }
 
-TEST_CASE("output images only for the outputs asked for; none gives an empty Outputs") {
+TEST_CASE("output images exist only for the outputs asked for and none give an empty Outputs") {
   TestContext t;
   vk::Renderer some(t.ctx, ball_scene({Output::t}), options());
   const vk::Frame f = some.render(16, 16);
