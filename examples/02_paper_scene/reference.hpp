@@ -30,6 +30,7 @@
 #include "reference_objects.hpp"
 
 #include <proceduray/accuracy/metrics.hpp>
+#include <proceduray/accuracy/nearest.hpp>
 
 #include <array>
 #include <cstdint>
@@ -81,10 +82,7 @@ inline glm::dvec3 camera_direction(const ReferenceScene& s, std::uint32_t x, std
 /// The nearest hit over every object along eye + t dir (dir unit length); adds each search's cost
 /// to `costs` (by ObjectId) when given.
 inline RayReference reference_ray(const ReferenceScene& s, glm::dvec3 dir, std::array<ObjectCost, 6>* costs = nullptr) {
-  RayReference best;
-  best.reference.outcome = acc::Outcome::miss;
-  double nearest = std::numeric_limits<double>::infinity();  // nearest determined hit
-  double doubt = std::numeric_limits<double>::infinity();    // nearest point where a search stopped undecided
+  acc::NearestHit nearest;
   for (ObjectId id : reference_objects) {
     const ObjectTrace traced = trace_object(s, id, s.eye, dir);
     const acc::Result& r = traced.result;
@@ -97,16 +95,11 @@ inline RayReference reference_ray(const ReferenceScene& s, glm::dvec3 dir, std::
         c.hit_evaluations += r.evaluations;
       }
     }
-    if (r.outcome == acc::Outcome::undetermined) doubt = std::min(doubt, r.t);
-    if (r.outcome != acc::Outcome::hit || !(r.t < nearest)) continue;
-    nearest = r.t;
-    best.reference = {.outcome = acc::Outcome::hit, .t = r.t, .normal = r.normal};
-    best.object = id;
+    nearest.add(r, id);
   }
-  if (doubt < std::numeric_limits<double>::infinity() && doubt <= nearest) {  // something may lie in front: say so
-    best.reference = {.outcome = acc::Outcome::undetermined, .t = 0.0, .normal = glm::dvec3(0.0)};
-    best.object = sky_id;
-  }
+  RayReference best;
+  best.reference = nearest.reference();
+  best.object = static_cast<ObjectId>(nearest.object(sky_id));
   return best;
 }
 

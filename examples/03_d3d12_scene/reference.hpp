@@ -32,6 +32,7 @@
 #include "reference_objects.hpp"
 
 #include <proceduray/accuracy/metrics.hpp>
+#include <proceduray/accuracy/nearest.hpp>
 
 #include <array>
 #include <cstdint>
@@ -108,24 +109,16 @@ inline RayReference reference_ray(const ReferenceScene& s, glm::dvec3 dir,
   std::vector<std::uint32_t> ids;
   if (s.ground) ids.push_back(plane_id);
   for (const PlacedPrimitive& p : s.primitives) ids.push_back(object_id(p.kind));
-  RayReference best;
-  best.reference.outcome = acc::Outcome::miss;
-  double nearest = std::numeric_limits<double>::infinity();  // nearest determined hit
-  double doubt = std::numeric_limits<double>::infinity();    // nearest point where a search stopped undecided
+  acc::NearestHit nearest;
   for (std::uint32_t id : ids) {
     const ObjectTrace traced = trace_object(s, id, s.eye, dir);
     const acc::Result& r = traced.result;
     if (costs != nullptr && traced.entered) detail::count((*costs)[id], r);
-    if (r.outcome == acc::Outcome::undetermined) doubt = std::min(doubt, r.t);
-    if (r.outcome != acc::Outcome::hit || !(r.t < nearest)) continue;
-    nearest = r.t;
-    best.reference = {.outcome = acc::Outcome::hit, .t = r.t, .normal = r.normal};
-    best.object = id;
+    nearest.add(r, id);
   }
-  if (doubt < std::numeric_limits<double>::infinity() && doubt <= nearest) {  // something may lie in front: say so
-    best.reference = {.outcome = acc::Outcome::undetermined, .t = 0.0, .normal = glm::dvec3(0.0)};
-    best.object = sky_id;
-  }
+  RayReference best;
+  best.reference = nearest.reference();
+  best.object = static_cast<std::uint32_t>(nearest.object(sky_id));
   return best;
 }
 

@@ -42,11 +42,12 @@ namespace acc = proceduray::accuracy;
 
 /// One line per object: what a reader compares first.
 void print_objects(const paper::ReferenceImage& truth, const std::vector<acc::Sample>& samples,
-                   const std::vector<paper::ObjectId>& device_objects) {
+                   const std::vector<paper::ObjectId>& device_objects, const std::vector<acc::Metrics>& per_object) {
   std::printf("\n%-11s %6s %8s %9s %9s %9s %9s %9s %9s %9s\n", "object", "hits", "sil1 fh%", "sil2 fh%", "miss%",
               "depth med", "depth p99", "depth max", "normal med", "steps");
-  for (const auto& [id, label] : paper::named_objects) {
-    const acc::Metrics m = paper::measure_object(truth, samples, device_objects, id);
+  for (std::size_t o = 0; o < paper::named_objects.size(); ++o) {
+    const auto& [id, label] = paper::named_objects[o];
+    const acc::Metrics& m = per_object[o];
     const acc::ClassStats& a = m.all;
     double steps = 0.0;  // mean over the rays that see the object, in the reference or the render
     std::size_t rays = 0;
@@ -102,7 +103,11 @@ int run(const Knobs& k) {
               frame.trace_ms, reference_s, static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
   proceduray::accuracy::write_table(std::cout, m);
   std::fflush(stdout);
-  print_objects(truth, samples, device_objects);
+  std::vector<acc::Metrics> per_object;  // measured once: the table and the CSV both use them
+  for (const auto& named : paper::named_objects) {
+    per_object.push_back(paper::measure_object(truth, samples, device_objects, named.first));
+  }
+  print_objects(truth, samples, device_objects, per_object);
   std::printf("(depth in pixel footprints; fh%%: false hits among the silhouette band's rays; steps: mean per ray that sees the object)\n");
   if (!k.csv.empty()) {
     std::ofstream out(k.csv, k.append ? std::ios::app : std::ios::trunc);
@@ -118,9 +123,9 @@ int run(const Knobs& k) {
     with_object.push_back({"object", "all"});
     if (!k.append || out.tellp() == 0) acc::write_csv_header(out, with_object);
     acc::write_csv_rows(out, m, with_object);
-    for (const auto& [id, label] : paper::named_objects) {
-      with_object.back().value = label;
-      acc::write_csv_rows(out, paper::measure_object(truth, samples, device_objects, id), with_object);
+    for (std::size_t o = 0; o < paper::named_objects.size(); ++o) {
+      with_object.back().value = paper::named_objects[o].second;
+      acc::write_csv_rows(out, per_object[o], with_object);
     }
     std::printf("\nwrote %s\n", k.csv.c_str());
   }
