@@ -36,8 +36,17 @@
 // So hits lie within t / 32 of a crossing, and silhouettes are not fattened. The price: more
 // evaluations per hit (probes, ~5 bisections), grazing rays march past the surface instead of
 // stopping at it, and a part thinner than the probes along the ray (under t) may be stepped
-// over (then the ray hits what lies behind, or misses). A march whose first point is inside
-// has no outside point and reports s_lo.
+// over (then the ray hits what lies behind, or misses).
+//
+// A march whose first point is inside (a ray from inside the object, e.g. a camera in it)
+// reports where the ray LEAVES, as the closed forms do (box, sphere, Pac-man), so hit shaders
+// and cull flags treat every primitive alike: the exit's normal faces away from the ray (back
+// facing). It marches the negated bound, which an SDF provides (distance < 0 inside, as far
+// from the surface as outside); the same probe and bisection rule then brackets the exit, and
+// the reported point is the last one inside. An estimate that is 0 inside (the fractals) gives
+// no way out: that march is a MISS (no exit is claimed, and no hit at the ray's start, which
+// would be a wrong surface with an arbitrary normal). A first point exactly on the surface
+// (distance 0) is the same miss: a secondary ray started on its surface does not hit it there.
 //
 // Knobs (MarchSettings, all run-time values):
 //   max_steps       distance evaluations at most, probes and bisection included; when they
@@ -91,8 +100,9 @@ PROCEDURAY_CONST real march_refine_fraction = R(0.03125);
 PROCEDURAY_CONST real march_probe_scale = R(2.0);
 PROCEDURAY_CONST real march_probe_min = R(0.0625);
 
-/// Marches o + s u for s in [s_lo, s_hi]; true with the last point outside before the first
-/// sign change found (see the header). `steps` counts distance evaluations, on a hit and on a
+/// Marches o + s u for s in [s_lo, s_hi]; true with the last point on the start's side before
+/// the first sign change found: outside, or inside for a march that starts in an SDF and
+/// reports the exit (see the header). `steps` counts distance evaluations, on a hit and on a
 /// miss, probes and bisection included, and never exceeds m.max_steps.
 PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, MarchSettings m,
                                     PROCEDURAY_OUT(real) s_hit, PROCEDURAY_OUT(uint) steps) {
@@ -104,8 +114,8 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
   real previous_radius = R(0.0);  // scaled distance at the previous point: no surface within it
   real step = R(0.0);             // the step that led to s
   bool relaxed = false;           // that step was w * previous_radius, w > 1 (a probe is not)
-  real outside = s_lo;            // the last point evaluated outside (distance > 0)
-  bool any_outside = false;
+  real outside = s_lo;            // the last point evaluated on the start's side (side * distance > 0)
+  real side = R(1.0);             // -1 when the march starts inside and looks for the exit
   s_hit = s_lo;
   steps = 0u;
   while (steps < m.max_steps) {
@@ -123,6 +133,13 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
     }
     real d = march_distance(o + s * u);
     steps += 1u;
+    if (steps == 1u && d <= R(0.0)) {
+      // Starts inside: look for the exit on the negated bound, if it has one (see the header).
+      if (!(d < R(0.0))) return false;
+      side = -R(1.0);
+      w = R(1.0);  // relaxation is for the approach from outside; the exit marches plainly
+    }
+    d = side * d;
     real r = k * d;
     // The unbounding spheres of the previous point (radius previous_radius) and this one (|r|)
     // leave no gap on the ray only if they overlap; after a relaxed step that does not hold, or
@@ -135,12 +152,7 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
       continue;
     }
     if (d <= R(0.0)) {
-      // Inside: the surface lies in (outside, s]. A march that starts inside has no outside
-      // point to bracket with and reports where it starts.
-      if (!any_outside) {
-        s_hit = s;
-        return true;
-      }
+      // Crossed: the surface lies in (outside, s] (the first point is never here: see above).
       real a = outside;
       real b = s;
       // After a long step (not a probe) the crossing is most likely just behind s (an exact
@@ -148,7 +160,7 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
       // back saves bisecting the whole step.
       real back = b - march_epsilon(m, b);
       if (back - a > march_epsilon(m, a) && steps < m.max_steps) {
-        real db = march_distance(o + back * u);
+        real db = side * march_distance(o + back * u);
         steps += 1u;
         if (db <= R(0.0)) b = back;
         else a = back;
@@ -156,7 +168,7 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
       while (steps < m.max_steps && b - a > march_refine_fraction * march_epsilon(m, a)) {
         real mid = R(0.5) * (a + b);
         if (!(mid > a && mid < b)) break;  // the bracket is down to adjacent floats
-        real dm = march_distance(o + mid * u);
+        real dm = side * march_distance(o + mid * u);
         steps += 1u;
         if (dm <= R(0.0)) b = mid;
         else a = mid;
@@ -165,7 +177,6 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
       return true;
     }
     outside = s;
-    any_outside = true;
     previous_radius = r;
     real threshold = march_epsilon(m, s);
     if (d < threshold) {

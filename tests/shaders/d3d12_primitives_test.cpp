@@ -65,6 +65,33 @@ TEST_CASE("box hits its face with the axis normal and leaves from inside") {
   CHECK(back.t == doctest::Approx(5.6f));
 }
 
+TEST_CASE("SDF primitives from inside report the exit as the box does") {
+  // sphere_trace marches the negated distance from inside: the exit, back facing, so the cull
+  // bits treat a marched primitive as they treat the closed forms.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (std::uint32_t kind = sdf_mini_spheres; kind <= sdf_fractal_pyramid; ++kind) {
+    CAPTURE(kind);
+    std::size_t tried = 0, exits = 0;
+    for (int i = 0; i < 2000 && tried < 40; ++i) {
+      const glm::vec3 o(0.9f * u(rng), 0.9f * u(rng), 0.9f * u(rng));
+      if (!(sdf_distance(kind, o, default_params(kind)) < -0.01f)) continue;
+      ++tried;
+      const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(1e-3f));
+      const Hit h = intersect(kind, o, d);
+      REQUIRE(h.found);
+      exits += h.t > 0.0f && glm::dot(h.n, d) > 0.0f;
+      // Within the refinement of the crossing, from the inside: -threshold/32 < distance < 0.
+      const float at = sdf_distance(kind, o + h.t * d, default_params(kind));
+      CHECK(at <= 0.0f);
+      CHECK(at > -1e-4f);
+      CHECK_FALSE(intersect(kind, o, d, hit_cull_back).found);
+    }
+    CHECK(tried >= 20);
+    CHECK(exits == tried);
+  }
+}
+
 TEST_CASE("box slab test needs no infinities for zero and signed zero directions") {
   // Exactly axis-parallel with -0 components, origin on a slab plane: a hit, finite values.
   const Hit on_plane = intersect(primitive_box, {0.6f, 0.0f, -3.0f}, {-0.0f, -0.0f, 1.0f});

@@ -4,14 +4,20 @@
 // tetrahedral normals.
 #include "common/glsl_cpp.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
 namespace sphere_trace_test {
 using namespace proceduray_glsl_cpp;
-// 0: unit sphere; 1: thin plate |z| <= 0.01 (exact distances, Lipschitz 1).
+// 0: unit sphere; 1: thin plate |z| <= 0.01 (exact distances, Lipschitz 1); 2: the unit sphere
+// as an estimate that is 0 inside (as the fractals' are).
 inline int shape = 0;
-inline float march_distance(vec3 p) { return shape == 0 ? length(p) - 1.0f : std::abs(p.z) - 0.01f; }
+inline float march_distance(vec3 p) {
+  if (shape == 1) return std::abs(p.z) - 0.01f;
+  const float d = length(p) - 1.0f;
+  return shape == 2 ? std::max(d, 0.0f) : d;
+}
 #include "../../shaders/marching/sphere_trace.glsl"
 }  // namespace sphere_trace_test
 
@@ -162,12 +168,46 @@ TEST_CASE("sphere_trace: probes and bisection stay within max_steps") {
   CHECK(first_hit > 0u);
 }
 
-TEST_CASE("sphere_trace: a march that starts inside reports its start") {
+TEST_CASE("sphere_trace: a march that starts inside an SDF reports where it leaves") {
+  // As the closed forms do: the exit, bracketed and refined like an entry, reported from the
+  // start's side (inside), so cull flags see a back-facing hit. Relaxation does not change it.
   shape = 0;
-  float s = -1.0f;
+  for (float w : {1.0f, 1.6f}) {
+    for (float z : {-0.5f, 0.0f, 0.9f}) {
+      CAPTURE(w);
+      CAPTURE(z);
+      MarchSettings m = settings(w);
+      m.epsilon = 1e-3f;
+      float s = -1.0f;
+      std::uint32_t steps;
+      REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, z), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+      const float exit = 1.0f - z;
+      CHECK(s <= exit);
+      CHECK(exit - s <= march_refine_fraction * m.epsilon + 1e-6f);
+      CHECK(march_distance(glm::vec3(0.0f, 0.0f, z + s)) < 0.0f);  // the start's side
+      CHECK(steps <= 16u);  // one plain step lands on the surface, then the refinement (seen 7)
+    }
+  }
+  // The exit lies beyond the range: a miss, not a hit at the range's end.
+  float s;
   std::uint32_t steps;
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
-  CHECK(s == 0.0f);
+  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.0f, settings(), s, steps));
+}
+
+TEST_CASE("sphere_trace: inside an estimate that is zero there or on the surface is a miss") {
+  // No bound to march out on: no exit is claimed, and no hit at the start (the old rule's
+  // wrong surface with an arbitrary normal). One evaluation decides it.
+  shape = 2;
+  float s;
+  std::uint32_t steps;
+  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
+  CHECK(steps == 1u);
+  // From outside the same estimate is hit as the exact sphere is.
+  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.3f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
+  CHECK(s == doctest::Approx(sphere_t(0.3f)).epsilon(1e-4));
+  // A secondary ray that starts exactly on its surface does not hit it there.
+  shape = 0;
+  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.0f, 10.0f, settings(), s, steps));
   CHECK(steps == 1u);
 }
 
