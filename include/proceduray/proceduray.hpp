@@ -25,6 +25,7 @@
 #include <proceduray/scene/scene_of.hpp>
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
+#include <proceduray/scene/world_origin.hpp>
 #include <proceduray/shader/shader.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/blas_input.hpp>
