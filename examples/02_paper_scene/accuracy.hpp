@@ -13,6 +13,7 @@
 
 #include "paper_scene.hpp"
 #include "reference.hpp"
+#include "../common/object_metrics.hpp"
 
 #include <proceduray/accuracy/metrics.hpp>
 
@@ -56,14 +57,8 @@ inline std::vector<ObjectId> device_objects(const pr::Plan& plan, std::span<cons
 /// The metrics of one object's view (see the top of this header).
 inline pr::accuracy::Metrics measure_object(const ReferenceImage& truth, std::span<const pr::accuracy::Sample> samples,
                                             std::span<const ObjectId> seen, ObjectId object) {
-  namespace acc = pr::accuracy;
-  std::vector<acc::Reference> refs = truth.pixels;
-  std::vector<acc::Sample> mine(samples.begin(), samples.end());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (refs[i].outcome == acc::Outcome::hit && truth.objects[i] != object) refs[i] = {.outcome = acc::Outcome::miss};
-    if (mine[i].hit && seen[i] != object) mine[i].hit = false;
-  }
-  return acc::measure(truth.frame(), mine, refs);
+  return examples::measure_object(truth.frame(), std::span<const pr::accuracy::Reference>(truth.pixels),
+                                  std::span<const ObjectId>(truth.objects), samples, seen, object);
 }
 
 }  // namespace paper

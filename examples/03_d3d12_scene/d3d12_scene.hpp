@@ -31,9 +31,10 @@ inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .n
 class D3d12Scene : public pr::SceneOf<Interface> {
  public:
   /// The given primitives (each validated: throws PrimitiveError) placed by `layout`; the
-  /// ground only with Layout::sample.
-  explicit D3d12Scene(std::span<const Primitive> primitives, Layout layout = Layout::sample) {
+  /// ground only with Layout::sample; per-pixel `outputs` of the camera rays (none: no cost).
+  explicit D3d12Scene(std::span<const Primitive> primitives, Layout layout = Layout::sample, pr::OutputSet outputs = {}) {
     for (const Primitive& p : primitives) validate(p);
+    set_outputs(outputs);
     m_primitives.assign(primitives.begin(), primitives.end());
     m_radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
     m_shadow = add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
@@ -63,6 +64,8 @@ class D3d12Scene : public pr::SceneOf<Interface> {
     }
   }
   D3d12Scene() : D3d12Scene(default_primitives()) {}
+  /// The sample's primitives and layout with per-pixel outputs.
+  explicit D3d12Scene(pr::OutputSet outputs) : D3d12Scene(default_primitives(), Layout::sample, outputs) {}
 
   std::span<const Primitive> primitives() const { return m_primitives; }
 

@@ -5,7 +5,7 @@
 //   if (!ray_clip_aabb(o, d, box_min, box_max, t0, t1)) return;   // [t0, t1] now inside the box
 //   if (t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) reportIntersectionEXT(t, 0u);
 //   vec3 n = safe_normalize(v, vec3(0.0f, 1.0f, 0.0f));
-//   vec3 origin = offset_ray_origin(hit_point, geometric_normal);   // GLSL only
+//   vec3 origin = offset_ray_origin(hit_point, geometric_normal);   // float (also in C++)
 //
 // Why no infinities: the usual slab test divides by direction components and relies on
 // 1/0 = inf. Vulkan does not promise IEEE infinities (without SignedZeroInfNanPreserve a
@@ -49,24 +49,28 @@ PROCEDURAY_INLINE real3 safe_normalize(real3 v, real3 fallback) {
   return len2 > R(1.0e-30) ? v * inversesqrt(len2) : fallback;
 }
 
-#ifndef __cplusplus
 /// Moves a hit point off its surface along the geometric normal `n` (pointing to the side the
 /// new ray leaves on), so a shadow or reflection ray does not hit the surface it starts on.
 /// The offset is a fixed number of float ulps of each coordinate, so it works at any distance
 /// from the origin; near the origin, where ulps are tiny, a small absolute offset is used
-/// instead (the method of Waechter and Binder, Ray Tracing Gems ch. 6).
-vec3 offset_ray_origin(vec3 p, vec3 n) {
-  const float near_origin = 1.0f / 32.0f;
-  const float float_scale = 1.0f / 65536.0f;
-  const float int_scale = 256.0f;
+/// instead (the method of Waechter and Binder, Ray Tracing Gems ch. 6). The price is a contact
+/// leak: an occluder nearer the surface than the offset (up to int_scale = 256 ulps of the
+/// largest coordinate, or float_scale = 2^-16 near the origin) is stepped over.
+/// Float only, in C++ too (vec3, not real3): the offset counts float ulps, and a double
+/// version would need other constants. In C++ floatBitsToInt / intBitsToFloat are GLM's (its
+/// GLSL core functions, same semantics), so a class-template includer instantiates this
+/// member in both precisions without error, and it always works in float.
+PROCEDURAY_INLINE vec3 offset_ray_origin(vec3 p, vec3 n) {
+  const float near_origin = R(1.0) / R(32.0);
+  const float float_scale = R(1.0) / R(65536.0);
+  const float int_scale = R(256.0);
   ivec3 of_i = ivec3(int_scale * n);
-  vec3 p_i = vec3(intBitsToFloat(floatBitsToInt(p.x) + (p.x < 0.0f ? -of_i.x : of_i.x)),
-                  intBitsToFloat(floatBitsToInt(p.y) + (p.y < 0.0f ? -of_i.y : of_i.y)),
-                  intBitsToFloat(floatBitsToInt(p.z) + (p.z < 0.0f ? -of_i.z : of_i.z)));
+  vec3 p_i = vec3(intBitsToFloat(floatBitsToInt(p.x) + (p.x < R(0.0) ? -of_i.x : of_i.x)),
+                  intBitsToFloat(floatBitsToInt(p.y) + (p.y < R(0.0) ? -of_i.y : of_i.y)),
+                  intBitsToFloat(floatBitsToInt(p.z) + (p.z < R(0.0) ? -of_i.z : of_i.z)));
   return vec3(abs(p.x) < near_origin ? p.x + float_scale * n.x : p_i.x,
               abs(p.y) < near_origin ? p.y + float_scale * n.y : p_i.y,
               abs(p.z) < near_origin ? p.z + float_scale * n.z : p_i.z);
 }
-#endif
 
 #endif

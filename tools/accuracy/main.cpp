@@ -1,9 +1,11 @@
 // How wrong is a picture? Renders a scene on a device with per-pixel outputs (t, normal, steps,
 // flags), computes the ground truth for the same camera rays on the CPU in double
-// (examples/02_paper_scene/reference.hpp: closed forms, Lipschitz and escape-test searches, never
-// the shaders' marching loop), and prints the accuracy table (accuracy/report.hpp) and a CSV.
+// (examples/02_paper_scene/reference.hpp, examples/03_d3d12_scene/reference.hpp: closed forms,
+// Lipschitz and escape-test searches, never the shaders' marching loop), and prints the accuracy
+// table (accuracy/report.hpp), a line per object and a CSV.
 //
 //   proceduray_accuracy --size 320x240 --device cpu --csv paper.csv
+//   proceduray_accuracy --scene d3d12 --size 320x240 --device cpu
 //   proceduray_accuracy --device gpu --steps 512 --threshold 0.25 --csv sweep.csv --append
 //
 // Secondary rays (shadows, reflections) are off, so the steps a pixel reports are its camera
@@ -11,6 +13,7 @@
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/accuracy.hpp"
 #include "02_paper_scene/reference.hpp"
+#include "03_d3d12_scene/accuracy.hpp"
 
 #include <proceduray/accuracy/report.hpp>
 #include <proceduray/accuracy/samples.hpp>
@@ -26,6 +29,7 @@
 namespace {
 
 struct Knobs {
+  std::string scene = "paper";
   std::string size = "160x120";
   std::string device = "auto";
   std::string csv;
@@ -34,32 +38,41 @@ struct Knobs {
   float time = 0.0f;
   std::uint32_t steps = 0;   // 0: the scene's default
   float threshold = -1.0f;   // footprints; < 0: the scene's default
-  double spacing = 1.0e-3;   // reference spacing, footprints
+  float epsilon = -1.0f;     // world units; < 0: the scene's default
+  double spacing = 1.0e-3;   // reference spacing, footprints (paper scene)
   std::uint32_t iteration_factor = 1;
 };
 
 namespace acc = proceduray::accuracy;
 
+/// One object's line of the table and its rows of the CSV.
+struct ObjectRow {
+  std::string label;
+  acc::Metrics metrics;
+  double steps = 0.0;  // mean evaluations per ray that sees the object (reference or render)
+};
+
+/// What a scene's run gives the report.
+struct Measurement {
+  std::string settings;         // the scene line of the report
+  std::string reference;        // the reference line of the report
+  double trace_ms = 0.0;
+  acc::Metrics all;
+  std::vector<ObjectRow> objects;
+  std::vector<acc::Label> labels;  // the CSV's knob columns
+};
+
 /// One line per object: what a reader compares first.
-void print_objects(const paper::ReferenceImage& truth, const std::vector<acc::Sample>& samples,
-                   const std::vector<paper::ObjectId>& device_objects, const std::vector<acc::Metrics>& per_object) {
-  std::printf("\n%-11s %6s %8s %9s %9s %9s %9s %9s %9s %9s\n", "object", "hits", "sil1 fh%", "sil2 fh%", "miss%",
+void print_objects(const std::vector<ObjectRow>& rows) {
+  std::printf("\n%-15s %6s %8s %9s %9s %9s %9s %9s %9s %9s\n", "object", "hits", "sil1 fh%", "sil2 fh%", "miss%",
               "depth med", "depth p99", "depth max", "normal med", "steps");
-  for (std::size_t o = 0; o < paper::named_objects.size(); ++o) {
-    const auto& [id, label] = paper::named_objects[o];
-    const acc::Metrics& m = per_object[o];
+  for (const ObjectRow& row : rows) {
+    const acc::Metrics& m = row.metrics;
     const acc::ClassStats& a = m.all;
-    double steps = 0.0;  // mean over the rays that see the object, in the reference or the render
-    std::size_t rays = 0;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-      if (truth.objects[i] != id && device_objects[i] != id) continue;
-      steps += samples[i].steps;
-      ++rays;
-    }
-    std::printf("%-11s %6llu %8.2f %9.2f %9.2f %9.3g %9.3g %9.3g %9.3g %9.3g\n", label,
+    std::printf("%-15s %6llu %8.2f %9.2f %9.2f %9.3g %9.3g %9.3g %9.3g %9.3g\n", row.label.c_str(),
                 static_cast<unsigned long long>(a.both_hit), 100.0 * m[acc::PixelClass::silhouette_1px].false_hit_rate(),
                 100.0 * m[acc::PixelClass::silhouette_2px].false_hit_rate(), 100.0 * a.false_miss_rate(),
-                a.depth.median, a.depth.p99, a.depth.max, a.normal_degrees.median, rays > 0 ? steps / double(rays) : 0.0);
+                a.depth.median, a.depth.p99, a.depth.max, a.normal_degrees.median, row.steps);
   }
 }
 
@@ -67,6 +80,98 @@ proceduray::vk::DevicePreference device_of(const std::string& name) {
   if (name == "cpu") return proceduray::vk::DevicePreference::cpu;
   if (name == "gpu") return proceduray::vk::DevicePreference::gpu;
   return proceduray::vk::DevicePreference::automatic;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string format(const char* fmt, auto... values) {
+  char text[512];
+  std::snprintf(text, sizeof text, fmt, values...);
+  return text;
+}
+
+/// The knobs every scene shares, applied to its constants.
+template <class Constants>
+void apply(const Knobs& k, Constants& constants) {
+  constants.flags = 0;  // camera rays only: no shadow or reflection rays
+  if (k.steps > 0) constants.max_steps = k.steps;
+  if (k.threshold >= 0.0f) constants.footprint_scale = k.threshold;
+  if (k.epsilon >= 0.0f) constants.epsilon = k.epsilon;
+}
+
+template <class Constants>
+std::vector<acc::Label> knob_labels(const Constants& c) {
+  return {{"max_steps", std::to_string(c.max_steps)}, {"threshold_px", std::to_string(c.footprint_scale)},
+          {"epsilon", std::to_string(c.epsilon)}, {"step_scale", std::to_string(c.step_scale)}};
+}
+
+Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
+  const paper::PaperScene scene(paper::accuracy_outputs);
+  proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
+  paper::SceneConstants constants = paper::default_constants(width, height, k.time);
+  apply(k, constants);
+  renderer.set(paper::constants_slot, constants);
+  renderer.warm_up();
+  const proceduray::vk::Frame frame = renderer.render(width, height);
+  const auto samples = acc::samples_from(std::size_t{width} * height, frame.outputs.t, frame.outputs.normal,
+                                         frame.outputs.steps, frame.outputs.flags);
+  const auto start = std::chrono::steady_clock::now();
+  const paper::ReferenceImage truth =
+      paper::reference_image(constants, width, height, {.spacing = k.spacing, .iteration_factor = k.iteration_factor});
+  Measurement out;
+  out.reference = format("reference: %.2f s, %.3g evaluations (spacing %.3g footprints, iterations x%u)",
+                         seconds_since(start), static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
+  out.settings = format("scene: paper, %ux%u, time %.2f s, %u steps, threshold %.3g footprints, epsilon %.3g, step scale %.3g",
+                        width, height, static_cast<double>(k.time), constants.max_steps,
+                        static_cast<double>(constants.footprint_scale), static_cast<double>(constants.epsilon),
+                        static_cast<double>(constants.step_scale));
+  out.trace_ms = frame.trace_ms;
+  out.all = acc::measure(truth.frame(), samples, truth.pixels);
+  const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
+  for (const auto& [id, label] : paper::named_objects) {
+    out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),
+                           examples::mean_steps(std::span<const paper::ObjectId>(truth.objects),
+                                                std::span<const acc::Sample>(samples),
+                                                std::span<const paper::ObjectId>(seen), id)});
+  }
+  out.labels = knob_labels(constants);
+  return out;
+}
+
+Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
+  const d3d12::D3d12Scene scene(d3d12::accuracy_outputs);
+  proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options());
+  d3d12::SceneConstants constants = d3d12::default_constants(d3d12::sample_camera(width, height), k.time);
+  apply(k, constants);
+  renderer.set(d3d12::constants_slot, constants);
+  renderer.warm_up();
+  const proceduray::vk::Frame frame = renderer.render(width, height);
+  const auto samples = acc::samples_from(std::size_t{width} * height, frame.outputs.t, frame.outputs.normal,
+                                         frame.outputs.steps, frame.outputs.flags);
+  const auto start = std::chrono::steady_clock::now();
+  const d3d12::ReferenceImage truth = d3d12::reference_image(constants, width, height);
+  Measurement out;
+  out.reference = format("reference: %.2f s, %.3g evaluations", seconds_since(start),
+                         static_cast<double>(truth.evaluations));
+  out.settings = format("scene: d3d12, %ux%u, time %.2f s, %u steps, threshold %.3g footprints, epsilon %.3g, "
+                        "step scale %.3g, metaballs %s (%u steps)",
+                        width, height, static_cast<double>(k.time), constants.max_steps,
+                        static_cast<double>(constants.footprint_scale), static_cast<double>(constants.epsilon),
+                        static_cast<double>(constants.step_scale),
+                        constants.metaball_method == d3d12::metaball_fixed ? "fixed" : "lipschitz", constants.metaball_steps);
+  out.trace_ms = frame.trace_ms;
+  out.all = acc::measure(truth.frame(), samples, truth.pixels);
+  const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);
+  for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) {
+    out.objects.push_back({d3d12::object_name(id), d3d12::measure_object(truth, samples, seen, id),
+                           examples::mean_steps(std::span<const std::uint32_t>(truth.objects),
+                                                std::span<const acc::Sample>(samples),
+                                                std::span<const std::uint32_t>(seen), id)});
+  }
+  out.labels = knob_labels(constants);
+  return out;
 }
 
 int run(const Knobs& k) {
@@ -77,37 +182,12 @@ int run(const Knobs& k) {
     return 2;
   }
   proceduray::vk::Context ctx({.device = device_of(k.device), .validation = k.validation});
-  const paper::PaperScene scene(paper::accuracy_outputs);
-  proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
-  paper::SceneConstants constants = paper::default_constants(width, height, k.time);
-  constants.flags = 0;  // camera rays only: no shadow or reflection rays
-  if (k.steps > 0) constants.max_steps = k.steps;
-  if (k.threshold >= 0.0f) constants.footprint_scale = k.threshold;
-  renderer.set(paper::constants_slot, constants);
-  renderer.warm_up();
-  const proceduray::vk::Frame frame = renderer.render(width, height);
-  const std::size_t pixels = std::size_t{width} * height;
-  const auto samples = proceduray::accuracy::samples_from(pixels, frame.outputs.t, frame.outputs.normal,
-                                                          frame.outputs.steps, frame.outputs.flags);
-  const auto start = std::chrono::steady_clock::now();
-  const paper::ReferenceImage truth =
-      paper::reference_image(constants, width, height, {.spacing = k.spacing, .iteration_factor = k.iteration_factor});
-  const double reference_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const proceduray::accuracy::Metrics m = proceduray::accuracy::measure(truth.frame(), samples, truth.pixels);
-  const std::vector<paper::ObjectId> device_objects = paper::device_objects(renderer.plan(), frame.outputs.ids);
-
-  std::printf("device: %s\nscene: paper, %ux%u, time %.2f s, %u steps, threshold %.3g footprints, step scale %.3g\n",
-              ctx.name().c_str(), width, height, static_cast<double>(k.time), constants.max_steps,
-              static_cast<double>(constants.footprint_scale), static_cast<double>(constants.step_scale));
-  std::printf("trace: %.3f ms; reference: %.2f s, %.3g evaluations (spacing %.3g footprints, iterations x%u)\n\n",
-              frame.trace_ms, reference_s, static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
-  proceduray::accuracy::write_table(std::cout, m);
+  const Measurement m = k.scene == "d3d12" ? measure_d3d12(ctx, k, width, height) : measure_paper(ctx, k, width, height);
+  std::printf("device: %s\n%s\ntrace: %.3f ms; %s\n\n", ctx.name().c_str(), m.settings.c_str(), m.trace_ms,
+              m.reference.c_str());
+  acc::write_table(std::cout, m.all);
   std::fflush(stdout);
-  std::vector<acc::Metrics> per_object;  // measured once: the table and the CSV both use them
-  for (const auto& named : paper::named_objects) {
-    per_object.push_back(paper::measure_object(truth, samples, device_objects, named.first));
-  }
-  print_objects(truth, samples, device_objects, per_object);
+  print_objects(m.objects);
   std::printf("(depth in pixel footprints; fh%%: false hits among the silhouette band's rays; steps: mean per ray that sees the object)\n");
   if (!k.csv.empty()) {
     std::ofstream out(k.csv, k.append ? std::ios::app : std::ios::trunc);
@@ -115,17 +195,16 @@ int run(const Knobs& k) {
       std::fprintf(stderr, "proceduray_accuracy: cannot write '%s'; give a writable --csv path\n", k.csv.c_str());
       return 1;
     }
-    const std::vector<proceduray::accuracy::Label> labels{
-        {"scene", "paper"}, {"device", ctx.name()}, {"width", std::to_string(width)}, {"height", std::to_string(height)},
-        {"max_steps", std::to_string(constants.max_steps)}, {"threshold_px", std::to_string(constants.footprint_scale)},
-        {"step_scale", std::to_string(constants.step_scale)}, {"trace_ms", std::to_string(frame.trace_ms)}};
-    std::vector<acc::Label> with_object = labels;
-    with_object.push_back({"object", "all"});
-    if (!k.append || out.tellp() == 0) acc::write_csv_header(out, with_object);
-    acc::write_csv_rows(out, m, with_object);
-    for (std::size_t o = 0; o < paper::named_objects.size(); ++o) {
-      with_object.back().value = paper::named_objects[o].second;
-      acc::write_csv_rows(out, per_object[o], with_object);
+    std::vector<acc::Label> labels{{"scene", k.scene}, {"device", ctx.name()}, {"width", std::to_string(width)},
+                                   {"height", std::to_string(height)}};
+    labels.insert(labels.end(), m.labels.begin(), m.labels.end());
+    labels.push_back({"trace_ms", std::to_string(m.trace_ms)});
+    labels.push_back({"object", "all"});
+    if (!k.append || out.tellp() == 0) acc::write_csv_header(out, labels);
+    acc::write_csv_rows(out, m.all, labels);
+    for (const ObjectRow& row : m.objects) {
+      labels.back().value = row.label;
+      acc::write_csv_rows(out, row.metrics, labels);
     }
     std::printf("\nwrote %s\n", k.csv.c_str());
   }
@@ -137,6 +216,8 @@ int run(const Knobs& k) {
 int main(int argc, char** argv) {
   Knobs k;
   CLI::App app{"Renders a scene with per-pixel outputs and measures it against a double-precision ground truth"};
+  app.add_option("--scene", k.scene, "paper (the report's) or d3d12 (the D3D12 sample's)")
+      ->check(CLI::IsMember({"paper", "d3d12"}))->capture_default_str();
   app.add_option("--size", k.size, "image size WxH")->capture_default_str();
   app.add_option("--device", k.device, "cpu (lavapipe), gpu or auto")->check(CLI::IsMember({"cpu", "gpu", "auto"}))
       ->capture_default_str();
@@ -147,7 +228,9 @@ int main(int argc, char** argv) {
   app.add_option("--steps", k.steps, "sphere-tracing steps (0: the scene's default)")->check(CLI::Range(0u, 100000u));
   app.add_option("--threshold", k.threshold, "hit threshold in pixel footprints (default: the scene's)")
       ->check(CLI::Range(0.0f, 100.0f));
-  app.add_option("--spacing", k.spacing, "reference sample spacing in footprints")->check(CLI::Range(1e-6, 1.0))
+  app.add_option("--epsilon", k.epsilon, "absolute hit threshold floor, world units (default: the scene's)")
+      ->check(CLI::Range(0.0f, 1.0f));
+  app.add_option("--spacing", k.spacing, "reference sample spacing in footprints (paper scene)")->check(CLI::Range(1e-6, 1.0))
       ->capture_default_str();
   app.add_option("--iterations-factor", k.iteration_factor, "reference fractal iterations x this (2: truncation error)")
       ->check(CLI::Range(1u, 8u))->capture_default_str();

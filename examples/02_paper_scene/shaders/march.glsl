@@ -51,7 +51,7 @@ void march_and_report(vec3 box_min, vec3 box_max) {
   float t = s / len;
   if (!t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
   hit.normal = march_normal(o + s * u, max(march_epsilon(m, s), 1.0e-5));
-  output_steps(4u);  // the tetrahedral normal's evaluations
+  output_steps(6u);  // the central-difference normal's evaluations (at most)
 #ifdef PROCEDURAY_OUTPUTS
   if (isnan(t) || any(isnan(hit.normal))) output_flags(output_flag_nan);
 #endif

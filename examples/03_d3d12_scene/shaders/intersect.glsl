@@ -5,6 +5,7 @@
 // instance's scale; the footprint term is an angle and needs none. constants.over_relaxation is
 // the sphere tracer's w (1 = plain). With flag_count_misses a radiance ray that marched and
 // missed reports at t_max with counted_miss_kind, carrying its steps (see d3d12_types.hpp).
+// With per-pixel outputs it adds its evaluations and sets the exhausted and NaN flags.
 #ifndef D3D12_INTERSECT_GLSL
 #define D3D12_INTERSECT_GLSL
 
@@ -24,8 +25,15 @@ void intersect_record_primitive() {
   float t;
   vec3 n;
   float steps;
-  if (!d3d12_intersect(arguments.kind, arguments.params, arguments.spin, constants.time, o, d, gl_RayTminEXT, gl_RayTmaxEXT,
-                       cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps)) {
+  bool found = d3d12_intersect(arguments.kind, arguments.params, arguments.spin, constants.time, o, d, gl_RayTminEXT,
+                               gl_RayTmaxEXT, cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps);
+  output_steps(uint(steps) + (found && arguments.kind > primitive_metaballs ? 6u : 0u));  // + an SDF's normal
+#ifdef PROCEDURAY_OUTPUTS
+  // Marches that ran out of steps (the metaballs' fixed march never does: its steps are fixed).
+  if (!found && steps >= float(constants.max_steps)) output_flags(output_flag_exhausted);
+  if (found && (isnan(t) || any(isnan(n)))) output_flags(output_flag_nan);
+#endif
+  if (!found) {
     // Shadow rays skip closest-hit shaders and must not be occluded: they never report.
     if ((constants.flags & flag_count_misses) != 0u && steps > 0.0 &&
         (gl_IncomingRayFlagsEXT & gl_RayFlagsSkipClosestHitShaderEXT) == 0u) {

@@ -5,6 +5,9 @@
 void main() {
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
   vec3 n = safe_normalize(transpose(mat3(gl_WorldToObjectEXT)) * vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0));
+#ifdef PROCEDURAY_OUTPUTS
+  if (payload.depth == 0u) output_hit(n);
+#endif
   vec3 albedo = arguments.albedo;
   if (arguments.checker > 0.0) {
     ivec2 cell = ivec2(floor(vec2(p.x, p.z) / arguments.checker));

@@ -15,6 +15,9 @@ void main() {
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
   bool bad = nonfinite3(hit.normal) || isnan(hit.steps) || isinf(hit.steps) || isnan(gl_HitTEXT) || isinf(gl_HitTEXT);
   vec3 n = safe_normalize(transpose(mat3(gl_WorldToObjectEXT)) * hit.normal, -gl_WorldRayDirectionEXT);
+#ifdef PROCEDURAY_OUTPUTS
+  if (payload.depth == 0u) output_hit(n);  // the camera ray's hit (reflections reuse this shader)
+#endif
   // Marched surfaces are found within this threshold: secondary rays start twice as far out.
   float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);
   vec3 colour = shade_surface(p, n, arguments.albedo, arguments.reflectance, hit.steps > 0.0 ? 2.0 * threshold : 0.0);

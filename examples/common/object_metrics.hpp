@@ -1,0 +1,58 @@
+// One object's view of a scene's accuracy: the metrics where the reference sees that object
+// or the render's hit is on it, and the evaluations its rays took. Shared by the example
+// scenes' accuracy headers and tools/accuracy.
+//
+//   // truth: a reference image (frame(), pixels); truth_ids, seen: each pixel's object id in
+//   // the reference and in the render; samples: the render's per-pixel outputs
+//   proceduray::accuracy::Metrics m = examples::measure_object(truth.frame(),
+//       std::span<const proceduray::accuracy::Reference>(truth.pixels),
+//       std::span<const std::uint32_t>(truth_ids), samples, std::span<const std::uint32_t>(seen), 3u);
+//   double steps = examples::mean_steps(std::span<const std::uint32_t>(truth_ids),
+//       std::span<const proceduray::accuracy::Sample>(samples), std::span<const std::uint32_t>(seen), 3u);
+//
+// The reference keeps its hits only where it sees the object and the render only where its
+// hit is on the object, so silhouettes are that object's against everything else, and a false
+// hit of one object in front of another counts against the one in front.
+#pragma once
+
+#include <proceduray/accuracy/metrics.hpp>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace examples {
+
+template <class Id>
+proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& frame,
+                                             std::span<const proceduray::accuracy::Reference> reference,
+                                             std::span<const Id> reference_objects,
+                                             std::span<const proceduray::accuracy::Sample> samples,
+                                             std::span<const Id> seen, Id object) {
+  namespace acc = proceduray::accuracy;
+  std::vector<acc::Reference> refs(reference.begin(), reference.end());
+  std::vector<acc::Sample> mine(samples.begin(), samples.end());
+  for (std::size_t i = 0; i < refs.size() && i < reference_objects.size(); ++i) {
+    if (refs[i].outcome == acc::Outcome::hit && reference_objects[i] != object) refs[i] = {.outcome = acc::Outcome::miss};
+  }
+  for (std::size_t i = 0; i < mine.size() && i < seen.size(); ++i) {
+    if (mine[i].hit && seen[i] != object) mine[i].hit = false;
+  }
+  return acc::measure(frame, mine, refs);
+}
+
+/// Mean evaluations over the rays that see the object in the reference or in the render.
+template <class Id>
+double mean_steps(std::span<const Id> reference_objects, std::span<const proceduray::accuracy::Sample> samples,
+                  std::span<const Id> seen, Id object) {
+  double steps = 0.0;
+  std::size_t rays = 0;
+  for (std::size_t i = 0; i < samples.size() && i < reference_objects.size() && i < seen.size(); ++i) {
+    if (reference_objects[i] != object && seen[i] != object) continue;
+    steps += samples[i].steps;
+    ++rays;
+  }
+  return rays > 0 ? steps / double(rays) : 0.0;
+}
+
+}  // namespace examples
