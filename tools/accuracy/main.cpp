@@ -59,6 +59,7 @@ struct Measurement {
   std::string reference;        // the reference line of the report
   double trace_ms = 0.0;
   acc::Metrics all;
+  double all_steps = 0.0;          // mean evaluations over every ray of the frame
   std::vector<ObjectRow> objects;
   std::vector<acc::Label> labels;  // the CSV's knob columns
 };
@@ -81,6 +82,12 @@ proceduray::vk::DevicePreference device_of(const std::string& name) {
   if (name == "cpu") return proceduray::vk::DevicePreference::cpu;
   if (name == "gpu") return proceduray::vk::DevicePreference::gpu;
   return proceduray::vk::DevicePreference::automatic;
+}
+
+double mean_steps(const std::vector<acc::Sample>& samples) {
+  double sum = 0.0;
+  for (const acc::Sample& s : samples) sum += s.steps;
+  return samples.empty() ? 0.0 : sum / double(samples.size());
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -132,6 +139,7 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                         static_cast<double>(constants.step_scale));
   out.trace_ms = frame.trace_ms;
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
+  out.all_steps = mean_steps(samples);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
     out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),
@@ -166,6 +174,7 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                         constants.metaball_method == d3d12::metaball_fixed ? "fixed" : "lipschitz", constants.metaball_steps);
   out.trace_ms = frame.trace_ms;
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
+  out.all_steps = mean_steps(samples);
   const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);
   for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) {
     out.objects.push_back({d3d12::object_name(id), d3d12::measure_object(truth, samples, seen, id),
@@ -203,10 +212,12 @@ int run(const Knobs& k) {
     labels.insert(labels.end(), m.labels.begin(), m.labels.end());
     labels.push_back({"trace_ms", std::to_string(m.trace_ms)});
     labels.push_back({"object", "all"});
+    labels.push_back({"object_evals", std::to_string(m.all_steps)});  // per ray that sees the object
     if (!k.append || out.tellp() == 0) acc::write_csv_header(out, labels);
     acc::write_csv_rows(out, m.all, labels);
     for (const ObjectRow& row : m.objects) {
-      labels.back().value = row.label;
+      labels[labels.size() - 2].value = row.label;
+      labels.back().value = std::to_string(row.steps);
       acc::write_csv_rows(out, row.metrics, labels);
     }
     std::printf("\nwrote %s\n", k.csv.c_str());
