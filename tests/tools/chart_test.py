@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """tools/accuracy/chart.py: the Pareto front of a known sweep, the PNG's content, and bad input.
 
 Run by CTest and meson test (tools: chart.py ...). A sweep CSV with the tool's header is written

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Speed against accuracy: log-log charts of cost against depth error from proceduray_accuracy CSVs.
 
     tools/accuracy/chart.py sweep.csv --out mandelbulb.png --object mandelbulb

@@ -26,4 +26,7 @@ for knobs in "${runs[@]}"; do
   # shellcheck disable=SC2086  # the knobs are words
   "$tool" --scene "$scene" --size "$size" --device "$device" $knobs --csv "$csv" --append > /dev/null
 done
-python3 "$root/tools/accuracy/chart.py" "$csv" --out "$png" --front "${objects[@]}"
+# Debian's python3 first: python3-matplotlib installs there (a pyenv python3 may lack it).
+python=python3
+[ -x /usr/bin/python3 ] && python=/usr/bin/python3
+"$python" "$root/tools/accuracy/chart.py" "$csv" --out "$png" --front "${objects[@]}"
