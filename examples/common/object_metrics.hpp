@@ -16,9 +16,11 @@
 #pragma once
 
 #include <proceduray/accuracy/metrics.hpp>
+#include <proceduray/error.hpp>
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace examples {
@@ -30,24 +32,35 @@ proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& 
                                              std::span<const proceduray::accuracy::Sample> samples,
                                              std::span<const Id> seen, Id object) {
   namespace acc = proceduray::accuracy;
+  if (reference_objects.size() != reference.size() || seen.size() != samples.size()) {
+    throw proceduray::UsageError("examples::measure_object: " + std::to_string(reference_objects.size()) +
+                                 " reference object ids for " + std::to_string(reference.size()) + " pixels and " +
+                                 std::to_string(seen.size()) + " rendered ids for " + std::to_string(samples.size()) +
+                                 " samples; pass one id per pixel of the same frame");
+  }
   std::vector<acc::Reference> refs(reference.begin(), reference.end());
   std::vector<acc::Sample> mine(samples.begin(), samples.end());
-  for (std::size_t i = 0; i < refs.size() && i < reference_objects.size(); ++i) {
+  for (std::size_t i = 0; i < refs.size(); ++i) {
     if (refs[i].outcome == acc::Outcome::hit && reference_objects[i] != object) refs[i] = {.outcome = acc::Outcome::miss};
   }
-  for (std::size_t i = 0; i < mine.size() && i < seen.size(); ++i) {
+  for (std::size_t i = 0; i < mine.size(); ++i) {
     if (mine[i].hit && seen[i] != object) mine[i].hit = false;
   }
-  return acc::measure(frame, mine, refs);
+  return acc::measure(frame, mine, refs);  // throws for a reference and samples of different sizes
 }
 
 /// Mean evaluations over the rays that see the object in the reference or in the render.
 template <class Id>
 double mean_steps(std::span<const Id> reference_objects, std::span<const proceduray::accuracy::Sample> samples,
                   std::span<const Id> seen, Id object) {
+  if (reference_objects.size() != samples.size() || seen.size() != samples.size()) {
+    throw proceduray::UsageError("examples::mean_steps: " + std::to_string(reference_objects.size()) + " reference ids, " +
+                                 std::to_string(seen.size()) + " rendered ids and " + std::to_string(samples.size()) +
+                                 " samples; pass one of each per pixel of the same frame");
+  }
   double steps = 0.0;
   std::size_t rays = 0;
-  for (std::size_t i = 0; i < samples.size() && i < reference_objects.size() && i < seen.size(); ++i) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
     if (reference_objects[i] != object && seen[i] != object) continue;
     steps += samples[i].steps;
     ++rays;

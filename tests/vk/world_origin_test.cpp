@@ -4,6 +4,7 @@
 // ray into object space in float; ground truth is the closed form in double from the exact eye
 // and centre, along each pixel's float direction. tests/scene/world_origin_test.cpp measures the
 // same on the CPU over 10^0..10^7; this checks that the device's float path behaves the same.
+#include "renderer_scene.hpp"
 #include "test_context.hpp"
 #include "test_paths.hpp"
 
@@ -20,14 +21,8 @@
 
 namespace world_origin_device_test {
 namespace pr = proceduray;
-struct Colour {
-  glm::vec3 rgb;
-};
-PROCEDURAY_STRUCT(Colour, scalar, rgb);
-struct BallHit {
-  glm::vec3 normal;
-};
-PROCEDURAY_STRUCT(BallHit, scalar, normal);
+using renderer_scene::BallHit;  // the ball's attributes and the primary ray's payload, as the renderer tests'
+using renderer_scene::Colour;
 /// far.rgen's camera: float world coordinates as the host hands them over.
 struct FarView {
   glm::vec4 eye, forward, right, up;

@@ -25,6 +25,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -59,7 +60,6 @@ struct Measurement {
   std::string reference;        // the reference line of the report
   double trace_ms = 0.0;
   acc::Metrics all;
-  double all_steps = 0.0;          // mean evaluations over every ray of the frame
   std::vector<ObjectRow> objects;
   std::vector<acc::Label> labels;  // the CSV's knob columns
 };
@@ -84,10 +84,18 @@ proceduray::vk::DevicePreference device_of(const std::string& name) {
   return proceduray::vk::DevicePreference::automatic;
 }
 
-double mean_steps(const std::vector<acc::Sample>& samples) {
-  double sum = 0.0;
-  for (const acc::Sample& s : samples) sum += s.steps;
-  return samples.empty() ? 0.0 : sum / double(samples.size());
+/// Renders one frame of `constants` after a warm-up; the frame and its per-pixel samples.
+template <class Constants>
+std::pair<proceduray::vk::Frame, std::vector<acc::Sample>> render(proceduray::vk::Renderer& renderer,
+                                                                  proceduray::UniformSlot<Constants> slot,
+                                                                  const Constants& constants, unsigned width,
+                                                                  unsigned height) {
+  renderer.set(slot, constants);
+  renderer.warm_up();
+  proceduray::vk::Frame frame = renderer.render(width, height);
+  std::vector<acc::Sample> samples = acc::samples_from(std::size_t{width} * height, frame.outputs.t, frame.outputs.normal,
+                                                       frame.outputs.steps, frame.outputs.flags);
+  return {std::move(frame), std::move(samples)};
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -122,11 +130,7 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::SceneConstants constants = paper::default_constants(width, height, k.time);
   apply(k, constants);
-  renderer.set(paper::constants_slot, constants);
-  renderer.warm_up();
-  const proceduray::vk::Frame frame = renderer.render(width, height);
-  const auto samples = acc::samples_from(std::size_t{width} * height, frame.outputs.t, frame.outputs.normal,
-                                         frame.outputs.steps, frame.outputs.flags);
+  const auto [frame, samples] = render(renderer, paper::constants_slot, constants, width, height);
   const auto start = std::chrono::steady_clock::now();
   const paper::ReferenceImage truth =
       paper::reference_image(constants, width, height, {.spacing = k.spacing, .iteration_factor = k.iteration_factor});
@@ -139,7 +143,6 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                         static_cast<double>(constants.step_scale));
   out.trace_ms = frame.trace_ms;
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
-  out.all_steps = mean_steps(samples);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
     out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),
@@ -156,11 +159,7 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options());
   d3d12::SceneConstants constants = d3d12::default_constants(d3d12::sample_camera(width, height), k.time);
   apply(k, constants);
-  renderer.set(d3d12::constants_slot, constants);
-  renderer.warm_up();
-  const proceduray::vk::Frame frame = renderer.render(width, height);
-  const auto samples = acc::samples_from(std::size_t{width} * height, frame.outputs.t, frame.outputs.normal,
-                                         frame.outputs.steps, frame.outputs.flags);
+  const auto [frame, samples] = render(renderer, d3d12::constants_slot, constants, width, height);
   const auto start = std::chrono::steady_clock::now();
   const d3d12::ReferenceImage truth = d3d12::reference_image(constants, width, height);
   Measurement out;
@@ -174,7 +173,6 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                         constants.metaball_method == d3d12::metaball_fixed ? "fixed" : "lipschitz", constants.metaball_steps);
   out.trace_ms = frame.trace_ms;
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
-  out.all_steps = mean_steps(samples);
   const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);
   for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) {
     out.objects.push_back({d3d12::object_name(id), d3d12::measure_object(truth, samples, seen, id),
@@ -212,7 +210,7 @@ int run(const Knobs& k) {
     labels.insert(labels.end(), m.labels.begin(), m.labels.end());
     labels.push_back({"trace_ms", std::to_string(m.trace_ms)});
     labels.push_back({"object", "all"});
-    labels.push_back({"object_evals", std::to_string(m.all_steps)});  // per ray that sees the object
+    labels.push_back({"object_evals", std::to_string(m.all.all.steps.mean)});  // per ray that sees the object
     if (!k.append || out.tellp() == 0) acc::write_csv_header(out, labels);
     acc::write_csv_rows(out, m.all, labels);
     for (const ObjectRow& row : m.objects) {
