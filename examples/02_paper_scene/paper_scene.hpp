@@ -7,7 +7,7 @@
 // block; the Pac-men get one block each (their own materials), the rest share theirs.
 #pragma once
 
-#include "../common/cli.hpp"
+#include "../common/paths.hpp"
 #include "paper_types.hpp"
 
 #include <string>

@@ -21,6 +21,7 @@
 //   proceduray::quad_xz(plane_min, plane_max): two triangles at y = 0, normal +y.
 #pragma once
 
+#include <proceduray/march/primitives.hpp>
 #include <proceduray/proceduray.hpp>
 
 #include <vector>
@@ -34,10 +35,14 @@ namespace pr = proceduray;
 inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_object_ids = 4u;
 /// MaterialRecord::object_id of each object; 0 is the sky.
 enum ObjectId : std::uint32_t { sky_id = 0, plane_id = 1, pacman0_id = 2, pacman1_id = 3, julia_id = 4, mandelbulb_id = 5 };
+/// Ids 0 .. object_id_count - 1: SceneConstants::knobs has one entry per id.
+inline constexpr std::uint32_t object_id_count = 6;
 /// Largest SceneConstants::max_depth the shaders honour (radiance segments, primary included).
 inline constexpr std::uint32_t max_depth_limit = 3;
 
-/// Per-frame uniform (set 0, binding 2). Knobs are run-time values: a sweep rewrites them.
+/// Per-frame uniform (set 0, binding 2). The march knobs are per object (indexed by ObjectId):
+/// run-time values a sweep rewrites. The fractals read theirs; the Pac-men (analytic) read only
+/// epsilon, their secondary rays' offset; sky and plane entries are unused.
 PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (pr::Camera, camera),                ///< primary rays; camera.pixel_angle sets the footprint
     (glm::vec3, light_position),         ///< point light, world space
@@ -45,16 +50,10 @@ PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (glm::vec3, light_colour),           ///< default white
     (float, time),                       ///< seconds: animates the Julia constant and the Mandelbulb iterations
     (glm::vec3, sky_colour),             ///< zenith colour; the horizon is lighter
-    (std::uint32_t, max_steps),          ///< sphere-tracing steps at most (a miss when exhausted); default 256
-    (float, epsilon),                    ///< absolute hit threshold (world units); default 1e-4
-    (float, footprint_scale),            ///< k: hit threshold max(epsilon, k * pixel_angle * t); default 0.5
-    (float, step_scale),                 ///< step = step_scale * distance estimate (1 / Lipschitz, or a fudge)
-    (float, over_relaxation),            ///< w in [1, 2), 1 = plain sphere tracing; default 1
-    (std::uint32_t, julia_iterations),   ///< default 10
-    (std::uint32_t, mandelbulb_iterations),  ///< maximum of the animated count; default 8
     (std::uint32_t, max_depth),          ///< radiance segments, primary included (3: two reflections), <= max_depth_limit
     (std::uint32_t, flags),              ///< flag_* bits; default shadows | reflections
-    (float, min_weight));                ///< reflections adding less than this to the pixel are not traced; default 0.05
+    (float, min_weight),                 ///< reflections adding less than this to the pixel are not traced; default 0.05
+    (pr::MarchKnobs[object_id_count], knobs));  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
 
 /// The radiance ray's payload (location 0).
 PROCEDURAY_DEFINE_STRUCT(RadiancePayload, scalar,
@@ -108,11 +107,28 @@ inline const std::vector<MaterialRecord> pacman_materials{{{1.0f, 0.8f, 0.1f}, 0
 inline constexpr MaterialRecord julia_material{{0.9f, 0.3f, 0.25f}, 0.2f, {}, 0.0f, 0.9f, 0.6f, 60.0f, julia_id};
 inline constexpr MaterialRecord mandelbulb_material{{0.35f, 0.85f, 0.45f}, 0.2f, {}, 0.0f, 0.9f, 0.6f, 60.0f, mandelbulb_id};
 
+/// The knobs a fractal accepts, with its defaults (iterations: Julia 10, Mandelbulb 8).
+inline const pr::MarchCapabilities& capabilities(ObjectId id) {
+  static const pr::MarchCapabilities julia = pr::fractal_capabilities(10), bulb = pr::fractal_capabilities(8);
+  static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
+  return id == julia_id ? julia : (id == mandelbulb_id ? bulb : analytic);
+}
+
+/// Marched objects and their names (the sweep's and the accuracy tool's).
+inline constexpr std::pair<ObjectId, const char*> marched_objects[] = {{julia_id, "julia"}, {mandelbulb_id, "mandelbulb"}};
+
+/// Throws UsageError unless the fractals' knobs are valid (march/knobs.hpp's validate).
+inline void validate_knobs(const SceneConstants& c) {
+  for (const auto& [id, name] : marched_objects) pr::validate(c.knobs[id], capabilities(id), name);
+}
+
 /// Camera framing all four objects, default light and knobs, at `time` seconds.
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
-  return {pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
-          {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-          256, 1e-4f, 0.5f, 1.0f, 1.0f, 10, 8, 3, flag_shadows | flag_reflections, 0.05f};
+  SceneConstants c{pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
+                   {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
+                   3, flag_shadows | flag_reflections, 0.05f, {}};
+  for (std::uint32_t id = 0; id < object_id_count; ++id) c.knobs[id] = capabilities(static_cast<ObjectId>(id)).defaults;
+  return c;
 }
 
 /// The C++ constants the shaders use beyond what the scene derives (glsl_for, glsl_aabb_consts).

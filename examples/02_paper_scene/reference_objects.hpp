@@ -34,7 +34,8 @@
 // where every sample lies inside (zero differences); they describe the surface at that scale (at
 // 48x32 the bulb is rough there: 5 of 56 face away from the camera, in crevices). The Julia cut
 // face (within 1e-9 object units of the plane) gets the plane's normal, exact.
-// Iterations: julia max(julia_iterations, 1) and mandelbulb_animated_iterations(mandelbulb_
+// Iterations (the knobs' count; all of it when the knobs take fewer by distance: the truth is
+// the full set): julia max(iterations, 1) and mandelbulb_animated_iterations(mandelbulb_
 // iterations, time), as the shaders at that time, times options.iteration_factor (2: the truncation
 // reference, reported apart). Parameters that come from the time (c, the count) are computed in
 // float by the shaders' own functions: the reference is of the object the GPU is asked to draw.
@@ -239,8 +240,8 @@ inline ReferenceScene reference_scene(const SceneConstants& constants, const Ref
   s.up = glm::dvec3(c.up.x, c.up.y, c.up.z);
   s.pixel_angle = c.pixel_angle;
   s.julia_c = glm::dvec4(glsl::julia<float>::julia_animated_c(constants.time));
-  const std::uint64_t julia = std::max(constants.julia_iterations, 1u),
-                      bulb = glsl::bulb<float>::mandelbulb_animated_iterations(constants.mandelbulb_iterations,
+  const std::uint64_t julia = std::max(constants.knobs[julia_id].iterations, 1u),
+                      bulb = glsl::bulb<float>::mandelbulb_animated_iterations(constants.knobs[mandelbulb_id].iterations,
                                                                                constants.time);
   if (std::max(julia, bulb) * options.iteration_factor > 1'000'000) {
     detail::refuse("iterations " + std::to_string(julia) + " (Julia), " + std::to_string(bulb) + " (Mandelbulb) times " +

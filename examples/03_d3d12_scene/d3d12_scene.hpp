@@ -15,7 +15,7 @@
 // local space as SceneConstants::time advances; the AABBs and instances never change.
 #pragma once
 
-#include "../common/cli.hpp"
+#include "../common/paths.hpp"
 #include "d3d12_types.hpp"
 
 #include <proceduray/proceduray.hpp>

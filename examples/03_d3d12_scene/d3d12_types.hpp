@@ -18,6 +18,7 @@
 //   Each primitive is one AABB geometry [-1, 1]^3 with one instance; local space = object space.
 #pragma once
 
+#include <proceduray/march/primitives.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/shader.hpp>
 
@@ -47,8 +48,6 @@ inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_de
 inline constexpr std::uint32_t counted_miss_kind = 1u;
 /// Radiance segments at most (primary + one reflection), and the recursion that allows (+ shadow).
 inline constexpr std::uint32_t max_depth_limit = 2, max_recursion_depth = max_depth_limit + 1;
-/// Metaball marches (SceneConstants::metaball_method), as in shaders/primitives/metaballs.glsl.
-inline constexpr std::uint32_t metaball_fixed = 0u, metaball_lipschitz = 1u;
 
 /// Primitive kinds, equal to the primitive_* and sdf_* consts of d3d12_primitives.glsl (a test checks).
 enum PrimitiveKind : std::uint32_t {
@@ -65,8 +64,12 @@ inline std::string_view hit_group_of(PrimitiveKind k) {
 /// Object ids of the debug view: 0 sky, 1 plane, 2 + kind for primitives.
 inline constexpr std::uint32_t sky_id = 0, plane_id = 1;
 inline constexpr std::uint32_t object_id(PrimitiveKind k) { return 2u + k; }
+/// Ids 0 .. object_id_count - 1 (sky_id, plane_id, object_id(kind)): the debug view's, the index
+/// of SceneConstants::knobs and of ReferenceImage::costs.
+inline constexpr std::uint32_t object_id_count = 2u + primitive_count;
 
-/// Per-frame uniform (set 0, binding 2).
+/// Per-frame uniform (set 0, binding 2). The march knobs are per object (indexed by object id,
+/// read by the marched primitives; the analytic ones and the plane ignore theirs), run-time values.
 struct SceneConstants {
   pr::Camera camera;          ///< primary rays
   glm::vec3 light_position;   ///< point light, world space
@@ -74,19 +77,12 @@ struct SceneConstants {
   glm::vec3 light_colour;     ///< default white
   float time;                 ///< seconds: spins primitives and moves the metaballs (no AS work)
   glm::vec3 sky_colour;       ///< zenith colour
-  std::uint32_t max_steps;    ///< sphere-tracing and Lipschitz-metaball steps at most; default 512 (the sample's)
-  float epsilon;              ///< absolute hit threshold, world units; default 1e-4
-  float footprint_scale;      ///< threshold in pixel footprints, max(epsilon, k * pixel_angle * t); default 0.5
-  float step_scale;           ///< extra factor on 1 / Lipschitz steps; default 1
-  std::uint32_t metaball_method;  ///< metaball_fixed (default) or metaball_lipschitz
-  std::uint32_t metaball_steps;   ///< fixed steps across the box; default 128 (the sample's)
   std::uint32_t flags;        ///< flag_* bits; default shadows | reflections
   std::uint32_t max_depth;    ///< radiance segments, primary included; <= max_depth_limit
-  float over_relaxation;      ///< sphere tracing's w in [1, 2) (Keinert et al.); default 1 = plain
+  pr::MarchKnobs knobs[object_id_count];  ///< per object id: method, threshold, steps, normal (capabilities())
 };
-PROCEDURAY_STRUCT(SceneConstants, scalar, camera, light_position, ambient, light_colour, time, sky_colour, max_steps,
-                  epsilon, footprint_scale, step_scale, metaball_method, metaball_steps, flags, max_depth,
-                  over_relaxation);
+PROCEDURAY_STRUCT(SceneConstants, scalar, camera, light_position, ambient, light_colour, time, sky_colour, flags,
+                  max_depth, knobs);
 
 /// The radiance ray's payload (location 0).
 struct RadiancePayload {
@@ -253,11 +249,33 @@ inline pr::Camera isolated_camera(PrimitiveKind k, std::uint32_t width, std::uin
   return pr::look_at(c + glm::vec3(0.0f, 1.8f, 4.2f), c, 40.0f, width, height);
 }
 
+/// The knobs primitive kind k accepts (analytic kinds: no methods), with its defaults.
+inline const pr::MarchCapabilities& capabilities(PrimitiveKind k) {
+  static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
+  if (k <= spheres) return analytic;
+  return k == metaballs ? pr::metaball_capabilities() : pr::sdf_capabilities();
+}
+
+/// The SceneConstants::knobs entry of kind k.
+inline pr::MarchKnobs& knobs(SceneConstants& c, PrimitiveKind k) { return c.knobs[object_id(k)]; }
+
+/// Throws UsageError unless every marched kind's knobs are valid (march/knobs.hpp's validate).
+inline void validate_knobs(const SceneConstants& c) {
+  for (std::uint32_t k = metaballs; k < primitive_count; ++k) {
+    pr::validate(c.knobs[object_id(static_cast<PrimitiveKind>(k))], capabilities(static_cast<PrimitiveKind>(k)),
+                 primitive_names[k]);
+  }
+}
+
 /// Default knobs and light for `camera`, at `time` seconds.
 inline SceneConstants default_constants(const pr::Camera& camera, float time) {
   const glm::vec3 eye(camera.eye);
-  return {camera, eye + glm::vec3(-6.0f, 9.0f, 2.0f), 0.2f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-          512, 1e-4f, 0.5f, 1.0f, metaball_fixed, 128, flag_shadows | flag_reflections, max_depth_limit, 1.0f};
+  SceneConstants c{camera, eye + glm::vec3(-6.0f, 9.0f, 2.0f), 0.2f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
+                   flag_shadows | flag_reflections, max_depth_limit, {}};
+  for (std::uint32_t k = 0; k < primitive_count; ++k) {
+    c.knobs[object_id(static_cast<PrimitiveKind>(k))] = capabilities(static_cast<PrimitiveKind>(k)).defaults;
+  }
+  return c;
 }
 
 /// The C++ constants above that the shaders need, as GLSL consts.

@@ -13,12 +13,23 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <exception>
 #include <vector>
 
 namespace {
 
 using examples::median;
+
+/// --relax w: every SDF marched by over-relaxed sphere tracing with w (w = 1: their default method).
+void relax_sdfs(d3d12::SceneConstants& c, float w) {
+  if (w == 1.0f) return;
+  for (std::uint32_t k = d3d12::mini_spheres; k < d3d12::primitive_count; ++k) {
+    proceduray::MarchKnobs& knobs = d3d12::knobs(c, static_cast<d3d12::PrimitiveKind>(k));
+    knobs.method = static_cast<std::uint32_t>(proceduray::MarchMethod::relaxed);
+    knobs.relaxation = w;
+  }
+}
 
 /// One benchmark row: median trace ms of 5 frames, then a debug frame that counts misses too
 /// (flag_count_misses) for coverage and steps. A ray entered the AABB when it hit or marched:
@@ -68,7 +79,7 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
   for (std::uint32_t k = 0; k < d3d12::primitive_count; ++k) {
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
     d3d12::SceneConstants c = d3d12::default_constants(d3d12::isolated_camera(kind, w, h), 0.0f);
-    c.over_relaxation = relax;
+    relax_sdfs(c, relax);
     renderer.set(d3d12::constants_slot, c);
     if (k == 0) renderer.warm_up();
     const proceduray::vk::Frame frame = renderer.render(w, h);
@@ -80,8 +91,10 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
     if (!bench) continue;
     bench_row(renderer, std::string(d3d12::primitive_names[k]), c, w, h, d3d12::object_id(kind));
     if (kind == d3d12::metaballs) {
-      c.metaball_method = d3d12::metaball_lipschitz;
+      d3d12::knobs(c, d3d12::metaballs).method = static_cast<std::uint32_t>(proceduray::MarchMethod::lipschitz);
       bench_row(renderer, "  (Lipschitz)", c, w, h, d3d12::object_id(kind));
+      d3d12::knobs(c, d3d12::metaballs).method = static_cast<std::uint32_t>(proceduray::MarchMethod::segment);
+      bench_row(renderer, "  (segment)", c, w, h, d3d12::object_id(kind));
     }
   }
   if (gallery) {
@@ -93,24 +106,19 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
 }  // namespace
 
 int main(int argc, char** argv) {
-  // This example's own options, taken out before the shared ones are parsed.
   const char* gallery = nullptr;
+  std::string gallery_path;
   bool bench = false;
   float relax = 1.0f;
-  std::vector<char*> rest{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--gallery") == 0 && i + 1 < argc) gallery = argv[++i];
-    else if (std::strcmp(argv[i], "--bench") == 0) bench = true;
-    else if (std::strcmp(argv[i], "--relax") == 0 && i + 1 < argc) relax = std::strtof(argv[++i], nullptr);
-    else rest.push_back(argv[i]);
-  }
-  if (!(relax >= 1.0f && relax < 2.0f)) {
-    std::fprintf(stderr, "03_d3d12_scene: --relax takes w in [1, 2) (1: plain sphere tracing)\n");
-    return 2;
-  }
-  examples::Options o = examples::parse(static_cast<int>(rest.size()), rest.data(), "03_d3d12_scene",
-                                        {.width = 1024, .height = 768, .frames = 1});
+  examples::Options o = examples::parse(argc, argv, "03_d3d12_scene", {.width = 1024, .height = 768, .frames = 1},
+                                        [&](CLI::App& app) {
+    app.add_option("--gallery", gallery_path, "also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)");
+    app.add_flag("--bench", bench, "per primitive alone at --size: trace ms (median of 5), coverage, marching steps");
+    app.add_option("--relax", relax, "the SDFs' over-relaxation w in [1, 2) (1: their default method)")
+        ->check(CLI::Range(1.0f, 1.9999f));
+  });
   if (o.exit) return *o.exit;
+  if (!gallery_path.empty()) gallery = gallery_path.c_str();
   try {
     proceduray::check_writable(o.out);
     if (gallery) proceduray::check_writable(gallery);
@@ -125,7 +133,7 @@ int main(int argc, char** argv) {
     const proceduray::Camera camera = d3d12::sample_camera(o.width, o.height);
     auto constants = [&](float time) {
       d3d12::SceneConstants c = d3d12::default_constants(camera, time);
-      c.over_relaxation = relax;
+      relax_sdfs(c, relax);
       return c;
     };
     renderer.set(d3d12::constants_slot, constants(0.0f));

@@ -43,9 +43,6 @@
 
 namespace d3d12 {
 
-/// Object ids (sky_id, plane_id, object_id(kind)): the debug view's, and the index of ReferenceImage::costs.
-inline constexpr std::uint32_t object_id_count = 2u + primitive_count;
-
 /// One object's share of a reference's cost.
 struct ObjectCost {
   std::uint64_t rays = 0;             ///< rays that reached the object's bounds (the ground: every ray)

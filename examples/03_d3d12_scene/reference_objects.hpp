@@ -49,11 +49,13 @@
 
 namespace d3d12::glsl {
 using namespace proceduray_glsl_cpp;
-/// The shaders' primitives (shapes, fields, distances, marches), in float (T = float) or double.
+/// The shaders' primitives (shapes, fields, distances, marches, the knobs' entry point
+/// d3d12_intersect_knobs), in float (T = float) or double.
 template <class T>
 struct d3d12_primitives {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/d3d12_primitives.glsl"
+  using MarchKnobs = proceduray::MarchKnobs;
+#include "../../shaders/primitives/d3d12_knobs.glsl"
 };
 }  // namespace d3d12::glsl
 #undef R  // compat.glsl's literal macro; including a shared .glsl file again restores it

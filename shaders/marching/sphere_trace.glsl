@@ -1,10 +1,11 @@
 // Sphere tracing (Hart 1996) with run-time knobs, optional over-relaxation (Keinert et al.
-// 2014), hits confirmed by a sign change and refined by bisection, and normals by central or
-// tetrahedral differences.
+// 2014), or fixed steps; hits confirmed by a sign change and refined by bisection (or not), and
+// normals by central or tetrahedral differences. marching/knobs.glsl builds the settings from a
+// geometry's MarchKnobs (proceduray/march/knobs.hpp).
 //
 //   float march_distance(vec3 p) { return mandelbulb_distance(p, iterations); }  // define first
 //   #include "marching/sphere_trace.glsl"
-//   MarchSettings m = MarchSettings(max_steps, epsilon, footprint, step_scale, over_relaxation);
+//   MarchSettings m = MarchSettings(max_steps, epsilon, footprint, step_scale, over_relaxation, 0u, march_hit_refined);
 //   float s; uint steps;
 //   if (sphere_trace(o, u, s_lo, s_hi, m, s, steps)) {
 //     vec3 p = o + s * u;
@@ -75,6 +76,11 @@
 //                   surface may have been skipped, so the march goes back to the plain step's
 //                   end and continues with w = 1; likewise when a relaxed step leaves [s_lo, s_hi].
 //                   Probes are never relaxed.
+//   fixed_steps     0 for sphere tracing; n > 0 marches n equal steps instead (fixed_march),
+//                   whatever the distance says, and refines the first crossing.
+//   hit_rule        march_hit_refined: bisect as above; march_hit_unrefined: report the last
+//                   outside point as it is (up to one probe, <= the threshold, or one fixed
+//                   step short), saving the ~5 bisections.
 #ifndef PROCEDURAY_MARCHING_SPHERE_TRACE_GLSL
 #define PROCEDURAY_MARCHING_SPHERE_TRACE_GLSL
 
@@ -94,7 +100,15 @@ struct MarchSettings {
   real footprint;
   real step_scale;
   real over_relaxation;
+  uint fixed_steps;  // 0: sphere tracing; n > 0: n equal steps across [s_lo, s_hi], then the crossing's refinement
+  uint hit_rule;     // march_hit_refined (0) or march_hit_unrefined (1)
 };
+
+/// MarchSettings::hit_rule: bisect the crossing to march_refine_fraction of the threshold, or
+/// report the last outside point before the first inside one as it is (cheaper, up to one
+/// probe or fixed step short of the surface).
+PROCEDURAY_CONST uint march_hit_refined = 0u;
+PROCEDURAY_CONST uint march_hit_unrefined = 1u;
 
 /// The hit threshold at distance s along the ray.
 PROCEDURAY_INLINE real march_epsilon(MarchSettings m, real s) { return max(m.epsilon, m.footprint * s); }
@@ -108,12 +122,69 @@ PROCEDURAY_CONST real march_refine_fraction = R(0.03125);
 PROCEDURAY_CONST real march_probe_scale = R(2.0);
 PROCEDURAY_CONST real march_probe_min = R(0.015625);
 
+/// The crossing lies in (a, b]: a on the start's side (side * distance > 0), b not. Narrows
+/// it per m.hit_rule and returns the start-side end. `after_long_step`: b was reached by a
+/// step longer than a probe, so the crossing is most likely just behind b (an exact bound lands
+/// on the surface; an estimate overshoots a little): one probe a threshold back saves
+/// bisecting the whole step.
+PROCEDURAY_INLINE real march_refine(real3 o, real3 u, real a, real b, real side, bool after_long_step, MarchSettings m,
+                                    PROCEDURAY_INOUT(uint) steps) {
+  if (m.hit_rule == march_hit_unrefined) return a;
+  real back = b - march_epsilon(m, b);
+  if (after_long_step && back - a > march_epsilon(m, a) && steps < m.max_steps) {
+    real db = side * march_distance(o + back * u);
+    steps += 1u;
+    if (db <= R(0.0)) b = back;
+    else a = back;
+  }
+  while (steps < m.max_steps && b - a > march_refine_fraction * march_epsilon(m, a)) {
+    real mid = R(0.5) * (a + b);
+    if (!(mid > a && mid < b)) break;  // the bracket is down to adjacent floats
+    real dm = side * march_distance(o + mid * u);
+    steps += 1u;
+    if (dm <= R(0.0)) b = mid;
+    else a = mid;
+  }
+  return a;
+}
+
+/// Fixed steps (m.fixed_steps of them, equal, across [s_lo, s_hi]) and the crossing refined:
+/// the D3D12 sample's volumetric march, for any bound. It never trusts the distance's size, so
+/// it suits functions that are not bounds at all; it steps over any part thinner than a step.
+/// The start rule is sphere_trace's (inside an SDF: the exit; on or inside an estimate that is
+/// 0 there: a miss). `steps` counts evaluations and never exceeds m.max_steps.
+PROCEDURAY_INLINE bool fixed_march(real3 o, real3 u, real s_lo, real s_hi, MarchSettings m,
+                                   PROCEDURAY_OUT(real) s_hit, PROCEDURAY_OUT(uint) steps) {
+  s_hit = s_lo;
+  steps = 0u;
+  if (!(s_hi >= s_lo) || m.max_steps == 0u) return false;
+  real d0 = march_distance(o + s_lo * u);
+  steps = 1u;
+  if (d0 == R(0.0) || !(d0 == d0)) return false;  // on the surface, or NaN
+  real side = d0 > R(0.0) ? R(1.0) : -R(1.0);
+  uint n = max(m.fixed_steps, 1u);
+  real ds = (s_hi - s_lo) / real(n);
+  real a = s_lo;
+  for (uint i = 1u; i <= n && steps < m.max_steps; ++i) {
+    real b = i == n ? s_hi : s_lo + real(i) * ds;
+    real d = side * march_distance(o + b * u);
+    steps += 1u;
+    if (d <= R(0.0)) {
+      s_hit = march_refine(o, u, a, b, side, false, m, steps);
+      return true;
+    }
+    a = b;
+  }
+  return false;
+}
+
 /// Marches o + s u for s in [s_lo, s_hi]; true with the last point on the start's side before
 /// the first sign change found: outside, or inside for a march that starts in an SDF and
 /// reports the exit (see the header). `steps` counts distance evaluations, on a hit and on a
 /// miss, probes and bisection included, and never exceeds m.max_steps.
 PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, MarchSettings m,
                                     PROCEDURAY_OUT(real) s_hit, PROCEDURAY_OUT(uint) steps) {
+  if (m.fixed_steps > 0u) return fixed_march(o, u, s_lo, s_hi, m, s_hit, steps);
   // w: the relaxation in force; 1 from the first failed overlap test on (Keinert et al. keep
   // it there: where spheres stopped overlapping the ray is near a surface or grazing one).
   real w = clamp(m.over_relaxation, R(1.0), R(1.99));
@@ -161,27 +232,7 @@ PROCEDURAY_INLINE bool sphere_trace(real3 o, real3 u, real s_lo, real s_hi, Marc
     }
     if (d <= R(0.0)) {
       // Crossed: the surface lies in (outside, s] (the first point is never here: see above).
-      real a = outside;
-      real b = s;
-      // After a long step (not a probe) the crossing is most likely just behind s (an exact
-      // bound lands on the surface; an estimate overshoots a little): one probe a threshold
-      // back saves bisecting the whole step.
-      real back = b - march_epsilon(m, b);
-      if (back - a > march_epsilon(m, a) && steps < m.max_steps) {
-        real db = side * march_distance(o + back * u);
-        steps += 1u;
-        if (db <= R(0.0)) b = back;
-        else a = back;
-      }
-      while (steps < m.max_steps && b - a > march_refine_fraction * march_epsilon(m, a)) {
-        real mid = R(0.5) * (a + b);
-        if (!(mid > a && mid < b)) break;  // the bracket is down to adjacent floats
-        real dm = side * march_distance(o + mid * u);
-        steps += 1u;
-        if (dm <= R(0.0)) b = mid;
-        else a = mid;
-      }
-      s_hit = a;
+      s_hit = march_refine(o, u, outside, s, side, true, m, steps);
       return true;
     }
     outside = s;

@@ -14,7 +14,8 @@
 // distance, with the offset tied to the hit threshold at the hit's distance, for SDFs. `steps`
 // counts distance or field evaluations (0 for analytic primitives). Marching runs along the
 // unit direction, so epsilon and footprint in `m` are local lengths; m.step_scale is multiplied
-// by 1 / sdf_lipschitz.
+// by 1 / sdf_lipschitz (unless d3d12_lipschitz_steps is 0). metaball_method is one of
+// metaballs.glsl's; d3d12_knobs.glsl calls this with a geometry's MarchKnobs.
 //
 // This file defines march_distance (for sphere_trace.glsl) over the selected SDF: include it
 // alone, not with another definer of march_distance.
@@ -34,12 +35,22 @@ PROCEDURAY_CONST uint primitive_spheres = 1u;
 PROCEDURAY_CONST uint primitive_metaballs = 2u;
 PROCEDURAY_CONST uint primitive_kind_count = 10u;
 
+// How the SDFs are marched beyond `m` (d3d12_knobs.glsl sets them from a geometry's knobs):
+// steps divided by the SDF's Lipschitz bound (1) or not (0: plain sphere tracing, which
+// overshoots where the bound exceeds 1); the normal by central (1) or tetrahedral (2)
+// differences at d3d12_normal_scale thresholds.
 #ifdef __cplusplus
 static inline uint d3d12_sdf_kind = 0u;  // what march_distance marches; set by d3d12_intersect
 static inline real4 d3d12_sdf_params = real4(R(1.0));
+static inline uint d3d12_lipschitz_steps = 1u;
+static inline uint d3d12_normal_method = 1u;
+static inline real d3d12_normal_scale = R(1.0);
 #else
 uint d3d12_sdf_kind;
 real4 d3d12_sdf_params;
+uint d3d12_lipschitz_steps = 1u;
+uint d3d12_normal_method = 1u;
+real d3d12_normal_scale = R(1.0);
 #endif
 
 PROCEDURAY_INLINE real march_distance(real3 p) { return sdf_distance(d3d12_sdf_kind, p, d3d12_sdf_params); }
@@ -89,14 +100,16 @@ PROCEDURAY_INLINE bool d3d12_intersect(uint kind, real4 params, real spin, real 
       d3d12_sdf_kind = kind;
       d3d12_sdf_params = params;
       MarchSettings ms = m;
-      ms.step_scale = (m.step_scale > R(0.0) ? m.step_scale : R(1.0)) / sdf_lipschitz(kind, params);
+      ms.step_scale = m.step_scale > R(0.0) ? m.step_scale : R(1.0);
+      if (d3d12_lipschitz_steps != 0u) ms.step_scale /= sdf_lipschitz(kind, params);
       bool hit = sphere_trace(ro, u, t0 * len, t1 * len, ms, s, count);
       steps = real(count);
       if (!hit) return false;
       // Central differences at the threshold: smooth SDFs blur to second order only (the
       // tetrahedral form's first-order blur cost 7 to 30 degrees on the small parts at 96x64).
       real3 p = ro + s * u;
-      n = central_normal(p, normal_offset(max(march_epsilon(ms, s), R(1.0e-5)), p));
+      real h = normal_offset(d3d12_normal_scale * max(march_epsilon(ms, s), R(1.0e-5)), p);
+      n = d3d12_normal_method == 2u ? tetrahedral_normal(p, h) : central_normal(p, h);
     }
     t = s / len;
     if (!hit_is_valid(t, t0, t1, rd, n, cull)) return false;

@@ -1,6 +1,6 @@
 // Metaballs (blobs): the isosurface F(p) = threshold of a potential field summed over point
 // sources, each with the quintic falloff f(x) = 1 - (6x^5 - 15x^4 + 10x^3), x = |p - c| / R,
-// zero beyond the influence radius R. Two marches, both in [s_lo, s_hi] along a unit u:
+// zero beyond the influence radius R. Three marches, all in [s_lo, s_hi] along a unit u:
 //   metaball_method_fixed      the D3D12 sample's: `steps` equal steps, then bisection of the
 //                              first sign change (thin necks narrower than a step are missed);
 //   metaball_method_lipschitz  steps of max(|F - threshold| / L, epsilon(s)), L = count * 1.875 / R
@@ -8,6 +8,13 @@
 //                              longer than epsilon crosses the surface; the crossing is bisected.
 //                              (Stopping where the bound falls below epsilon instead would accept
 //                              near misses within L * epsilon of the threshold: fat silhouettes.)
+//   metaball_method_segment    segment tracing (Galin et al. 2020): the same steps, but L is the
+//                              field's Lipschitz bound over the next segment only (each source's
+//                              slope over the distances the segment takes, 0 for a source it does
+//                              not reach), and the segment grows by metaball_segment_growth per
+//                              step: long steps where one ball's flank is all the ray sees.
+// Every march ends with metaball_bisections bisections of the crossing (none when m.hit_rule is
+// march_hit_unrefined: then the last point on the start's side is reported).
 //
 //   float s; vec3 n; uint steps;
 //   if (metaballs_march(o, u, s_lo, s_hi, 0.6f, 0.25f, time, metaball_method_fixed, 128u, m, s, n, steps)) ...
@@ -24,6 +31,9 @@
 PROCEDURAY_CONST uint metaball_count = 3u;
 PROCEDURAY_CONST uint metaball_method_fixed = 0u;
 PROCEDURAY_CONST uint metaball_method_lipschitz = 1u;
+PROCEDURAY_CONST uint metaball_method_segment = 2u;
+/// Segment tracing: the next segment is this many times the last step (Galin et al. use 2).
+PROCEDURAY_CONST real metaball_segment_growth = R(2.0);
 /// Bisection iterations after the fixed march brackets the surface.
 PROCEDURAY_CONST uint metaball_bisections = 10u;
 
@@ -62,6 +72,44 @@ PROCEDURAY_INLINE real3 metaball_gradient(real3 p, real radius, real time) {
 /// Lipschitz bound of F: each source's slope is at most 1.875 / R.
 PROCEDURAY_INLINE real metaball_lipschitz(real radius) { return real(metaball_count) * R(1.875) / radius; }
 
+/// Bound on R |f'(x)| = 30 x^2 (1 - x)^2 for x in [lo, hi]: 1.875 at x = 1/2, rising before, falling after, 0 from 1 on.
+PROCEDURAY_INLINE real metaball_slope_bound(real lo, real hi) {
+  if (lo >= R(1.0)) return R(0.0);
+  real b = min(hi, R(1.0));
+  if (lo <= R(0.5) && b >= R(0.5)) return R(1.875);
+  real x = b < R(0.5) ? b : lo;
+  return R(30.0) * x * x * (R(1.0) - x) * (R(1.0) - x);
+}
+
+/// Lipschitz bound of F on the segment o + [a, b] u (u unit): per source, the slope bound over
+/// the distances from its centre the segment takes (closest point to farthest end).
+PROCEDURAY_INLINE real metaball_segment_lipschitz(real3 o, real3 u, real a, real b, real radius, real time) {
+  real l = R(0.0);
+  for (uint i = 0u; i < metaball_count; ++i) {
+    real3 c = metaball_centre(i, time);
+    real closest = clamp(dot(c - o, u), a, b);
+    real near = length(o + closest * u - c) / radius;
+    real far = max(length(o + a * u - c), length(o + b * u - c)) / radius;
+    l += metaball_slope_bound(near, far);
+  }
+  return l / radius;
+}
+
+/// The crossing lies in (a, b]: a on the start's side. Bisects it (unless m.hit_rule is
+/// march_hit_unrefined) and returns the point reported: b, across, when refined; a when not.
+PROCEDURAY_INLINE real metaball_refine(real3 o, real3 u, real a, real b, real radius, real threshold, real time,
+                                       bool start_inside, MarchSettings m, PROCEDURAY_INOUT(uint) steps) {
+  if (m.hit_rule == march_hit_unrefined) return a;
+  for (uint k = 0u; k < metaball_bisections; ++k) {  // keep a on the start's side, b across
+    real mid = R(0.5) * (a + b);
+    real vm = metaball_field(o + mid * u, radius, time) - threshold;
+    steps += 1u;
+    if ((vm > R(0.0)) != start_inside) b = mid;
+    else a = mid;
+  }
+  return b;
+}
+
 /// First crossing of F = threshold along o + s u (u unit) in [s_lo, s_hi]; m gives epsilon(s)
 /// and, for the Lipschitz method, max_steps; `steps` is the number of field evaluations.
 PROCEDURAY_INLINE bool metaballs_march(real3 o, real3 u, real s_lo, real s_hi, real radius, real threshold, real time,
@@ -75,15 +123,25 @@ PROCEDURAY_INLINE bool metaballs_march(real3 o, real3 u, real s_lo, real s_hi, r
   real start_value = metaball_field(o + s_lo * u, radius, time) - threshold;
   steps = 1u;
   bool start_inside = start_value > R(0.0);
-  if (method == metaball_method_lipschitz) {
+  if (method == metaball_method_lipschitz || method == metaball_method_segment) {
+    bool segment = method == metaball_method_segment;
     real lipschitz = metaball_lipschitz(radius);
     real a = s_lo;  // last point on the start's side
     real s = s_lo;
     real v = start_value;
+    real length_ahead = s_hi - s_lo;  // segment tracing: the segment the next bound covers
     for (uint i = 0u; i < m.max_steps; ++i) {
       // No surface within |v| / L of o + s u; below the threshold the march takes epsilon(s)
       // steps, so a crossing is bracketed by [a, s] and bisected as the fixed march does.
-      s = a + max(abs(v) / lipschitz, march_epsilon(m, a));
+      real step = abs(v) / lipschitz;
+      if (segment) {
+        real end = min(a + length_ahead, s_hi);
+        real l = metaball_segment_lipschitz(o, u, a, end, radius, time);
+        // The bound holds on [a, end] only: never step past it (no source reaches: the whole segment).
+        step = l > R(0.0) ? min(abs(v) / l, end - a) : end - a;
+      }
+      step = max(step, march_epsilon(m, a));
+      s = a + step;
       if (s > s_hi) break;
       v = metaball_field(o + s * u, radius, time) - threshold;
       steps += 1u;
@@ -92,18 +150,9 @@ PROCEDURAY_INLINE bool metaballs_march(real3 o, real3 u, real s_lo, real s_hi, r
         break;
       }
       a = s;
+      length_ahead = metaball_segment_growth * step;
     }
-    if (found) {
-      real b = s;
-      for (uint k = 0u; k < metaball_bisections; ++k) {
-        real mid = R(0.5) * (a + b);
-        real vm = metaball_field(o + mid * u, radius, time) - threshold;
-        steps += 1u;
-        if ((vm > R(0.0)) != start_inside) b = mid;
-        else a = mid;
-      }
-      s_hit = b;
-    }
+    if (found) s_hit = metaball_refine(o, u, a, s, radius, threshold, time, start_inside, m, steps);
   } else {
     uint n = max(fixed_steps, 1u);
     real ds = (s_hi - s_lo) / real(n);
@@ -113,14 +162,7 @@ PROCEDURAY_INLINE bool metaballs_march(real3 o, real3 u, real s_lo, real s_hi, r
       real v = metaball_field(o + b * u, radius, time) - threshold;
       steps += 1u;
       if ((v > R(0.0)) != start_inside) {
-        for (uint k = 0u; k < metaball_bisections; ++k) {  // keep a on the start's side, b across
-          real mid = R(0.5) * (a + b);
-          real vm = metaball_field(o + mid * u, radius, time) - threshold;
-          steps += 1u;
-          if ((vm > R(0.0)) != start_inside) b = mid;
-          else a = mid;
-        }
-        s_hit = b;
+        s_hit = metaball_refine(o, u, a, b, radius, threshold, time, start_inside, m, steps);
         found = true;
         break;
       }

@@ -321,12 +321,11 @@ acc::Sample march(const d3d12::Primitive& p, std::uint32_t x, std::uint32_t y) {
   const glm::vec3 o = glm::vec3(cam.eye) - d3d12::placement(p.kind, d3d12::Layout::sample);
   const float len = std::max(glm::length(dir), 1.0e-30f);
   const float world_per_object = std::max(glm::length(dir) / len, 1.0e-20f);
-  const F::MarchSettings m{k.max_steps, k.epsilon / world_per_object, k.footprint_scale * cam.pixel_angle, k.step_scale,
-                           k.over_relaxation};
   float t = 0.0f, steps = 0.0f;
   glm::vec3 n(0.0f);
-  const bool hit = F::d3d12_intersect(p.kind, p.params, p.spin, k.time, o, dir, 0.0f, 1.0e30f, 0u, m, k.metaball_method,
-                                      k.metaball_steps, t, n, steps);
+  const bool hit = F::d3d12_intersect_knobs(p.kind, p.params, p.spin, k.time, o, dir, 0.0f, 1.0e30f, 0u,
+                                            k.knobs[d3d12::object_id(p.kind)], world_per_object, cam.pixel_angle, t, n,
+                                            steps);
   return {.hit = hit, .t = double(t), .normal = glm::dvec3(n), .steps = double(steps)};
 }
 

@@ -27,8 +27,9 @@ struct march {
       return paper::glsl::julia<float>::julia_cut_distance(p, c, count, cut);
     }
   }
+  using MarchKnobs = proceduray::MarchKnobs;
 #include "../../shaders/common/ray.glsl"
-#include "../../shaders/marching/sphere_trace.glsl"
+#include "../../shaders/marching/knobs.glsl"
 };
 }  // namespace paper_reference_test
 #undef R
@@ -257,8 +258,8 @@ Marched march_ray(std::uint32_t x, std::uint32_t y, const World& w, const proced
   if (!M::ray_clip_aabb(o, d, box.min, box.max, t0, t1)) return {};
   const float len = glm::length(d);
   const float world_per_object = std::max(glm::length(dir) / len, 1.0e-20f);
-  const typename M::MarchSettings m{k.max_steps, k.epsilon / world_per_object, k.footprint_scale * cam.pixel_angle,
-                                    k.step_scale, k.over_relaxation};
+  const typename M::MarchSettings m =
+      M::march_settings(k.knobs[kind == 0 ? paper::mandelbulb_id : paper::julia_id], world_per_object, cam.pixel_angle, 1.0f);
   float s = 0.0f;
   std::uint32_t steps = 0;
   if (!M::sphere_trace(o, d / len, t0 * len, t1 * len, m, s, steps)) return {};
@@ -318,8 +319,8 @@ Agreement compare(paper::ObjectId id, const proceduray::Aabb& box) {
 
 TEST_CASE("paper reference: the float sphere tracer lands at the reference surface") {
   const paper::SceneConstants& k = constants();
-  march<0>::count = paper::glsl::bulb<float>::mandelbulb_animated_iterations(k.mandelbulb_iterations, k.time);
-  march<1>::count = std::max(k.julia_iterations, 1u);
+  march<0>::count = paper::glsl::bulb<float>::mandelbulb_animated_iterations(k.knobs[paper::mandelbulb_id].iterations, k.time);
+  march<1>::count = std::max(k.knobs[paper::julia_id].iterations, 1u);
   march<1>::c = paper::glsl::julia<float>::julia_animated_c(k.time);
   const Agreement bulb = compare<0>(paper::mandelbulb_id, paper::mandelbulb_aabb);
   const Agreement julia = compare<1>(paper::julia_id, paper::julia_aabb);

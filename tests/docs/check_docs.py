@@ -43,6 +43,7 @@ BATCHES = {
     'shader': ['include/proceduray/shader/*.hpp'],
     'scene': ['include/proceduray/scene/*.hpp'],
     'accuracy': ['include/proceduray/accuracy/*.hpp'],
+    'march': ['include/proceduray/march/*.hpp'],
     # scene/ headers whose blocks show the renderer are compiled with vk/ (the scene batch stays pure).
     'vk': ['include/proceduray/vk/*.hpp',
            'include/proceduray/scene/uniform_slot.hpp'],
@@ -50,7 +51,7 @@ BATCHES = {
     'readme': ['README.md'],
 }
 # Batches whose headers must not pull in Vulkan (scene/, shader/ and accuracy/ stay pure): checked in the same compile.
-PURE = {'shader', 'scene', 'accuracy'}
+PURE = {'shader', 'scene', 'accuracy', 'march'}
 DECLARATION = re.compile(r'(struct|class|enum|union|using|namespace|template|inline|int main'
                          r'|PROCEDURAY_STRUCT|PROCEDURAY_DEFINE_STRUCT)\b')
 

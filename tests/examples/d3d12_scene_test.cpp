@@ -2,9 +2,12 @@
 // through the Renderer against the same GLSL compiled as C++ (coverage, AABB clip, no NaN).
 #include "common/glsl_cpp.hpp"
 
+#include <proceduray/march/knobs.hpp>
+
 namespace d3d12_cpu {
 using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/d3d12_primitives.glsl"
+using proceduray::MarchKnobs;
+#include "../../shaders/primitives/d3d12_knobs.glsl"
 }  // namespace d3d12_cpu
 #undef R  // compat.glsl's literal macro: the headers below may use the name
 
@@ -27,10 +30,10 @@ struct Alone {
   explicit Alone(const vk::Context& ctx) : renderer(ctx, scene, d3d12::renderer_options()) {}
 };
 
-d3d12::SceneConstants debug_constants(const Camera& camera, float time, std::uint32_t metaball_method) {
+d3d12::SceneConstants debug_constants(const Camera& camera, float time, MarchMethod metaball_method = MarchMethod::fixed) {
   d3d12::SceneConstants c = d3d12::default_constants(camera, time);
   c.flags = d3d12::flag_debug;
-  c.metaball_method = metaball_method;
+  d3d12::knobs(c, d3d12::metaballs).method = static_cast<std::uint32_t>(metaball_method);
   return c;
 }
 
@@ -41,7 +44,8 @@ struct CpuPixel {
 };
 CpuPixel cpu_pixel(const d3d12::Primitive& p, d3d12::SceneConstants c, std::uint32_t x, std::uint32_t y,
                    float footprint_scale = -1.0f, float jitter = 0.0f) {
-  if (footprint_scale >= 0.0f) c.footprint_scale = footprint_scale;
+  MarchKnobs k = c.knobs[d3d12::object_id(p.kind)];
+  if (footprint_scale >= 0.0f) k.threshold = footprint_scale;
   const float u = (static_cast<float>(x) + 0.5f + jitter) / size * 2.0f - 1.0f;
   const float v = (static_cast<float>(y) + 0.5f + jitter) / size * 2.0f - 1.0f;
   const glm::vec3 dir = glm::normalize(glm::vec3(c.camera.forward) + u * glm::vec3(c.camera.right) - v * glm::vec3(c.camera.up));
@@ -49,12 +53,10 @@ CpuPixel cpu_pixel(const d3d12::Primitive& p, d3d12::SceneConstants c, std::uint
   CpuPixel out;
   float t0 = 0.0f, t1 = 1e30f;
   out.in_aabb = d3d12_cpu::ray_clip_aabb(o, dir, glm::vec3(-1.0f), glm::vec3(1.0f), t0, t1);
-  const d3d12_cpu::MarchSettings m{c.max_steps, c.epsilon, c.footprint_scale * c.camera.pixel_angle, c.step_scale,
-                                     c.over_relaxation};
   float t;
   glm::vec3 n;
-  out.hit = d3d12_cpu::d3d12_intersect(p.kind, p.params, p.spin, c.time, o, dir, 0.0f, 1e30f, 0u, m, c.metaball_method,
-                                       c.metaball_steps, t, n, out.steps);
+  out.hit = d3d12_cpu::d3d12_intersect_knobs(p.kind, p.params, p.spin, c.time, o, dir, 0.0f, 1e30f, 0u, k, 1.0f,
+                                             c.camera.pixel_angle, t, n, out.steps);
   return out;
 }
 
@@ -72,7 +74,14 @@ TEST_CASE("d3d12 primitive kinds equal the GLSL consts") {
   CHECK(d3d12::cylinder == d3d12_cpu::sdf_cylinder);
   CHECK(d3d12::fractal_pyramid == d3d12_cpu::sdf_fractal_pyramid);
   CHECK(d3d12::primitive_count == d3d12_cpu::primitive_kind_count);
-  CHECK(d3d12::metaball_lipschitz == d3d12_cpu::metaball_method_lipschitz);
+  CHECK(static_cast<std::uint32_t>(MarchMethod::sphere) == d3d12_cpu::march_method_sphere);
+  CHECK(static_cast<std::uint32_t>(MarchMethod::relaxed) == d3d12_cpu::march_method_relaxed);
+  CHECK(static_cast<std::uint32_t>(MarchMethod::lipschitz) == d3d12_cpu::march_method_lipschitz);
+  CHECK(static_cast<std::uint32_t>(MarchMethod::segment) == d3d12_cpu::march_method_segment);
+  CHECK(static_cast<std::uint32_t>(MarchMethod::fixed) == d3d12_cpu::march_method_fixed);
+  CHECK(static_cast<std::uint32_t>(MarchThreshold::absolute) == d3d12_cpu::march_threshold_absolute);
+  CHECK(static_cast<std::uint32_t>(MarchNormal::tetrahedral) == d3d12_cpu::march_normal_tetrahedral);
+  CHECK(static_cast<std::uint32_t>(MarchIterations::by_distance) == d3d12_cpu::march_iterations_by_distance);
 }
 
 TEST_CASE("d3d12 hit table has the sample's 22 records in geometry order") {
@@ -118,11 +127,11 @@ TEST_CASE("d3d12 host rejects degenerate primitive parameters") {
 TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
   TestContext t;
   Alone alone(t.ctx);
-  std::array<std::size_t, 2> metaball_coverage{};
+  std::array<std::size_t, 5> metaball_coverage{};  // by MarchMethod
   for (const float time : {0.0f, 1.3f}) {
-    for (const std::uint32_t method : {d3d12::metaball_fixed, d3d12::metaball_lipschitz}) {
+    for (const MarchMethod method : {MarchMethod::fixed, MarchMethod::lipschitz, MarchMethod::segment}) {
       for (const d3d12::Primitive& p : alone.scene.primitives()) {
-        if (method == d3d12::metaball_lipschitz && p.kind != d3d12::metaballs) continue;
+        if (method != MarchMethod::fixed && p.kind != d3d12::metaballs) continue;
         const d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), time, method);
         alone.renderer.set(d3d12::constants_slot, c);
         const vk::Frame f = alone.renderer.render(size, size);
@@ -154,7 +163,7 @@ TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
         const double n = double(size) * size;
         CAPTURE(d3d12::primitive_names[p.kind]);
         CAPTURE(time);
-        CAPTURE(method);
+        CAPTURE(static_cast<std::uint32_t>(method));
         CAPTURE(cpu);
         CAPTURE(tight);
         CAPTURE(loose);
@@ -167,20 +176,24 @@ TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
         CHECK(outside_aabb == 0);                          // hits only inside the own AABB
         CHECK(nonfinite == 0);                             // no NaN or infinity in any output
         CHECK(unstepped == 0);                             // marched hits report their steps
-        if (p.kind == d3d12::metaballs && time == 0.0f) metaball_coverage[method] = gpu;
+        if (p.kind == d3d12::metaballs && time == 0.0f) metaball_coverage[static_cast<std::uint32_t>(method)] = gpu;
       }
     }
   }
   // Both metaball marches find the same surface.
-  CHECK(metaball_coverage[0] > 0);
-  CHECK(std::abs(double(metaball_coverage[0]) - double(metaball_coverage[1])) <= 0.01 * size * size);
+  // The three metaball marches see the same blob (segment tracing: Galin et al.'s bound).
+  const std::size_t fixed = metaball_coverage[static_cast<std::uint32_t>(MarchMethod::fixed)];
+  CHECK(fixed > 0);
+  for (const MarchMethod m : {MarchMethod::lipschitz, MarchMethod::segment}) {
+    CHECK(std::abs(double(fixed) - double(metaball_coverage[static_cast<std::uint32_t>(m)])) <= 0.01 * size * size);
+  }
 }
 
 TEST_CASE("d3d12 rays through the AABB beside the primitive report no hit") {
   TestContext t;
   Alone alone(t.ctx);
   for (const d3d12::Primitive& p : alone.scene.primitives()) {
-    const d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f, 0);
+    const d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
     alone.renderer.set(d3d12::constants_slot, c);
     const vk::Frame f = alone.renderer.render(size, size);
     std::size_t box_only = 0, reported = 0;
@@ -258,7 +271,7 @@ TEST_CASE("d3d12 counting misses keeps every hit and gives marched misses their 
   Alone alone(t.ctx);
   for (const d3d12::Primitive& p : alone.scene.primitives()) {
     if (p.kind < d3d12::metaballs) continue;  // analytic: no steps to count
-    d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f, d3d12::metaball_fixed);
+    d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
     alone.renderer.set(d3d12::constants_slot, c);
     const vk::Frame plain = alone.renderer.render(size, size);
     c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
@@ -304,9 +317,11 @@ TEST_CASE("d3d12 over-relaxation is a run-time knob that keeps the image and sav
   std::array<double, 2> steps{};
   std::array<vk::Frame, 2> frames;
   for (int k = 0; k < 2; ++k) {
-    d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f, d3d12::metaball_fixed);
+    d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
     c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
-    c.over_relaxation = k == 0 ? 1.0f : 1.6f;
+    MarchKnobs& torus = d3d12::knobs(c, d3d12::twisted_torus);
+    torus.method = static_cast<std::uint32_t>(k == 0 ? MarchMethod::lipschitz : MarchMethod::relaxed);
+    torus.relaxation = 1.6f;
     alone.renderer.set(d3d12::constants_slot, c);
     frames[k] = alone.renderer.render(size, size);
     for (std::size_t i = 0; i < std::size_t(size) * size; ++i) steps[k] += steps_at(frames[k], i);

@@ -17,11 +17,13 @@ using julia = paper::glsl::julia<float>;
 /// julia.rint's constant, count and plane, as the GPU holds them (paper scene at time 0).
 inline const paper::SceneConstants constants = paper::default_constants(320, 240, 0.0f);
 inline const glm::vec4 julia_c = julia::julia_animated_c(constants.time);
-inline const std::uint32_t julia_count = std::max(constants.julia_iterations, 1u);
+inline const std::uint32_t julia_count = std::max(constants.knobs[paper::julia_id].iterations, 1u);
+inline const proceduray::MarchKnobs& knobs = constants.knobs[paper::julia_id];
 inline const glm::vec4 cut_plane = glm::vec4(paper::julia_cut_plane);
 inline float march_distance(vec3 p) { return julia::julia_cut_distance(p, julia_c, julia_count, cut_plane); }
 #include "../../shaders/common/ray.glsl"
-#include "../../shaders/marching/sphere_trace.glsl"
+using MarchKnobs = proceduray::MarchKnobs;
+#include "../../shaders/marching/knobs.glsl"
 }  // namespace julia_cut_test
 
 #include <doctest/doctest.h>
@@ -44,9 +46,7 @@ const double cut_w = paper::julia_cut_plane.w;
 
 /// march.glsl's settings in object space: the absolute epsilon divided by the instance's scale.
 MarchSettings settings() {
-  return MarchSettings{constants.max_steps, constants.epsilon / paper::julia_placement.scale,
-                       constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale,
-                       constants.over_relaxation};
+  return march_settings(knobs, paper::julia_placement.scale, constants.camera.pixel_angle, 1.0f);
 }
 
 /// Object-space distance of the ray origins from the face: the default camera's distance from the
@@ -143,9 +143,9 @@ bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && st
 
 TEST_CASE("julia cut: setup matches the paper scene") {
   // The knobs the scenario is about: if the defaults change, the bounds below need measuring again.
-  CHECK(constants.max_steps == 256u);
-  CHECK(constants.footprint_scale == 0.5f);
-  CHECK(constants.step_scale == 1.0f);
+  CHECK(knobs.max_steps == 256u);
+  CHECK(knobs.threshold == 0.5f);
+  CHECK(knobs.step_scale == 1.0f);
   CHECK(julia_count == 10u);
   CHECK(threshold == doctest::Approx(0.5 * pixel_angle * camera_distance).epsilon(1e-5));
   CHECK(scene.julia_c == glm::dvec4(julia_c));
@@ -174,14 +174,14 @@ TEST_CASE("julia cut: rays parallel to the cut plane never hit the removed side"
           CAPTURE(side);
           if (!r.clipped) continue;
           CHECK(std::isfinite(r.s));
-          CHECK(r.steps <= constants.max_steps);
+          CHECK(r.steps <= knobs.max_steps);
           if (side > 0.0) {
             // The removed side: the whole ray lies above the plane (the float direction tilts it by
             // ~1e-7 over the box, the height is >= 1.9e-5), so the reference says miss, and so must the march.
             ++removed;
             REQUIRE(r.truth.outcome == acc::Outcome::miss);
             CHECK_FALSE(r.found);
-            exhausted += r.steps >= constants.max_steps;
+            exhausted += r.steps >= knobs.max_steps;
             continue;
           }
           if (r.truth.outcome == acc::Outcome::undetermined) {
@@ -253,7 +253,7 @@ TEST_CASE("julia cut: grazing rays onto the cut face - t error and evaluations")
           if (std::abs(glm::dot(cut_normal, hit) - cut_w) > 1.0e-9 || !solid_ball(hit, margin, true)) continue;
           ++rays;
           CHECK(std::isfinite(r.s));
-          CHECK(r.steps <= constants.max_steps);
+          CHECK(r.steps <= knobs.max_steps);
           // t error. The hit rule puts s within threshold / 32 (1/64 footprint) of a crossing; float
           // puts the crossing itself where the float height dot(n, o + s u) - w changes sign, and
           // rounding o + s u (s ~ 10) errs by ~s 2^-24 in height, i.e. by that / sin(alpha) along
@@ -274,7 +274,7 @@ TEST_CASE("julia cut: grazing rays onto the cut face - t error and evaluations")
           if (alpha >= 0.5e-2 && near_run(r, r.truth.t, 2.0 * threshold) <= near_limit) {
             ++bounded;
             CHECK(r.found);
-            CHECK(r.steps < constants.max_steps);
+            CHECK(r.steps < knobs.max_steps);
           } else {
             ++long_runs;  // may exhaust: then a miss, which the t check above leaves alone
           }

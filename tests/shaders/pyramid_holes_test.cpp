@@ -50,10 +50,9 @@ glm::dvec3 placement() { return glm::dvec3(d3d12::placement(d3d12::fractal_pyram
 
 /// The scene's knobs as intersect.glsl passes them (the instance only translates, so object and
 /// world lengths agree).
-F::MarchSettings knobs() {
-  const d3d12::SceneConstants& k = constants();
-  return {k.max_steps, k.epsilon, k.footprint_scale * k.camera.pixel_angle, k.step_scale, k.over_relaxation};
-}
+const proceduray::MarchKnobs& knobs() { return constants().knobs[d3d12::object_id(d3d12::fractal_pyramid)]; }
+/// What d3d12_intersect_knobs marches with (the threshold for the checks below).
+F::MarchSettings settings() { return F::march_settings(knobs(), 1.0f, constants().camera.pixel_angle, 1.0f); }
 
 enum Family { tunnels, seam_planes, aimed, family_count };
 const std::string family_names[] = {"tunnels", "seam planes", "aimed at empty points"};
@@ -129,7 +128,7 @@ struct Tally {
 
 TEST_CASE("fractal pyramid - no false hits through holes and along fold seams with the scene's knobs") {
   const std::vector<Ray> rs = rays();
-  const F::MarchSettings m = knobs();
+  const F::MarchSettings m = settings();
   const double pixel_angle = double(constants().camera.pixel_angle);
   Tally tally[family_count];
   Tally all;
@@ -140,9 +139,9 @@ TEST_CASE("fractal pyramid - no false hits through holes and along fold seams wi
     REQUIRE(ref.outcome != acc::Outcome::undetermined);
     float t = 0.0f, steps = 0.0f;
     glm::vec3 n(0.0f);
-    const bool hit = F::d3d12_intersect(d3d12::fractal_pyramid, pyramid().params, pyramid().spin, constants().time, r.o,
-                                        r.d, 0.0f, 1e30f, 0u, m, constants().metaball_method,
-                                        constants().metaball_steps, t, n, steps);
+    const bool hit = F::d3d12_intersect_knobs(d3d12::fractal_pyramid, pyramid().params, pyramid().spin,
+                                              constants().time, r.o, r.d, 0.0f, 1e30f, 0u, knobs(), 1.0f,
+                                              constants().camera.pixel_angle, t, n, steps);
     const bool truth = ref.outcome == acc::Outcome::hit;
     CAPTURE(r.family);
     CAPTURE(r.o);

@@ -19,7 +19,7 @@
 //   ulps     offset_ray_origin(p, n) (common/ray.glsl, Waechter and Binder)
 //   scene    offset_ray_origin(p + offset n, n), offset 0 for exact primitives and 2 thresholds
 //            for marched ones: what examples/03_d3d12_scene and 02_paper_scene's shade.rchit do
-//            (their comment says "twice as far out"; the paper scene passes constants.epsilon
+//            (their comment says "twice as far out"; the paper scene passes its knobs' epsilon
 //            for a procedural hit without steps, which none of its objects produces).
 // Acne: the light is on n*'s side (and on the float normal's, else the shader traces nothing),
 // so on a convex primitive the truth is "visible"; a hit of the float shadow ray against the same

@@ -19,7 +19,7 @@ namespace silhouette_steps_test {
 using namespace proceduray_glsl_cpp;
 inline const paper::SceneConstants constants = paper::default_constants(320, 240, 0.0f);
 inline const std::uint32_t bulb_count =
-    paper::glsl::bulb<float>::mandelbulb_animated_iterations(constants.mandelbulb_iterations, constants.time);
+    paper::glsl::bulb<float>::mandelbulb_animated_iterations(constants.knobs[paper::mandelbulb_id].iterations, constants.time);
 /// Evaluations of the current march, and how many of them returned a point inside (<= 0).
 inline std::uint32_t evaluations = 0;
 inline std::uint32_t inside_points = 0;
@@ -30,7 +30,8 @@ inline float march_distance(vec3 p) {
   return d;
 }
 #include "../../shaders/common/ray.glsl"
-#include "../../shaders/marching/sphere_trace.glsl"
+using MarchKnobs = proceduray::MarchKnobs;
+#include "../../shaders/marching/knobs.glsl"
 }  // namespace silhouette_steps_test
 
 #include <doctest/doctest.h>
@@ -105,9 +106,9 @@ March march(glm::vec3 dir, std::uint32_t max_steps) {
   const float len = length(d);
   const vec3 u = d / len;
   const float world_per_object = std::max(length(dir) / len, 1.0e-20f);
-  const MarchSettings m{max_steps, constants.epsilon / world_per_object,
-                        constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale,
-                        constants.over_relaxation};
+  MarchSettings m = march_settings(constants.knobs[paper::mandelbulb_id], world_per_object,
+                                   constants.camera.pixel_angle, 1.0f);
+  m.max_steps = max_steps;
   evaluations = 0;
   inside_points = 0;
   float s = 0.0f;
@@ -237,7 +238,7 @@ TEST_CASE("silhouette rays of the mandelbulb never report a wrong hit at any ste
       if (!m.hit) continue;
       CHECK(m.inside_points > 0);  // a hit is a sign change, at every budget
       ++hits;
-      const double threshold = constants.footprint_scale * pixel_angle * m.t;
+      const double threshold = constants.knobs[paper::mandelbulb_id].threshold * pixel_angle * m.t;
       const bool cut_short = m.steps == budget;
       const double front = cut_short ? cut_short_front_bound : front_bound;
       if (!cut_short) off_set += !set_within(ray.dir, m.t, 0.125 * threshold);

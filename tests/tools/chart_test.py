@@ -36,6 +36,27 @@ def write_sweep(path):
             w.writerow(['paper', 'llvmpipe', 64, 48, steps, th, 1e-4, 1.0, 3.5, 'plane', 1.0, 'all', 100, 0.0, 0.0, 1.0])
 
 
+SWEEP_HEADER = ['scene', 'device', 'width', 'height', 'point', 'label', 'object', 'kind', 'method', 'max_steps',
+                'threshold_mode', 'threshold', 'epsilon', 'step_scale', 'relaxation', 'fixed_steps', 'refine', 'normal',
+                'normal_scale', 'iterations', 'iteration_mode', 'iteration_detail', 'trace_ms', 'object_evals', 'class',
+                'rays', 'false_hit_rate', 'depth_px_median', 'depth_px_p99']
+# proceduray_sweep's columns: (label, method, relaxation, evals, median, p99, silhouette false-hit rate).
+SWEEP_POINTS = [('method=lipschitz threshold=0.5', 'lipschitz', 1.0, 20.0, 0.05, 0.5, 0.02),
+                ('method=relaxed relaxation=1.5 threshold=0.5', 'relaxed', 1.5, 15.0, 0.05, 0.6, 0.01),
+                ('d3d12 sample', 'lipschitz', 1.0, 40.0, 0.01, 0.2, 0.0)]
+
+
+def write_method_sweep(path):
+    with open(path, 'w', newline='') as f:
+        w = csv.writer(f)
+        w.writerow(SWEEP_HEADER)
+        for i, (lab, method, relax, evals, median, p99, fat) in enumerate(SWEEP_POINTS):
+            for cls in ('silhouette_1px', 'all'):
+                w.writerow(['d3d12', 'llvmpipe', 32, 32, i, lab, 'cog', 'sdf', method, 512, 'footprint', 0.5, 1e-4, 1,
+                            relax, 64, 'on', 'central', 1, 0, 'fixed', 0.01, 1.5, evals, cls, 100,
+                            fat if cls == 'silhouette_1px' else 0.001, median, p99])
+
+
 def run(args):
     out, err = io.StringIO(), io.StringIO()
     code = 0
@@ -94,6 +115,20 @@ def main():
         check(code == 2 and 'cannot read' in err, 'missing CSV: ' + err)
         code, _, err = run([sweep])
         check(code == 2 and 'pass --out PNG or --front' in err, 'nothing to do: ' + err)
+        # proceduray_sweep's CSV: labels from the knob columns, the sample's settings named, silhouettes.
+        methods = os.path.join(d, 'methods.csv')
+        write_method_sweep(methods)
+        code, out, err = run([methods, '--front'])
+        check(code == 0, 'sweep front exits 0: ' + err)
+        runs = [part.split(':')[0] for part in out.strip()[len('cog: '):].split('; ')]
+        check(runs == ['relaxed w1.5 0.5px', 'D3D12 sample'], 'sweep front, labelled by knobs: ' + repr(runs))
+        code, out, err = run([methods, '--front', '--error', 'silhouette'])
+        check(code == 0 and out.startswith('cog: relaxed w1.5 0.5px: 15 object_evals, median 1 px; D3D12 sample: 40'),
+              'silhouette front in percent: ' + out + err)
+        code, out, err = run([methods, '--out', png, '--error', 'silhouette'])
+        check(code == 0 and os.path.getsize(png) > 1000, 'silhouette chart written: ' + err)
+        code, _, err = run([methods, '--front', '--error', 'width'])
+        check(code == 2 and "unknown error 'width'; pass depth or silhouette" in err, 'unknown error: ' + err)
     print('chart.py: fronts, PNG content and bad input as expected')
     return 0
 

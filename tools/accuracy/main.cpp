@@ -108,21 +108,34 @@ std::string format(const char* fmt, auto... values) {
   return text;
 }
 
-/// The knobs every scene shares, applied to its constants.
+/// The marched objects of each scene: their knobs are what --steps, --threshold ... change.
+std::vector<std::uint32_t> marched_ids(const paper::SceneConstants&) { return {paper::julia_id, paper::mandelbulb_id}; }
+std::vector<std::uint32_t> marched_ids(const d3d12::SceneConstants&) {
+  std::vector<std::uint32_t> ids;
+  for (std::uint32_t k = d3d12::metaballs; k < d3d12::primitive_count; ++k) ids.push_back(d3d12::object_id(static_cast<d3d12::PrimitiveKind>(k)));
+  return ids;
+}
+
+/// The knobs every scene shares, applied to every marched object's knobs.
 template <class Constants>
 void apply(const Knobs& k, Constants& constants) {
   constants.flags = 0;  // camera rays only: no shadow or reflection rays
-  if (k.steps > 0) constants.max_steps = k.steps;
-  if (k.threshold >= 0.0f) constants.footprint_scale = k.threshold;
-  // A threshold relative to t (the D3D12 sample's 1e-4 t) is that many pixel angles.
-  if (k.relative >= 0.0f) constants.footprint_scale = k.relative / constants.camera.pixel_angle;
-  if (k.epsilon >= 0.0f) constants.epsilon = k.epsilon;
+  for (std::uint32_t id : marched_ids(constants)) {
+    proceduray::MarchKnobs& m = constants.knobs[id];
+    if (k.steps > 0) m.max_steps = k.steps;
+    if (k.threshold >= 0.0f) m.threshold = k.threshold;
+    // A threshold relative to t (the D3D12 sample's 1e-4 t) is that many pixel angles.
+    if (k.relative >= 0.0f) m.threshold = k.relative / constants.camera.pixel_angle;
+    if (k.epsilon >= 0.0f) m.epsilon = k.epsilon;
+  }
+  validate_knobs(constants);
 }
 
 template <class Constants>
 std::vector<acc::Label> knob_labels(const Constants& c) {
-  return {{"max_steps", std::to_string(c.max_steps)}, {"threshold_px", std::to_string(c.footprint_scale)},
-          {"epsilon", std::to_string(c.epsilon)}, {"step_scale", std::to_string(c.step_scale)}};
+  const proceduray::MarchKnobs& m = c.knobs[marched_ids(c).back()];
+  return {{"max_steps", std::to_string(m.max_steps)}, {"threshold_px", std::to_string(m.threshold)},
+          {"epsilon", std::to_string(m.epsilon)}, {"step_scale", std::to_string(m.step_scale)}};
 }
 
 Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
@@ -137,10 +150,8 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   Measurement out;
   out.reference = format("reference: %.2f s, %.3g evaluations (spacing %.3g footprints, iterations x%u)",
                          seconds_since(start), static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
-  out.settings = format("scene: paper, %ux%u, time %.2f s, %u steps, threshold %.3g footprints, epsilon %.3g, step scale %.3g",
-                        width, height, static_cast<double>(k.time), constants.max_steps,
-                        static_cast<double>(constants.footprint_scale), static_cast<double>(constants.epsilon),
-                        static_cast<double>(constants.step_scale));
+  out.settings = format("scene: paper, %ux%u, time %.2f s; Mandelbulb knobs: %s", width, height,
+                        static_cast<double>(k.time), proceduray::describe(constants.knobs[paper::mandelbulb_id]).c_str());
   out.trace_ms = frame.trace_ms;
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
@@ -165,12 +176,9 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   Measurement out;
   out.reference = format("reference: %.2f s, %.3g evaluations", seconds_since(start),
                          static_cast<double>(truth.evaluations));
-  out.settings = format("scene: d3d12, %ux%u, time %.2f s, %u steps, threshold %.3g footprints, epsilon %.3g, "
-                        "step scale %.3g, metaballs %s (%u steps)",
-                        width, height, static_cast<double>(k.time), constants.max_steps,
-                        static_cast<double>(constants.footprint_scale), static_cast<double>(constants.epsilon),
-                        static_cast<double>(constants.step_scale),
-                        constants.metaball_method == d3d12::metaball_fixed ? "fixed" : "lipschitz", constants.metaball_steps);
+  out.settings = format("scene: d3d12, %ux%u, time %.2f s; SDF knobs: %s; metaballs: %s", width, height,
+                        static_cast<double>(k.time), proceduray::describe(d3d12::knobs(constants, d3d12::cog)).c_str(),
+                        proceduray::describe(d3d12::knobs(constants, d3d12::metaballs)).c_str());
   out.trace_ms = frame.trace_ms;
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
   const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);

@@ -2,6 +2,7 @@
 // Every procedural object: the object-space normal from the intersection shader, the
 // material from this hit record, Phong + Schlick-Fresnel, shadow and reflection rays.
 #include "surface.glsl"
+#include "marching/knobs.glsl"
 
 void main() {
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
@@ -12,8 +13,9 @@ void main() {
 #endif
   // Marched surfaces are found within this threshold (as the intersection shader set it):
   // secondary rays start twice as far out so they do not find the same surface at once.
-  float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);
-  vec3 colour = shade_surface(p, n, arguments.albedo, hit.steps > 0.0 ? 2.0 * threshold : constants.epsilon);
+  MarchKnobs k = constants.knobs[arguments.object_id];
+  float threshold = march_knobs_threshold(k, constants.camera.pixel_angle, gl_HitTEXT);
+  vec3 colour = shade_surface(p, n, arguments.albedo, hit.steps > 0.0 ? 2.0 * threshold : k.epsilon);
   payload.colour = colour;
   payload.object_id = arguments.object_id;
   payload.steps = hit.steps;

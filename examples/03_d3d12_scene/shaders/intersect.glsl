@@ -1,15 +1,15 @@
 // The body of the three intersection shaders: the record's primitive, intersected in local
 // (= object) space with the knobs from `constants`, reported when valid for this ray
 // (t in [gl_RayTminEXT, gl_RayTmaxEXT], cull flags honoured: the sample's IsAValidHit).
-// Marching runs along the unit object-space direction: the world epsilon is divided by the
-// instance's scale; the footprint term is an angle and needs none. constants.over_relaxation is
-// the sphere tracer's w (1 = plain). With flag_count_misses a radiance ray that marched and
+// The march follows the primitive's own knobs, constants.knobs[arguments.object_id].
+// Marching runs along the unit object-space direction: world lengths in the knobs are divided
+// by the instance's scale; the footprint term is an angle and needs none. With flag_count_misses a radiance ray that marched and
 // missed reports at t_max with counted_miss_kind, carrying its steps (see d3d12_types.hpp).
 // With per-pixel outputs it adds its evaluations and sets the exhausted and NaN flags.
 #ifndef D3D12_INTERSECT_GLSL
 #define D3D12_INTERSECT_GLSL
 
-#include "primitives/d3d12_primitives.glsl"
+#include "primitives/d3d12_knobs.glsl"
 
 void intersect_record_primitive() {
   vec3 o = gl_ObjectRayOriginEXT;
@@ -19,18 +19,17 @@ void intersect_record_primitive() {
   if ((gl_IncomingRayFlagsEXT & gl_RayFlagsCullFrontFacingTrianglesEXT) != 0u) cull |= hit_cull_front;
   float len = max(length(d), 1.0e-30);
   float world_per_object = max(length(gl_WorldRayDirectionEXT) / len, 1.0e-20);
-  MarchSettings m = MarchSettings(constants.max_steps, constants.epsilon / world_per_object,
-                                  constants.footprint_scale * constants.camera.pixel_angle, constants.step_scale,
-                                  constants.over_relaxation);
+  MarchKnobs k = constants.knobs[arguments.object_id];
   float t;
   vec3 n;
   float steps;
-  bool found = d3d12_intersect(arguments.kind, arguments.params, arguments.spin, constants.time, o, d, gl_RayTminEXT,
-                               gl_RayTmaxEXT, cull, m, constants.metaball_method, constants.metaball_steps, t, n, steps);
-  output_steps(uint(steps) + (found && arguments.kind > primitive_metaballs ? 6u : 0u));  // + an SDF's normal
+  bool found = d3d12_intersect_knobs(arguments.kind, arguments.params, arguments.spin, constants.time, o, d,
+                                     gl_RayTminEXT, gl_RayTmaxEXT, cull, k, world_per_object,
+                                     constants.camera.pixel_angle, t, n, steps);
+  output_steps(uint(steps) + (found && arguments.kind > primitive_metaballs ? march_normal_evaluations(k) : 0u));
 #ifdef PROCEDURAY_OUTPUTS
   // Marches that ran out of steps (the metaballs' fixed march never does: its steps are fixed).
-  if (!found && steps >= float(constants.max_steps)) output_flags(output_flag_exhausted);
+  if (!found && arguments.kind >= primitive_metaballs && steps >= float(k.max_steps)) output_flags(output_flag_exhausted);
   if (found && (isnan(t) || any(isnan(n)))) output_flags(output_flag_nan);
 #endif
   if (!found) {

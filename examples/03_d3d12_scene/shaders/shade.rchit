@@ -3,6 +3,7 @@
 // Phong, shadow and reflection. Flags NaN or infinity in what the intersection reported.
 // A counted miss (flag_count_misses) shows the sky and passes its marching steps on.
 #include "surface.glsl"
+#include "marching/knobs.glsl"
 
 void main() {
   if (gl_HitKindEXT == counted_miss_kind) {  // flag_count_misses: a miss that carries its steps
@@ -19,7 +20,7 @@ void main() {
   if (payload.depth == 0u) output_hit(n);  // the camera ray's hit (reflections reuse this shader)
 #endif
   // Marched surfaces are found within this threshold: secondary rays start twice as far out.
-  float threshold = max(constants.epsilon, constants.footprint_scale * constants.camera.pixel_angle * gl_HitTEXT);
+  float threshold = march_knobs_threshold(constants.knobs[arguments.object_id], constants.camera.pixel_angle, gl_HitTEXT);
   vec3 colour = shade_surface(p, n, arguments.albedo, arguments.reflectance, hit.steps > 0.0 ? 2.0 * threshold : 0.0);
   payload.nonfinite |= (bad || nonfinite3(colour)) ? 1u : 0u;
   payload.colour = colour;

@@ -1,0 +1,264 @@
+// How a marched geometry is intersected, chosen at run time per geometry: the method, its
+// knobs, and what each geometry accepts. The struct crosses to the GLSL (a storage buffer of
+// them, one per geometry), where shaders/marching/knobs.glsl turns one into MarchSettings.
+//
+//   const proceduray::MarchCapabilities caps{"sdf", {proceduray::MarchMethod::lipschitz, proceduray::MarchMethod::relaxed},
+//                                            {proceduray::MarchNormal::central}, 0, proceduray::march_base_knobs};
+//   proceduray::MarchKnobs k = caps.defaults;              // march/primitives.hpp has the shipped geometries'
+//   proceduray::set_knob(k, "method", "relaxed");          // names as the sweep tool takes them
+//   proceduray::set_knob(k, "relaxation", "1.6");
+//   proceduray::validate(k, caps, "cog");                  // throws UsageError on bad input
+//   std::string line = proceduray::describe(k);            // "method=relaxed max_steps=512 ..."
+//   // GLSL: MarchSettings m = march_settings(knobs.data[id], world_per_object, pixel_angle, lipschitz);
+//
+// Why one struct for every method: a sweep, a calibration table and an error budget all speak
+// of "the knobs of a geometry"; a knob a method does not read is ignored by the shader but
+// still validated, so a table row always describes one valid setting. Enums are uint32 in the
+// struct (GLSL has no enums); their values equal the march_* consts of knobs.glsl (a test
+// compiles that file as C++ and compares).
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/shader/field_list.hpp>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace proceduray {
+
+/// How the ray finds the surface.
+enum class MarchMethod : std::uint32_t {
+  sphere,     ///< steps of the distance (Hart 1996); assumes a 1-Lipschitz distance
+  relaxed,    ///< over-relaxed steps w * distance / L with Keinert et al.'s (2014) fallback
+  lipschitz,  ///< steps of distance / L, L the geometry's Lipschitz bound
+  segment,    ///< segment tracing (Galin et al. 2020): a Lipschitz bound per segment (metaballs)
+  fixed,      ///< equal steps across the box, then the crossing (the D3D12 sample's metaballs)
+};
+/// How the hit threshold is given.
+enum class MarchThreshold : std::uint32_t {
+  footprint,  ///< `threshold` pixel footprints at the hit's distance, at least `epsilon` world units
+  absolute,   ///< `threshold` world units everywhere
+};
+/// How the normal at a hit is found.
+enum class MarchNormal : std::uint32_t {
+  analytic,     ///< the geometry's own gradient (where it has one)
+  central,      ///< central differences: 6 evaluations, error O(h^2)
+  tetrahedral,  ///< four samples on a tetrahedron: 4 evaluations, error O(h)
+};
+/// How many iterations a fractal's estimate runs.
+enum class MarchIterations : std::uint32_t {
+  fixed,        ///< always `iterations`
+  by_distance,  ///< `iterations` while a pixel footprint is below `iteration_detail`, one fewer per doubling beyond
+};
+
+inline constexpr std::array<std::string_view, 5> march_method_names{"sphere", "relaxed", "lipschitz", "segment", "fixed"};
+inline constexpr std::array<std::string_view, 2> march_threshold_names{"footprint", "absolute"};
+inline constexpr std::array<std::string_view, 3> march_normal_names{"analytic", "central", "tetrahedral"};
+inline constexpr std::array<std::string_view, 2> march_iterations_names{"fixed", "by_distance"};
+
+/// One geometry's knobs (GLSL: MarchKnobs, scalar layout).
+struct MarchKnobs {
+  std::uint32_t method;          ///< MarchMethod
+  std::uint32_t max_steps;       ///< evaluations at most, refinement included; then a miss
+  std::uint32_t threshold_mode;  ///< MarchThreshold
+  float threshold;               ///< pixel footprints (footprint mode) or world units (absolute)
+  float epsilon;                 ///< footprint mode: the threshold's floor in world units
+  float step_scale;              ///< factor on every step, (0, 1]: a fudge for estimates that overshoot
+  float relaxation;              ///< relaxed: w in [1, 2)
+  std::uint32_t fixed_steps;     ///< fixed: equal steps across the box, < max_steps
+  std::uint32_t refine;          ///< 1: bisect the crossing to 1/32 threshold; 0: report the last outside point
+  std::uint32_t normal;          ///< MarchNormal
+  float normal_scale;            ///< differences' offset h as a fraction of the threshold at the hit
+  std::uint32_t iterations;      ///< fractals: iterations (the most, by distance)
+  std::uint32_t iteration_mode;  ///< MarchIterations
+  float iteration_detail;        ///< by_distance: world size of a footprint up to which all iterations run
+};
+PROCEDURAY_STRUCT(MarchKnobs, scalar, method, max_steps, threshold_mode, threshold, epsilon, step_scale, relaxation,
+                  fixed_steps, refine, normal, normal_scale, iterations, iteration_mode, iteration_detail);
+
+/// What a geometry accepts, and its defaults.
+struct MarchCapabilities {
+  std::string_view kind;                 ///< "sdf", "fractal", "metaballs": for messages
+  std::vector<MarchMethod> methods;      ///< accepted methods, the default first
+  std::vector<MarchNormal> normals;      ///< accepted normal methods, the default first
+  std::uint32_t max_iterations = 0;      ///< > 0: a fractal whose iterations are knobs, up to this
+  MarchKnobs defaults{};                 ///< the default knobs (from the measured front)
+};
+
+/// Defaults for a distance bound: Lipschitz-scaled sphere tracing, 512 steps, half a footprint
+/// (at least 1e-4), refined hits, central normals at the threshold.
+inline constexpr MarchKnobs march_base_knobs{2u, 512u, 0u, 0.5f, 1.0e-4f, 1.0f, 1.0f, 64u, 1u, 1u, 1.0f, 0u, 0u, 0.01f};
+
+namespace detail {
+
+template <std::size_t N>
+std::string joined(const std::array<std::string_view, N>& names) {
+  std::string out;
+  for (std::string_view n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+  return out;
+}
+
+template <class Enum, std::size_t N>
+std::string joined_of(const std::vector<Enum>& values, const std::array<std::string_view, N>& names) {
+  std::string out;
+  for (Enum v : values) out += (out.empty() ? "" : ", ") + std::string(names[static_cast<std::uint32_t>(v)]);
+  return out;
+}
+
+inline std::string number(float v) {
+  char text[32];
+  const auto r = std::to_chars(text, text + sizeof text, v);
+  return std::string(text, r.ptr);
+}
+
+template <class Enum, std::size_t N>
+Enum parse_name(std::string_view value, const std::array<std::string_view, N>& names, std::string_view knob) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (names[i] == value) return static_cast<Enum>(i);
+  }
+  throw UsageError("march knobs: unknown " + std::string(knob) + " '" + std::string(value) + "'; valid: " +
+                   joined(names));
+}
+
+template <class T>
+T parse_number(std::string_view knob, std::string_view value) {
+  T out{};
+  const char* end = value.data() + value.size();
+  const auto r = std::from_chars(value.data(), end, out);
+  if (r.ec != std::errc{} || r.ptr != end) {
+    throw UsageError("march knobs: " + std::string(knob) + " '" + std::string(value) + "' is not a" +
+                     (std::is_floating_point_v<T> ? " number" : " whole number") + "; give e.g. " +
+                     (std::is_floating_point_v<T> ? "0.5" : "256"));
+  }
+  return out;
+}
+
+}  // namespace detail
+
+/// The knob names set_knob takes, in the struct's order.
+inline constexpr std::array<std::string_view, 14> march_knob_names{
+    "method", "max_steps", "threshold_mode", "threshold", "epsilon", "step_scale", "relaxation",
+    "fixed_steps", "refine", "normal", "normal_scale", "iterations", "iteration_mode", "iteration_detail"};
+
+/// Sets one knob from text (enum names, numbers; refine takes on/off too). Throws UsageError for
+/// an unknown knob or value, listing the valid ones; ranges are validate()'s business.
+inline void set_knob(MarchKnobs& k, std::string_view name, std::string_view value) {
+  using detail::parse_number;
+  if (name == "method") k.method = static_cast<std::uint32_t>(detail::parse_name<MarchMethod>(value, march_method_names, name));
+  else if (name == "max_steps") k.max_steps = parse_number<std::uint32_t>(name, value);
+  else if (name == "threshold_mode") k.threshold_mode = static_cast<std::uint32_t>(detail::parse_name<MarchThreshold>(value, march_threshold_names, name));
+  else if (name == "threshold") k.threshold = parse_number<float>(name, value);
+  else if (name == "epsilon") k.epsilon = parse_number<float>(name, value);
+  else if (name == "step_scale") k.step_scale = parse_number<float>(name, value);
+  else if (name == "relaxation") k.relaxation = parse_number<float>(name, value);
+  else if (name == "fixed_steps") k.fixed_steps = parse_number<std::uint32_t>(name, value);
+  else if (name == "refine") {
+    if (value == "on" || value == "1") k.refine = 1;
+    else if (value == "off" || value == "0") k.refine = 0;
+    else throw UsageError("march knobs: refine '" + std::string(value) + "' is not on/off; valid: on, off, 1, 0");
+  } else if (name == "normal") k.normal = static_cast<std::uint32_t>(detail::parse_name<MarchNormal>(value, march_normal_names, name));
+  else if (name == "normal_scale") k.normal_scale = parse_number<float>(name, value);
+  else if (name == "iterations") k.iterations = parse_number<std::uint32_t>(name, value);
+  else if (name == "iteration_mode") k.iteration_mode = static_cast<std::uint32_t>(detail::parse_name<MarchIterations>(value, march_iterations_names, name));
+  else if (name == "iteration_detail") k.iteration_detail = parse_number<float>(name, value);
+  else throw UsageError("march knobs: unknown knob '" + std::string(name) + "'; valid: " + detail::joined(march_knob_names));
+}
+
+/// Each knob as (name, text): the columns of a sweep's CSV and a calibration table.
+inline std::vector<std::pair<std::string, std::string>> knob_values(const MarchKnobs& k) {
+  auto name_of = [](const auto& names, std::uint32_t v) {
+    return v < names.size() ? std::string(names[v]) : "invalid(" + std::to_string(v) + ")";
+  };
+  return {{"method", name_of(march_method_names, k.method)},
+          {"max_steps", std::to_string(k.max_steps)},
+          {"threshold_mode", name_of(march_threshold_names, k.threshold_mode)},
+          {"threshold", detail::number(k.threshold)},
+          {"epsilon", detail::number(k.epsilon)},
+          {"step_scale", detail::number(k.step_scale)},
+          {"relaxation", detail::number(k.relaxation)},
+          {"fixed_steps", std::to_string(k.fixed_steps)},
+          {"refine", k.refine != 0 ? "on" : "off"},
+          {"normal", name_of(march_normal_names, k.normal)},
+          {"normal_scale", detail::number(k.normal_scale)},
+          {"iterations", std::to_string(k.iterations)},
+          {"iteration_mode", name_of(march_iterations_names, k.iteration_mode)},
+          {"iteration_detail", detail::number(k.iteration_detail)}};
+}
+
+/// "name=value ..." of every knob.
+inline std::string describe(const MarchKnobs& k) {
+  std::string out;
+  for (const auto& [name, value] : knob_values(k)) out += (out.empty() ? "" : " ") + name + "=" + value;
+  return out;
+}
+
+/// Throws UsageError unless `k` is a setting `caps` accepts: names the geometry, the knob, its
+/// value, and the valid range or names.
+inline void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::string_view geometry) {
+  const std::string where = "march knobs of '" + std::string(geometry) + "' (" + std::string(caps.kind) + "): ";
+  auto fail = [&](const std::string& what) { throw UsageError(where + what); };
+  auto finite = [](float v) { return std::isfinite(v); };
+  if (caps.methods.empty()) fail("this geometry is not marched (analytic): it takes no march knobs");
+  bool method_ok = false;
+  for (MarchMethod m : caps.methods) method_ok = method_ok || static_cast<std::uint32_t>(m) == k.method;
+  if (!method_ok) {
+    fail("method " + (k.method < march_method_names.size() ? std::string(march_method_names[k.method])
+                                                            : std::to_string(k.method)) +
+         " does not apply; valid: " + detail::joined_of(caps.methods, march_method_names));
+  }
+  if (k.max_steps == 0 || k.max_steps > 65536) {
+    fail("max_steps " + std::to_string(k.max_steps) + " is out of range; give 1 to 65536 (0 steps never hit)");
+  }
+  if (k.threshold_mode >= march_threshold_names.size()) {
+    fail("threshold_mode " + std::to_string(k.threshold_mode) + " is unknown; valid: " + detail::joined(march_threshold_names));
+  }
+  if (!(finite(k.threshold) && k.threshold > 0.0f)) {
+    fail("threshold " + detail::number(k.threshold) + " must be a positive number (" +
+         (k.threshold_mode == 0 ? "pixel footprints, e.g. 0.5" : "world units, e.g. 1e-3") + ")");
+  }
+  if (!(finite(k.epsilon) && k.epsilon >= 0.0f)) fail("epsilon " + detail::number(k.epsilon) + " must be >= 0 world units");
+  if (!(finite(k.step_scale) && k.step_scale > 0.0f && k.step_scale <= 1.0f)) {
+    fail("step_scale " + detail::number(k.step_scale) + " must be in (0, 1]: larger steps than the bound allows skip surfaces");
+  }
+  if (!(finite(k.relaxation) && k.relaxation >= 1.0f && k.relaxation < 2.0f)) {
+    fail("relaxation " + detail::number(k.relaxation) + " must be in [1, 2): at 2 and above relaxed steps "
+         "never keep their spheres overlapping (Keinert et al. 2014)");
+  }
+  if (k.method == static_cast<std::uint32_t>(MarchMethod::fixed) && (k.fixed_steps == 0 || k.fixed_steps >= k.max_steps)) {
+    fail("fixed_steps " + std::to_string(k.fixed_steps) + " must be in [1, max_steps) = [1, " +
+         std::to_string(k.max_steps) + "): the crossing's refinement needs steps left");
+  }
+  if (k.refine > 1) fail("refine " + std::to_string(k.refine) + " must be 0 (off) or 1 (on)");
+  bool normal_ok = false;
+  for (MarchNormal n : caps.normals) normal_ok = normal_ok || static_cast<std::uint32_t>(n) == k.normal;
+  if (!normal_ok) {
+    fail("normal " + (k.normal < march_normal_names.size() ? std::string(march_normal_names[k.normal])
+                                                           : std::to_string(k.normal)) +
+         " does not apply; valid: " + detail::joined_of(caps.normals, march_normal_names));
+  }
+  if (!(finite(k.normal_scale) && k.normal_scale > 0.0f && k.normal_scale <= 64.0f)) {
+    fail("normal_scale " + detail::number(k.normal_scale) + " must be in (0, 64] thresholds");
+  }
+  if (k.iteration_mode >= march_iterations_names.size()) {
+    fail("iteration_mode " + std::to_string(k.iteration_mode) + " is unknown; valid: " + detail::joined(march_iterations_names));
+  }
+  if (caps.max_iterations == 0) {
+    if (k.iteration_mode != 0) fail("iteration_mode by_distance needs a fractal; this geometry has no iterations");
+  } else {
+    if (k.iterations == 0 || k.iterations > caps.max_iterations) {
+      fail("iterations " + std::to_string(k.iterations) + " must be in [1, " + std::to_string(caps.max_iterations) + "]");
+    }
+    if (k.iteration_mode == 1 && !(finite(k.iteration_detail) && k.iteration_detail > 0.0f)) {
+      fail("iteration_detail " + detail::number(k.iteration_detail) + " must be a positive world size");
+    }
+  }
+}
+
+}  // namespace proceduray

@@ -1,0 +1,83 @@
+// A geometry's MarchKnobs (proceduray/march/knobs.hpp, declared by the generated GLSL) turned
+// into what the marches take: MarchSettings, the normal, the fractal's iteration count.
+//
+//   // after the generated declarations and the includer's march_distance:
+//   #include "marching/knobs.glsl"
+//   MarchKnobs k = knobs.data[arguments.object_id];
+//   MarchSettings m = march_settings(k, world_per_object, constants.camera.pixel_angle, lipschitz);
+//   if (sphere_trace(o, u, s_lo, s_hi, m, s, steps)) n = march_knobs_normal(k, o + s * u, march_epsilon(m, s));
+//
+// Marching runs in object space along a unit direction; `world_per_object` (world length per
+// object length) turns the world-unit knobs (absolute threshold, epsilon) into object units.
+// The footprint term is an angle and needs none. `lipschitz` is the geometry's bound L (1 for
+// an exact SDF or an estimate): lipschitz and relaxed steps are distance / L, sphere steps
+// assume L = 1. The method codes equal MarchMethod's (a test compiles this file as C++).
+#ifndef PROCEDURAY_MARCHING_KNOBS_GLSL
+#define PROCEDURAY_MARCHING_KNOBS_GLSL
+
+#include "../common/compat.glsl"
+#include "sphere_trace.glsl"
+
+PROCEDURAY_CONST uint march_method_sphere = 0u;
+PROCEDURAY_CONST uint march_method_relaxed = 1u;
+PROCEDURAY_CONST uint march_method_lipschitz = 2u;
+PROCEDURAY_CONST uint march_method_segment = 3u;
+PROCEDURAY_CONST uint march_method_fixed = 4u;
+PROCEDURAY_CONST uint march_threshold_footprint = 0u;
+PROCEDURAY_CONST uint march_threshold_absolute = 1u;
+PROCEDURAY_CONST uint march_normal_analytic = 0u;
+PROCEDURAY_CONST uint march_normal_central = 1u;
+PROCEDURAY_CONST uint march_normal_tetrahedral = 2u;
+PROCEDURAY_CONST uint march_iterations_fixed = 0u;
+PROCEDURAY_CONST uint march_iterations_by_distance = 1u;
+
+/// The MarchSettings of knobs k for a ray whose object space has world_per_object world units per unit.
+PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, real world_per_object, real pixel_angle, real lipschitz) {
+#ifdef __cplusplus
+  MarchSettings m{};
+#else
+  MarchSettings m;
+#endif
+  real scale = world_per_object > R(0.0) ? world_per_object : R(1.0);
+  bool absolute = k.threshold_mode == march_threshold_absolute;
+  m.max_steps = k.max_steps;
+  m.epsilon = real(absolute ? k.threshold : k.epsilon) / scale;
+  m.footprint = absolute ? R(0.0) : real(k.threshold) * pixel_angle;
+  bool bounded = k.method == march_method_lipschitz || k.method == march_method_relaxed;
+  m.step_scale = real(k.step_scale) / (bounded && lipschitz > R(0.0) ? lipschitz : R(1.0));
+  m.over_relaxation = k.method == march_method_relaxed ? real(k.relaxation) : R(1.0);
+  m.fixed_steps = k.method == march_method_fixed ? max(k.fixed_steps, 1u) : 0u;
+  m.hit_rule = k.refine != 0u ? march_hit_refined : march_hit_unrefined;
+  return m;
+}
+
+/// The hit threshold of knobs k at distance t, in world units (pixel_angle: radians per pixel):
+/// how far from the surface a hit may lie, e.g. to offset secondary rays.
+PROCEDURAY_INLINE real march_knobs_threshold(MarchKnobs k, real pixel_angle, real t) {
+  if (k.threshold_mode == march_threshold_absolute) return real(k.threshold);
+  return max(real(k.epsilon), real(k.threshold) * pixel_angle * t);
+}
+
+/// The normal at p by the knobs' difference method, its offset normal_scale thresholds (and at
+/// least normal_offset's float spacings). Analytic normals are the geometry's own: not here.
+PROCEDURAY_INLINE real3 march_knobs_normal(MarchKnobs k, real3 p, real threshold) {
+  real h = normal_offset(real(k.normal_scale) * threshold, p);
+  return k.normal == march_normal_tetrahedral ? tetrahedral_normal(p, h) : central_normal(p, h);
+}
+
+/// Distance evaluations march_knobs_normal takes.
+PROCEDURAY_INLINE uint march_normal_evaluations(MarchKnobs k) {
+  return k.normal == march_normal_tetrahedral ? 4u : (k.normal == march_normal_central ? 6u : 0u);
+}
+
+/// A fractal's iteration count where a pixel footprint is `footprint` world units wide: all of
+/// them up to iteration_detail, one fewer per doubling beyond (at least 1); fixed mode: all.
+PROCEDURAY_INLINE uint march_iterations(MarchKnobs k, real footprint) {
+  uint n = max(k.iterations, 1u);
+  if (k.iteration_mode != march_iterations_by_distance || !(footprint > real(k.iteration_detail))) return n;
+  real doublings = ceil(log2(footprint / real(k.iteration_detail)));
+  uint drop = uint(min(doublings, real(n - 1u)));
+  return n - drop;
+}
+
+#endif

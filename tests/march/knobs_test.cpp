@@ -1,0 +1,111 @@
+// march/knobs.hpp: names in and out, and validate's messages for every bad knob.
+#include <proceduray/march/knobs.hpp>
+#include <proceduray/march/primitives.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <string>
+
+using namespace proceduray;
+
+namespace {
+
+const MarchCapabilities& sdf = sdf_capabilities();
+
+MarchKnobs with(const char* name, const char* value, MarchKnobs k = march_base_knobs) {
+  set_knob(k, name, value);
+  return k;
+}
+
+}  // namespace
+
+TEST_CASE("march knobs - every knob round-trips through its text") {
+  MarchKnobs a = march_base_knobs;
+  const MarchKnobs b{4u, 77u, 1u, 0.125f, 2.5e-3f, 0.75f, 1.5f, 33u, 0u, 2u, 0.5f, 9u, 1u, 0.03f};
+  for (const auto& [name, value] : knob_values(b)) set_knob(a, name, value);
+  CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+  CHECK(knob_values(b).size() == march_knob_names.size());
+  for (std::size_t i = 0; i < march_knob_names.size(); ++i) CHECK(knob_values(b)[i].first == march_knob_names[i]);
+  CHECK(describe(b).find("method=fixed max_steps=77 threshold_mode=absolute threshold=0.125") == 0);
+  CHECK(with("refine", "off").refine == 0);
+  CHECK(with("refine", "on", with("refine", "off")).refine == 1);
+}
+
+TEST_CASE("march knobs - unknown names and values list the valid ones") {
+  MarchKnobs k = march_base_knobs;
+  CHECK_THROWS_WITH_AS(set_knob(k, "stepz", "3"),
+                       doctest::Contains("unknown knob 'stepz'; valid: method, max_steps, threshold_mode"), UsageError);
+  CHECK_THROWS_WITH_AS(set_knob(k, "method", "marching"),
+                       doctest::Contains("unknown method 'marching'; valid: sphere, relaxed, lipschitz, segment, fixed"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(set_knob(k, "normal", "sobel"), doctest::Contains("valid: analytic, central, tetrahedral"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(set_knob(k, "max_steps", "-3"), doctest::Contains("max_steps '-3' is not a whole number"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(set_knob(k, "threshold", "half"), doctest::Contains("threshold 'half' is not a number"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(set_knob(k, "refine", "maybe"), doctest::Contains("valid: on, off"), UsageError);
+  CHECK(k.max_steps == march_base_knobs.max_steps);  // a refused value changes nothing
+}
+
+TEST_CASE("march knobs - validate names the geometry, the knob, the value and the range") {
+  CHECK_NOTHROW(validate(march_base_knobs, sdf, "cog"));
+  struct Bad {
+    const char* knob;
+    const char* value;
+    const char* message;
+  };
+  const Bad bad[] = {
+      {"max_steps", "0", "max_steps 0 is out of range; give 1 to 65536"},
+      {"threshold", "-0.5", "threshold -0.5 must be a positive number (pixel footprints"},
+      {"threshold", "0", "threshold 0 must be a positive number"},
+      {"threshold", "nan", "threshold nan must be a positive number"},
+      {"relaxation", "2", "relaxation 2 must be in [1, 2)"},
+      {"relaxation", "0.9", "relaxation 0.9 must be in [1, 2)"},
+      {"step_scale", "0", "step_scale 0 must be in (0, 1]"},
+      {"step_scale", "1.5", "step_scale 1.5 must be in (0, 1]"},
+      {"epsilon", "-1", "epsilon -1 must be >= 0"},
+      {"method", "segment", "method segment does not apply; valid: lipschitz, sphere, relaxed, fixed"},
+      {"normal", "analytic", "normal analytic does not apply; valid: central, tetrahedral"},
+      {"normal_scale", "0", "normal_scale 0 must be in (0, 64]"},
+      {"iteration_mode", "by_distance", "iteration_mode by_distance needs a fractal"},
+  };
+  for (const Bad& b : bad) {
+    CAPTURE(b.knob);
+    CAPTURE(b.value);
+    CHECK_THROWS_WITH_AS(validate(with(b.knob, b.value), sdf, "cog"),
+                         doctest::Contains((std::string("march knobs of 'cog' (sdf): ") + b.message).c_str()), UsageError);
+  }
+  MarchKnobs fixed = with("method", "fixed");
+  fixed.fixed_steps = fixed.max_steps;
+  CHECK_THROWS_WITH_AS(validate(fixed, sdf, "cog"), doctest::Contains("fixed_steps 512 must be in [1, max_steps) = [1, 512)"),
+                       UsageError);
+  fixed.fixed_steps = 0;
+  CHECK_THROWS_AS(validate(fixed, sdf, "cog"), UsageError);
+  MarchKnobs bad_enum = march_base_knobs;
+  bad_enum.threshold_mode = 7;
+  CHECK_THROWS_WITH_AS(validate(bad_enum, sdf, "cog"), doctest::Contains("threshold_mode 7 is unknown; valid: footprint, absolute"),
+                       UsageError);
+  bad_enum = march_base_knobs;
+  bad_enum.refine = 2;
+  CHECK_THROWS_WITH_AS(validate(bad_enum, sdf, "cog"), doctest::Contains("refine 2 must be 0 (off) or 1 (on)"), UsageError);
+  const MarchCapabilities analytic{"analytic", {}, {MarchNormal::analytic}, 0, march_base_knobs};
+  CHECK_THROWS_WITH_AS(validate(march_base_knobs, analytic, "box"), doctest::Contains("not marched (analytic)"), UsageError);
+}
+
+TEST_CASE("march knobs - fractal iterations are checked against the fractal's range") {
+  const MarchCapabilities bulb = fractal_capabilities(8);
+  CHECK_NOTHROW(validate(bulb.defaults, bulb, "mandelbulb"));
+  CHECK_THROWS_WITH_AS(validate(with("iterations", "0", bulb.defaults), bulb, "mandelbulb"),
+                       doctest::Contains("iterations 0 must be in [1, 16]"), UsageError);
+  CHECK_THROWS_WITH_AS(validate(with("iterations", "17", bulb.defaults), bulb, "mandelbulb"),
+                       doctest::Contains("iterations 17 must be in [1, 16]"), UsageError);
+  MarchKnobs far = with("iteration_mode", "by_distance", bulb.defaults);
+  CHECK_NOTHROW(validate(far, bulb, "mandelbulb"));
+  far.iteration_detail = 0.0f;
+  CHECK_THROWS_WITH_AS(validate(far, bulb, "mandelbulb"), doctest::Contains("iteration_detail 0 must be a positive world size"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(validate(with("method", "lipschitz", bulb.defaults), bulb, "mandelbulb"),
+                       doctest::Contains("valid: sphere, relaxed, fixed"), UsageError);
+}
