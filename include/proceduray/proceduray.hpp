@@ -13,6 +13,9 @@
 
 #include <proceduray/error.hpp>
 #include <proceduray/image/png.hpp>
+#include <proceduray/march/knobs.hpp>
+#include <proceduray/march/primitives.hpp>
+#include <proceduray/march/calibration.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>
 #include <proceduray/scene/glsl_files.hpp>
@@ -40,6 +43,7 @@
 #include <proceduray/vk/renderer.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
+#include <proceduray/version.hpp>
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/structs.hpp>
 #include <proceduray/vk/tlas.hpp>

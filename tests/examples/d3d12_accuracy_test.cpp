@@ -62,7 +62,9 @@ TEST_CASE("d3d12 accuracy: the ground and the analytic and metaball primitives m
     CHECK(a.all.false_hits == 0);
     CHECK(a.all.false_misses == 0);
     CHECK(a.all.depth.max < 1e-3);           // footprints (seen: metaballs 1e-4, the rest 2e-5)
-    CHECK(a.all.normal_degrees.max < 1e-2);  // degrees (seen: metaballs 8e-4)
+    // Degrees. Seen: metaballs 8e-4 with fixed steps, 0.021 with segment tracing (their default
+    // since 0.2.0: its crossing step, bisected 10 times, can be longer), the rest below 1e-3.
+    CHECK(a.all.normal_degrees.max < (kind == d3d12::metaballs ? 0.05 : 1e-2));
   }
   const accuracy::Metrics ground = d3d12::measure_object(m.truth, m.samples, m.seen, d3d12::plane_id);
   CHECK(ground.all.both_hit > 1000);

@@ -34,6 +34,7 @@ struct Knobs {
   std::string size = "160x120";
   std::string device = "auto";
   std::string csv;
+  std::string steps_csv;
   bool append = false;
   bool validation = false;
   float time = 0.0f;
@@ -62,6 +63,7 @@ struct Measurement {
   acc::Metrics all;
   std::vector<ObjectRow> objects;
   std::vector<acc::Label> labels;  // the CSV's knob columns
+  std::vector<std::uint32_t> steps;  // per pixel: the camera ray's evaluations (heat map)
 };
 
 /// One line per object: what a reader compares first.
@@ -153,6 +155,7 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   out.settings = format("scene: paper, %ux%u, time %.2f s; Mandelbulb knobs: %s", width, height,
                         static_cast<double>(k.time), proceduray::describe(constants.knobs[paper::mandelbulb_id]).c_str());
   out.trace_ms = frame.trace_ms;
+  out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
@@ -180,6 +183,7 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                         static_cast<double>(k.time), proceduray::describe(d3d12::knobs(constants, d3d12::cog)).c_str(),
                         proceduray::describe(d3d12::knobs(constants, d3d12::metaballs)).c_str());
   out.trace_ms = frame.trace_ms;
+  out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
   const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);
   for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) {
@@ -207,6 +211,19 @@ int run(const Knobs& k) {
   std::fflush(stdout);
   print_objects(m.objects);
   std::printf("(depth in pixel footprints; fh%%: false hits among the silhouette band's rays; steps: mean per ray that sees the object)\n");
+  if (!k.steps_csv.empty()) {
+    // A row per image row, a column per pixel: tools/accuracy/heatmap.py draws it.
+    std::ofstream out(k.steps_csv, std::ios::trunc);
+    if (!out || m.steps.size() != std::size_t{width} * height) {
+      std::fprintf(stderr, "proceduray_accuracy: cannot write '%s'; give a writable --steps-csv path\n", k.steps_csv.c_str());
+      return 1;
+    }
+    for (unsigned y = 0; y < height; ++y) {
+      for (unsigned x = 0; x < width; ++x) out << (x ? "," : "") << m.steps[std::size_t{y} * width + x];
+      out << '\n';
+    }
+    std::printf("wrote %s\n", k.steps_csv.c_str());
+  }
   if (!k.csv.empty()) {
     std::ofstream out(k.csv, k.append ? std::ios::app : std::ios::trunc);
     if (!out) {
@@ -242,6 +259,7 @@ int main(int argc, char** argv) {
   app.add_option("--device", k.device, "cpu (lavapipe), gpu or auto")->check(CLI::IsMember({"cpu", "gpu", "auto"}))
       ->capture_default_str();
   app.add_option("--csv", k.csv, "CSV file to write (a header, then a row per pixel class)");
+  app.add_option("--steps-csv", k.steps_csv, "per-pixel evaluations as a W x H CSV (tools/accuracy/heatmap.py draws it)");
   app.add_flag("--append", k.append, "append rows to --csv (a sweep), writing the header only into an empty file");
   app.add_flag("--validation", k.validation, "enable the Khronos validation layer");
   app.add_option("--time", k.time, "scene time in seconds (the fractals' animation)")->capture_default_str();

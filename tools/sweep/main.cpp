@@ -24,12 +24,15 @@
 
 #include <proceduray/accuracy/report.hpp>
 #include <proceduray/accuracy/samples.hpp>
+#include <proceduray/march/calibration.hpp>
 #include <proceduray/march/knobs.hpp>
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -47,6 +50,8 @@ struct Options {
   std::string size = "256x256";
   std::string device = "auto";
   std::string csv;
+  std::string calibration;
+  bool append = false;
   std::vector<std::string> objects;
   std::vector<std::string> vary;
   std::vector<std::string> set;
@@ -119,12 +124,12 @@ std::vector<Point> grid(const std::vector<std::string>& vary) {
   return out;
 }
 
-/// The shipped grid "methods": every method at five thresholds, its main knob at two values,
+/// The shipped grid "methods": every method at seven thresholds (1/32 to 2 footprints), its main knob at two values,
 /// the unrefined hit rule, tetrahedral normals, iterations by distance, and the D3D12 sample's
 /// settings. Objects take the points their kind accepts.
 std::vector<Point> methods_preset() {
   std::vector<Assignment> points;
-  for (const char* t : {"0.125", "0.25", "0.5", "1", "2"}) {
+  for (const char* t : {"0.03125", "0.0625", "0.125", "0.25", "0.5", "1", "2"}) {
     points.push_back({{"method", "sphere"}, {"threshold", t}});
     points.push_back({{"method", "lipschitz"}, {"threshold", t}});
     points.push_back({{"method", "relaxed"}, {"relaxation", "1.5"}, {"threshold", t}});
@@ -148,11 +153,16 @@ std::vector<Point> methods_preset() {
 
 /// The D3D12 sample's settings on knobs `k`: a threshold of 1e-4 t (that many pixel angles), 512
 /// steps, its marches (Lipschitz-scaled sphere tracing, fixed 128 steps for the metaballs).
-void sample_settings(pr::MarchKnobs& k, float pixel_angle) {
+void sample_settings(pr::MarchKnobs& k, std::string_view kind, float pixel_angle) {
   k.threshold_mode = static_cast<std::uint32_t>(pr::MarchThreshold::footprint);
   k.threshold = 1.0e-4f / pixel_angle;
   k.max_steps = 512;
-  if (k.method == static_cast<std::uint32_t>(pr::MarchMethod::fixed)) k.fixed_steps = 128;
+  if (kind == "metaballs") {
+    k.method = static_cast<std::uint32_t>(pr::MarchMethod::fixed);
+    k.fixed_steps = 128;
+  } else if (kind == "sdf") {
+    k.method = static_cast<std::uint32_t>(pr::MarchMethod::lipschitz);
+  }
 }
 
 /// A marched object of a scene: its name, id and what it accepts.
@@ -195,7 +205,7 @@ std::pair<pr::MarchKnobs, std::string> knobs_at(const Object& object, const Poin
                                                 float pixel_angle) {
   try {
     for (const auto& [name, value] : point.knobs) pr::set_knob(base, name, value);
-    if (point.sample) sample_settings(base, pixel_angle);
+    if (point.sample) sample_settings(base, object.caps->kind, pixel_angle);
     pr::validate(base, *object.caps, object.name);
     return {base, {}};
   } catch (const pr::UsageError& e) {
@@ -352,6 +362,12 @@ int run(const Options& o) {
     if (any) kept.push_back({index, p});
   }
   points = std::move(kept);
+  // The calibration table: loaded first with --append (a foreign or old one is refused here,
+  // before any rendering), written at the end.
+  std::vector<pr::CalibrationRow> table;
+  if (!o.calibration.empty() && o.append && std::filesystem::exists(o.calibration)) {
+    table = pr::Calibration::load(o.calibration).rows();
+  }
   CsvOut csv;
   if (!o.csv.empty()) {
     csv.file.open(o.csv, std::ios::trunc);
@@ -369,6 +385,12 @@ int run(const Options& o) {
     std::printf("%-16s %-58.58s %9.3f %9.2f %9.3g %9.3g %8.2f\n", obj.name.c_str(), p.label.c_str(), ms, r.evals,
                 a.depth.median, a.depth.p99, 100.0 * r.metrics[acc::PixelClass::silhouette_1px].false_hit_rate());
     if (csv.file.is_open()) csv.rows(labels(o, ctx.name(), width, height, index, p, obj, k, ms, r.evals), r.metrics);
+    // A calibration row needs hits to have a depth error; a rate of no rays is no error.
+    if (!o.calibration.empty() && a.both_hit > 0 && std::isfinite(a.depth.median)) {
+      auto rate = [](double v) { return std::isfinite(v) ? v : 0.0; };
+      table.push_back({obj.name, std::string(obj.caps->kind), k, r.evals, a.depth.median, a.depth.p99,
+                       rate(r.metrics[acc::PixelClass::silhouette_1px].false_hit_rate()), rate(a.false_miss_rate())});
+    }
   };
   if (o.scene == "paper") {
     const paper::PaperScene measured_scene(paper::accuracy_outputs), timed_scene;
@@ -455,6 +477,12 @@ int run(const Options& o) {
     }
   }
   if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
+  if (!o.calibration.empty()) {
+    std::ofstream out(o.calibration, std::ios::trunc);
+    if (!out) throw BadInput("cannot write '" + o.calibration + "'; give a writable --calibration path");
+    pr::Calibration(ctx.name(), std::to_string(width) + "x" + std::to_string(height), std::move(table)).write(out);
+    std::printf("wrote calibration %s\n", o.calibration.c_str());
+  }
   const bool clean = ctx.validation_messages().empty();
   if (!clean) std::fprintf(stderr, "proceduray_sweep: validation messages were reported\n");
   return clean ? 0 : 1;
@@ -477,6 +505,9 @@ int main(int argc, char** argv) {
   app.add_option("--preset", o.preset, "a shipped grid instead of --vary: methods")->check(CLI::IsMember({"methods"}));
   app.add_option("--shard", o.shard, "i/n: only the points whose index is i mod n")->capture_default_str();
   app.add_option("--csv", o.csv, "CSV to write: a header, then per point and object a row per pixel class");
+  app.add_option("--calibration", o.calibration, "calibration table to write: per object and point its knobs, "
+                 "evaluations and errors (march/calibration.hpp)");
+  app.add_flag("--append", o.append, "add to the --calibration table instead of replacing it (same library version)");
   app.add_option("--frames", o.frames, "timed frames per point (median)")->check(CLI::Range(1u, 1000u))->capture_default_str();
   app.add_option("--warmup", o.warmup, "untimed frames before them")->check(CLI::Range(0u, 100u))->capture_default_str();
   app.add_option("--time", o.time, "scene time in seconds")->capture_default_str();

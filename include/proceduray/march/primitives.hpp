@@ -32,16 +32,17 @@ inline const MarchCapabilities& sdf_capabilities() {
   return caps;
 }
 
-/// Metaballs: fixed steps by default (the sample's 128 across the box, then 10 bisections),
-/// analytic normals.
+/// Metaballs: segment tracing by default (on the measured front: at half a footprint 22.5
+/// evaluations per ray where the sample's fixed 128 steps take 59, with a third of their depth
+/// error; README, "Defaults from the front"), analytic normals. Fixed steps keep 128.
 inline const MarchCapabilities& metaball_capabilities() {
   static const MarchCapabilities caps = [] {
     MarchCapabilities c{"metaballs",
-                        {MarchMethod::fixed, MarchMethod::lipschitz, MarchMethod::segment},
+                        {MarchMethod::segment, MarchMethod::fixed, MarchMethod::lipschitz},
                         {MarchNormal::analytic},
                         0,
                         march_base_knobs};
-    c.defaults.method = static_cast<std::uint32_t>(MarchMethod::fixed);
+    c.defaults.method = static_cast<std::uint32_t>(MarchMethod::segment);
     c.defaults.fixed_steps = 128;
     c.defaults.normal = static_cast<std::uint32_t>(MarchNormal::analytic);
     return c;

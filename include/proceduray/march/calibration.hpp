@@ -1,0 +1,231 @@
+// An error budget, met at the least cost: the measured error and cost of march settings per
+// geometry (a calibration table, written by tools/sweep and shipped in
+// shaders/calibration/), and the cheapest setting whose error fits what the user allows.
+//
+//   const proceduray::Calibration table = proceduray::Calibration::load(proceduray::shipped_calibration());
+//   const proceduray::ErrorBudget budget{.depth_median = 0.01, .depth_p99 = 0.05, .silhouette_false_hits = 0.01};
+//   const proceduray::CalibrationRow& pick = table.cheapest("cog", budget);   // throws: none meets it
+//   constants.knobs[cog_id] = pick.knobs;                                      // 12.3 evaluations per ray, say
+//
+// "Model no more than a scene needs": a scene that tolerates a tenth of a pixel of depth error
+// should not pay for a thousandth. Errors are the accuracy metrics of accuracy/metrics.hpp,
+// measured against a ground truth in double: depth in pixel footprints (median and p99 of the
+// rays where both hit), silhouette false hits (fraction of the 1-pixel silhouette band's rays
+// that hit where the truth misses) and false misses (fraction of the truth's hits the render
+// missed). Cost is evaluations per ray that sees the geometry, which does not depend on the
+// machine; the table records the device, size and library version that measured it.
+//
+// File: CSV. Line 1 "# proceduray-calibration 1", line 2 "# library <version>", line 3
+// "# measured <device> <W>x<H>", then a header and a row per (geometry, setting). A table from
+// another library version is refused (its marches may differ), as is a foreign or damaged file.
+#pragma once
+
+#include <proceduray/error.hpp>
+#include <proceduray/march/knobs.hpp>
+#include <proceduray/version.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace proceduray {
+
+/// What a scene may get wrong. Every bound is inclusive; an unset one allows anything.
+struct ErrorBudget {
+  double depth_median = std::numeric_limits<double>::infinity();  ///< pixel footprints
+  double depth_p99 = std::numeric_limits<double>::infinity();     ///< pixel footprints
+  double silhouette_false_hits = 1.0;                              ///< fraction of the 1-pixel band's rays
+  double false_misses = 1.0;                                       ///< fraction of the truth's hits
+};
+
+/// One measured setting of one geometry.
+struct CalibrationRow {
+  std::string geometry;  ///< the object's name in its scene ("cog", "mandelbulb")
+  std::string kind;      ///< its MarchCapabilities::kind
+  MarchKnobs knobs{};
+  double evals = 0.0;                  ///< evaluations per ray that sees the geometry
+  double depth_median = 0.0;           ///< pixel footprints
+  double depth_p99 = 0.0;              ///< pixel footprints
+  double silhouette_false_hits = 0.0;  ///< fraction
+  double false_misses = 0.0;           ///< fraction
+
+  /// How far over `b` this row is: the largest ratio measured / allowed (<= 1 meets it).
+  double excess(const ErrorBudget& b) const {
+    auto ratio = [](double measured, double allowed) {
+      if (measured <= allowed) return 0.0;
+      return allowed > 0.0 ? measured / allowed : std::numeric_limits<double>::infinity();
+    };
+    return std::max({ratio(depth_median, b.depth_median), ratio(depth_p99, b.depth_p99),
+                     ratio(silhouette_false_hits, b.silhouette_false_hits), ratio(false_misses, b.false_misses)});
+  }
+  bool meets(const ErrorBudget& b) const { return excess(b) == 0.0; }
+};
+
+/// The format line a calibration file starts with.
+inline constexpr std::string_view calibration_format = "# proceduray-calibration 1";
+
+/// The table shipped with the library: $PROCEDURAY_SHADER_DIR/calibration/primitives.csv, else
+/// the shader directory the build or install defines (PROCEDURAY_SHADER_DIR), else ./shaders.
+inline std::filesystem::path shipped_calibration() {
+  std::filesystem::path dir = "shaders";
+  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') {
+    dir = env;
+  } else {
+#ifdef PROCEDURAY_SHADER_DIR
+    dir = PROCEDURAY_SHADER_DIR;
+#endif
+  }
+  return dir / "calibration" / "primitives.csv";
+}
+
+/// Measured settings per geometry, and the cheapest that meets a budget.
+class Calibration {
+ public:
+  Calibration() = default;
+  Calibration(std::string device, std::string size, std::vector<CalibrationRow> rows)
+      : m_device(std::move(device)), m_size(std::move(size)), m_rows(std::move(rows)) {}
+
+  /// Reads a table; `source` names it in errors. Throws EnvironmentError for a foreign or
+  /// damaged file, or one written by another library version (with both versions).
+  static Calibration parse(std::istream& in, const std::string& source) {
+    auto fail = [&](const std::string& what) -> EnvironmentError {
+      return EnvironmentError("Calibration::load: " + source + ": " + what);
+    };
+    std::string line;
+    if (!std::getline(in, line) || line != calibration_format) {
+      throw fail("not a calibration table (line 1 is not '" + std::string(calibration_format) +
+                 "'); write one with proceduray_sweep --calibration");
+    }
+    if (!std::getline(in, line) || line.rfind("# library ", 0) != 0) throw fail("line 2 does not name the library version");
+    const std::string measured_by = line.substr(10);
+    if (measured_by != version) {
+      throw fail("measured by library " + measured_by + ", this is " + std::string(version) +
+                 "; its marches may differ: re-run proceduray_sweep --calibration with this version");
+    }
+    if (!std::getline(in, line) || line.rfind("# measured ", 0) != 0) throw fail("line 3 does not name the device and size");
+    Calibration out;
+    const std::string measured = line.substr(11);
+    const auto space = measured.rfind(' ');
+    out.m_device = space == std::string::npos ? measured : measured.substr(0, space);
+    out.m_size = space == std::string::npos ? "" : measured.substr(space + 1);
+    if (!std::getline(in, line) || line != header()) throw fail("the column header is not this version's");
+    std::size_t number = 4;
+    while (std::getline(in, line)) {
+      ++number;
+      if (line.empty()) continue;
+      std::vector<std::string> f;
+      std::stringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
+      if (f.size() != 7 + march_knob_names.size()) {
+        throw fail("line " + std::to_string(number) + " has " + std::to_string(f.size()) + " fields, not " +
+                   std::to_string(7 + march_knob_names.size()));
+      }
+      CalibrationRow r;
+      r.geometry = f[0];
+      r.kind = f[1];
+      try {
+        double* numbers[] = {&r.evals, &r.depth_median, &r.depth_p99, &r.silhouette_false_hits, &r.false_misses};
+        for (std::size_t i = 0; i < 5; ++i) {
+          std::size_t used = 0;
+          *numbers[i] = std::stod(f[2 + i], &used);
+          if (used != f[2 + i].size() || !(*numbers[i] >= 0.0)) throw UsageError(f[2 + i]);
+        }
+        r.knobs = march_base_knobs;
+        for (std::size_t k = 0; k < march_knob_names.size(); ++k) set_knob(r.knobs, march_knob_names[k], f[7 + k]);
+      } catch (const std::exception& e) {
+        throw fail("line " + std::to_string(number) + " has a bad value (" + e.what() + ")");
+      }
+      out.m_rows.push_back(std::move(r));
+    }
+    return out;
+  }
+
+  /// Reads the file at `path` (see parse); a missing file is an EnvironmentError naming it.
+  static Calibration load(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    if (!in) {
+      throw EnvironmentError("Calibration::load: cannot read '" + path.string() +
+                             "'; pass a table written by proceduray_sweep --calibration (the shipped one is "
+                             "shaders/calibration/primitives.csv: set PROCEDURAY_SHADER_DIR)");
+    }
+    return parse(in, path.string());
+  }
+
+  /// The column header of the rows.
+  static std::string header() {
+    std::string h = "geometry,kind,evals,depth_median,depth_p99,silhouette_false_hits,false_misses,";
+    for (std::size_t i = 0; i < march_knob_names.size(); ++i) h += std::string(i ? "," : "") + std::string(march_knob_names[i]);
+    return h;
+  }
+
+  /// Writes the table in the format parse reads.
+  void write(std::ostream& out) const {
+    out << calibration_format << "\n# library " << version << "\n# measured " << m_device << " " << m_size << "\n"
+        << header() << "\n";
+    out.precision(9);
+    for (const CalibrationRow& r : m_rows) {
+      out << r.geometry << "," << r.kind << "," << r.evals << "," << r.depth_median << "," << r.depth_p99 << ","
+          << r.silhouette_false_hits << "," << r.false_misses;
+      for (const auto& kv : knob_values(r.knobs)) out << "," << kv.second;
+      out << "\n";
+    }
+  }
+
+  /// The cheapest row of `geometry` (fewest evaluations) that meets `budget`. Throws UsageError
+  /// for a geometry the table lacks (listing those it has) or a budget no row meets (naming the
+  /// best reachable: the row least over it, and its errors).
+  const CalibrationRow& cheapest(std::string_view geometry, const ErrorBudget& budget) const {
+    const CalibrationRow* best = nullptr;
+    const CalibrationRow* closest = nullptr;
+    for (const CalibrationRow& r : m_rows) {
+      if (r.geometry != geometry) continue;
+      if (r.meets(budget) && (best == nullptr || r.evals < best->evals)) best = &r;
+      if (closest == nullptr || r.excess(budget) < closest->excess(budget)) closest = &r;
+    }
+    if (best != nullptr) return *best;
+    if (closest == nullptr) {
+      std::string names;
+      for (const std::string& g : geometries()) names += (names.empty() ? "" : ", ") + g;
+      throw UsageError("Calibration::cheapest: no rows for '" + std::string(geometry) + "'; the table has: " + names);
+    }
+    std::ostringstream m;
+    m << "Calibration::cheapest: no calibrated setting of '" << geometry << "' meets the budget (depth median <= "
+      << budget.depth_median << ", p99 <= " << budget.depth_p99 << " footprints, silhouette false hits <= "
+      << budget.silhouette_false_hits << ", false misses <= " << budget.false_misses
+      << "); the best reachable: depth median " << closest->depth_median << ", p99 " << closest->depth_p99
+      << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses " << closest->false_misses
+      << " at " << closest->evals << " evaluations (" << describe(closest->knobs)
+      << "); loosen the budget or calibrate finer settings (proceduray_sweep --calibration)";
+    throw UsageError(m.str());
+  }
+
+  /// The geometries the table covers, in first-seen order.
+  std::vector<std::string> geometries() const {
+    std::vector<std::string> out;
+    for (const CalibrationRow& r : m_rows) {
+      bool seen = false;
+      for (const std::string& g : out) seen = seen || g == r.geometry;
+      if (!seen) out.push_back(r.geometry);
+    }
+    return out;
+  }
+
+  const std::vector<CalibrationRow>& rows() const noexcept { return m_rows; }
+  const std::string& device() const noexcept { return m_device; }
+  const std::string& size() const noexcept { return m_size; }
+
+ private:
+  std::string m_device, m_size;
+  std::vector<CalibrationRow> m_rows;
+};
+
+}  // namespace proceduray
