@@ -2,6 +2,12 @@
 //
 //   paper::PaperScene scene;
 //   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
+//   paper::PaperScene portable({}, paper::Tracing::iterative);   // runs where maxRayRecursionDepth is 1
+//
+// Recursion: recursive tracing declares depth_limit + 1 (the deepest radiance hit traces a
+// shadow ray); iterative tracing declares none, so the pipeline gets the derived minimum, 1:
+// no stage but raygen traces (the renderer checks the SPIR-V and refuses a closest hit that
+// does). Both honour SceneConstants::max_depth up to depth_limit.
 //
 // SBT: 2 ray types (radiance 0, shadow 1), so each geometry takes 2 hit records per instance
 // block; the Pac-men get one block each (their own materials), the rest share theirs.
@@ -19,14 +25,20 @@ inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .n
 /// The scene: its entities and entries, each type from its category of paper::Interface.
 struct PaperScene : pr::SceneOf<Interface> {
   /// `outputs`: per-pixel outputs besides colour (the accuracy tool asks for t, normal, steps, flags).
-  explicit PaperScene(pr::OutputSet outputs = {}) {
+  explicit PaperScene(pr::OutputSet outputs = {}, Tracing tracing = Tracing::recursive,
+                      std::uint32_t depth_limit = max_depth_limit)
+      : m_tracing(tracing), m_depth_limit(depth_limit) {
+    if (depth_limit == 0 || depth_limit > max_depth_supported) {
+      throw pr::UsageError("PaperScene: depth limit " + std::to_string(depth_limit) + " is out of range; give 1 to " +
+                           std::to_string(max_depth_supported) + " radiance segments (primary included)");
+    }
     set_outputs(outputs);
     const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
     add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
     const auto material = add_local_signature<MaterialRecord>("material");
     set_global_signature(pr::default_global_signature({constants_slot}));
     add_raygen("raygen.rgen");
-    set_max_recursion_depth(max_depth_limit + 1);  // the deepest radiance hit still traces a shadow ray
+    if (tracing == Tracing::recursive) set_max_recursion_depth(depth_limit + 1);  // + the deepest hit's shadow ray
     pr::add_object(*this, "plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
                                     .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
     // Each marched object: its own intersection shader for both rays, shade.rchit for radiance.
@@ -47,11 +59,25 @@ struct PaperScene : pr::SceneOf<Interface> {
   /// scene without outputs; with outputs the renderer derives the declarations at run time.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
     pr::vk::RendererOptions o{.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-                              .extra_declarations = extra_declarations + pr::glsl_aabb_consts(*this),
+                              .extra_declarations = declarations(),
                               .pipeline_cache = std::move(cache)};
     if (outputs().empty()) o.declarations = pr::glsl_files(examples::generated_glsl_dir(PAPER_GLSL_DIR));
     return o;
   }
+
+  /// What every shader gets after the generated declarations: the flags, the AABBs, this
+  /// scene's depth limit (max_depth_limit) and, when iterative, PAPER_ITERATIVE.
+  std::string declarations() const {
+    return extra_declarations + pr::glsl_const("max_depth_limit", m_depth_limit) + pr::glsl_aabb_consts(*this) +
+           (m_tracing == Tracing::iterative ? "#define PAPER_ITERATIVE 1\n" : "");
+  }
+
+  Tracing tracing() const noexcept { return m_tracing; }
+  std::uint32_t depth_limit() const noexcept { return m_depth_limit; }
+
+ private:
+  Tracing m_tracing;
+  std::uint32_t m_depth_limit;
 };
 
 }  // namespace paper

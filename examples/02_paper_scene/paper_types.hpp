@@ -21,6 +21,8 @@
 //   proceduray::quad_xz(plane_min, plane_max): two triangles at y = 0, normal +y.
 #pragma once
 
+#include "../common/tracing.hpp"
+
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/proceduray.hpp>
 
@@ -37,8 +39,12 @@ inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_ob
 enum ObjectId : std::uint32_t { sky_id = 0, plane_id = 1, pacman0_id = 2, pacman1_id = 3, julia_id = 4, mandelbulb_id = 5 };
 /// Ids 0 .. object_id_count - 1: SceneConstants::knobs has one entry per id.
 inline constexpr std::uint32_t object_id_count = 6;
-/// Largest SceneConstants::max_depth the shaders honour (radiance segments, primary included).
+/// Largest SceneConstants::max_depth a PaperScene honours by default (radiance segments, primary
+/// included); a scene may be built for up to max_depth_supported.
 inline constexpr std::uint32_t max_depth_limit = 3;
+inline constexpr std::uint32_t max_depth_supported = 16;
+/// How reflections and shadows are traced (examples/common/tracing.hpp).
+using Tracing = examples::Tracing;
 
 /// Per-frame uniform (set 0, binding 2). The march knobs are per object (indexed by ObjectId):
 /// run-time values a sweep rewrites. The fractals read theirs; the Pac-men (analytic) read only
@@ -55,13 +61,21 @@ PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (float, min_weight),                 ///< reflections adding less than this to the pixel are not traced; default 0.05
     (pr::MarchKnobs[object_id_count], knobs));  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
 
-/// The radiance ray's payload (location 0).
+/// The radiance ray's payload (location 0). The fields after `weight` carry a hit back to
+/// raygen when tracing is iterative (Tracing::iterative); recursive tracing leaves them unread.
 PROCEDURAY_DEFINE_STRUCT(RadiancePayload, scalar,
-    (glm::vec3, colour),                 ///< linear RGB returned by the hit or miss
+    (glm::vec3, colour),                 ///< linear RGB returned by the hit or miss (iterative: the ambient part)
     (std::uint32_t, depth),              ///< 0 for primary rays
     (std::uint32_t, object_id),          ///< ObjectId of the hit (sky_id on a miss)
     (float, steps),                      ///< marching steps of the hit (0 for analytic surfaces)
-    (float, weight));                    ///< how much this ray's colour counts in the pixel (1 for primary rays)
+    (float, weight),                     ///< how much this ray's colour counts in the pixel (1 for primary rays)
+    (glm::vec3, direct),                 ///< iterative: the point light's term if nothing shadows it
+    (float, fresnel),                    ///< iterative: the reflection's share (0: none to trace)
+    (glm::vec3, next_origin),            ///< iterative: where secondary rays start (offset off the surface)
+    (float, hit_t),                      ///< iterative: the hit's t, the path length from the eye
+    (glm::vec3, next_direction),         ///< iterative: the reflection's direction
+    (float, light_distance),             ///< iterative: from the hit to the light (0: facing away, no shadow ray)
+    (glm::vec3, light_direction));       ///< iterative: unit, towards the light
 
 /// The shadow ray's payload (location 1): preset to 1, the shadow miss sets 0.
 PROCEDURAY_DEFINE_STRUCT(ShadowPayload, scalar, (std::uint32_t, occluded));
@@ -131,8 +145,8 @@ inline SceneConstants default_constants(std::uint32_t width, std::uint32_t heigh
   return c;
 }
 
-/// The C++ constants the shaders use beyond what the scene derives (glsl_for, glsl_aabb_consts).
-inline const std::string extra_declarations =
-    PROCEDURAY_GLSL_CONSTS(flag_shadows, flag_reflections, flag_object_ids, max_depth_limit);
+/// The C++ constants the shaders use beyond what the scene derives (glsl_for, glsl_aabb_consts);
+/// PaperScene::declarations adds its depth limit and tracing mode.
+inline const std::string extra_declarations = PROCEDURAY_GLSL_CONSTS(flag_shadows, flag_reflections, flag_object_ids);
 
 }  // namespace paper

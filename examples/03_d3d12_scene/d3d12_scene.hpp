@@ -32,7 +32,11 @@ class D3d12Scene : public pr::SceneOf<Interface> {
  public:
   /// The given primitives (each validated: throws PrimitiveError) placed by `layout`; the
   /// ground only with Layout::sample; per-pixel `outputs` of the camera rays (none: no cost).
-  explicit D3d12Scene(std::span<const Primitive> primitives, Layout layout = Layout::sample, pr::OutputSet outputs = {}) {
+  /// `tracing`: Tracing::iterative traces shadows and reflections from raygen (recursion depth 1,
+  /// derived: none declared); renderer_options() then compiles the shaders for it.
+  explicit D3d12Scene(std::span<const Primitive> primitives, Layout layout = Layout::sample, pr::OutputSet outputs = {},
+                      Tracing tracing = Tracing::recursive)
+      : m_tracing(tracing) {
     for (const Primitive& p : primitives) validate(p);
     set_outputs(outputs);
     m_primitives.assign(primitives.begin(), primitives.end());
@@ -40,7 +44,7 @@ class D3d12Scene : public pr::SceneOf<Interface> {
     m_shadow = add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
     m_record = add_local_signature<PrimitiveRecord>("primitive");
     add_raygen("raygen.rgen");
-    set_max_recursion_depth(d3d12::max_recursion_depth);
+    if (tracing == Tracing::recursive) set_max_recursion_depth(d3d12::max_recursion_depth);
     set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                        {pr::BindingKind::storage_image, 1, 0, 1, "image"}, constants_slot}});
     if (layout == Layout::sample) {
@@ -68,6 +72,15 @@ class D3d12Scene : public pr::SceneOf<Interface> {
   explicit D3d12Scene(pr::OutputSet outputs) : D3d12Scene(default_primitives(), Layout::sample, outputs) {}
 
   std::span<const Primitive> primitives() const { return m_primitives; }
+  Tracing tracing() const noexcept { return m_tracing; }
+
+  /// Shaders from this example's folder, with the scene's constants (and D3D12_ITERATIVE when
+  /// iterative) after the derived declarations.
+  pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
+    return {.shader_dirs = {examples::examples_dir() / "03_d3d12_scene" / "shaders"},
+            .extra_declarations = extra_declarations() + (m_tracing == Tracing::iterative ? "#define D3D12_ITERATIVE 1\n" : ""),
+            .pipeline_cache = std::move(cache)};
+  }
 
  private:
   /// Both rays' records for geometry `g`: group `group` for radiance, `<group>_shadow` for shadow.
@@ -76,13 +89,15 @@ class D3d12Scene : public pr::SceneOf<Interface> {
     add_hit(m_shadow, hit_group_id(group + "_shadow"), m_record, r, g);
   }
 
+  Tracing m_tracing;
   std::vector<Primitive> m_primitives;
   pr::RayId<RadiancePayload> m_radiance;
   pr::RayId<ShadowPayload> m_shadow;
   pr::LocalSignatureId<PrimitiveRecord> m_record;
 };
 
-/// Shaders from this example's folder, with the scene's constants after the derived declarations.
+/// Shaders from this example's folder, with the scene's constants after the derived declarations:
+/// for a recursive scene (an iterative one: D3d12Scene::renderer_options).
 inline pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) {
   return {.shader_dirs = {examples::examples_dir() / "03_d3d12_scene" / "shaders"},
           .extra_declarations = extra_declarations(), .pipeline_cache = std::move(cache)};

@@ -18,6 +18,8 @@
 //   Each primitive is one AABB geometry [-1, 1]^3 with one instance; local space = object space.
 #pragma once
 
+#include "../common/tracing.hpp"
+
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/shader.hpp>
@@ -84,15 +86,26 @@ struct SceneConstants {
 PROCEDURAY_STRUCT(SceneConstants, scalar, camera, light_position, ambient, light_colour, time, sky_colour, flags,
                   max_depth, knobs);
 
-/// The radiance ray's payload (location 0).
+/// How reflections and shadows are traced (examples/common/tracing.hpp).
+using Tracing = examples::Tracing;
+
+/// The radiance ray's payload (location 0). The fields after `nonfinite` carry a hit back to
+/// raygen when tracing is iterative; recursive tracing leaves them unread.
 struct RadiancePayload {
-  glm::vec3 colour;         ///< linear RGB
+  glm::vec3 colour;         ///< linear RGB (iterative: the ambient part)
   std::uint32_t depth;      ///< 0 for primary rays
   std::uint32_t object_id;  ///< of the hit (sky_id on a miss)
   float steps;              ///< marching steps of the hit (0 for analytic surfaces)
   std::uint32_t nonfinite;  ///< 1 when a hit produced a NaN or infinity anywhere
+  glm::vec3 direct;         ///< iterative: the light's term if nothing shadows it
+  float fresnel;            ///< iterative: the reflection's share (0: none to trace)
+  glm::vec3 next_origin;    ///< iterative: where secondary rays start
+  float light_distance;     ///< iterative: from the hit to the light (0: facing away, no shadow ray)
+  glm::vec3 next_direction;   ///< iterative: the reflection's direction
+  glm::vec3 light_direction;  ///< iterative: unit, towards the light
 };
-PROCEDURAY_STRUCT(RadiancePayload, scalar, colour, depth, object_id, steps, nonfinite);
+PROCEDURAY_STRUCT(RadiancePayload, scalar, colour, depth, object_id, steps, nonfinite, direct, fresnel, next_origin,
+                  light_distance, next_direction, light_direction);
 
 /// The shadow ray's payload (location 1): preset to 1, the shadow miss sets 0.
 struct ShadowPayload {

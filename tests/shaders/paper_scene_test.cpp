@@ -43,7 +43,7 @@ const proceduray::Plan& paper_plan() {
 
 std::string declarations(std::string_view file) {
   return proceduray::glsl_for(paper_plan(), stage_of(std::filesystem::path(file)), file) +
-         paper::extra_declarations + proceduray::glsl_aabb_consts(paper_scene());
+         paper_scene().declarations();
 }
 
 std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {
@@ -85,7 +85,7 @@ TEST_CASE("paper types fit the pipeline limits") {
   const proceduray::PipelinePlan& plan = paper_plan().pipeline();
   CHECK(plan.max_attribute_size == 16);
   CHECK(plan.max_payload_size == sizeof(paper::RadiancePayload));
-  CHECK(sizeof(paper::RadiancePayload) == 28);  // colour, depth, object id, steps, weight
+  CHECK(sizeof(paper::RadiancePayload) == 88);  // colour, depth, object id, steps, weight; the iterative fields
   CHECK(sizeof(paper::ShadowPayload) == 4);
   CHECK(plan.max_root_arguments_size[2] == 48);  // a MaterialRecord per hit record
   CHECK(sizeof(proceduray::MarchKnobs) == 14 * 4);

@@ -3,6 +3,12 @@
 //
 //   payload.colour = shade_surface(p, n, albedo, offset);
 //
+// With PAPER_ITERATIVE (PaperScene built with Tracing::iterative) nothing here traces: the
+// ambient term is returned, and the unshadowed light term, the shadow ray's and the
+// reflection's origin and directions, and the reflection's Fresnel share go back in the
+// payload, for raygen's loop (raygen.rgen) to trace. The pixel is the same sum either way:
+// local (1 - f) + f reflected, level by level.
+//
 // Needs the generated `constants`, `arguments` (MaterialRecord), `payload` (incoming radiance)
 // and `shadow` (outgoing shadow payload). The reflection is traced with the incoming payload
 // itself (Vulkan allows a rayPayloadInEXT as traceRayEXT's payload; glslang rejects a second
@@ -14,6 +20,7 @@
 #include "common/ray.glsl"
 #include "shading/phong.glsl"
 
+#ifndef PAPER_ITERATIVE
 /// 1 when nothing lies between origin and origin + dist * dir, else 0.
 float light_visibility(vec3 origin, vec3 dir, float dist) {
   shadow.occluded = 1u;  // stays 1 unless the shadow miss shader runs
@@ -39,6 +46,7 @@ vec3 reflected_colour(vec3 origin, vec3 dir, float weight) {
   payload = saved;
   return colour;
 }
+#endif
 
 /// Colour at world point p with world normal n (either side); secondary rays start `offset`
 /// off the surface (the hit threshold for marched surfaces; 0 for exact ones) plus a few ulps.
@@ -49,6 +57,21 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float offset) {
   float dist = length(to_light);
   vec3 l = safe_normalize(to_light, n);
   vec3 origin = offset_ray_origin(p + offset * n, n);
+#ifdef PAPER_ITERATIVE
+  payload.direct = dot(n, l) > 0.0 || (constants.flags & flag_shadows) == 0u
+                       ? phong(albedo, n, l, v, constants.light_colour, arguments.diffuse, arguments.specular,
+                               arguments.shininess)
+                       : vec3(0.0);
+  payload.light_distance = dot(n, l) > 0.0 ? dist : 0.0;
+  payload.light_direction = l;
+  payload.next_origin = origin;
+  payload.hit_t = gl_HitTEXT;
+  payload.next_direction = reflect(-v, n);
+  payload.fresnel = (constants.flags & flag_reflections) != 0u && arguments.reflectance > 0.0
+                        ? schlick_fresnel(arguments.reflectance, dot(n, v))
+                        : 0.0;
+  return constants.ambient * albedo;
+#else
   float visible = 1.0;
   if ((constants.flags & flag_shadows) != 0u) visible = dot(n, l) > 0.0 ? light_visibility(origin, l, dist) : 0.0;
   vec3 colour = constants.ambient * albedo +
@@ -61,6 +84,7 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float offset) {
     if (weight >= constants.min_weight) colour = mix(colour, reflected_colour(origin, reflect(-v, n), weight), f);
   }
   return colour;
+#endif
 }
 
 #endif

@@ -1,7 +1,8 @@
 // Lighting shared by plane.rchit and shade.rchit: Phong, a shadow ray towards the point light
 // (the sample's flags: accept the first hit, skip closest hit, cull back faces), and one
 // Schlick-weighted reflection. The reflection reuses the incoming payload (glslang rejects a
-// second payload at location 0), saved and restored around the call.
+// second payload at location 0), saved and restored around the call. With D3D12_ITERATIVE
+// (Tracing::iterative) nothing here traces: the terms go back in the payload for raygen's loop.
 #ifndef D3D12_SURFACE_GLSL
 #define D3D12_SURFACE_GLSL
 
@@ -9,6 +10,7 @@
 #include "common/ray.glsl"
 #include "shading/phong.glsl"
 
+#ifndef D3D12_ITERATIVE
 float light_visibility(vec3 origin, vec3 dir, float dist) {
   shadow.occluded = 1u;
   traceRayEXT(tlas, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT |
@@ -27,6 +29,7 @@ vec3 reflected_colour(vec3 origin, vec3 dir) {
   payload.nonfinite |= nonfinite;
   return colour;
 }
+#endif
 
 /// Colour at world point p with world normal n; secondary rays start `offset` off the surface.
 vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float reflectance, float offset) {
@@ -36,6 +39,18 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float reflectance, float offset)
   float dist = length(to_light);
   vec3 l = safe_normalize(to_light, n);
   vec3 origin = offset_ray_origin(p + offset * n, n);
+#ifdef D3D12_ITERATIVE
+  payload.direct = dot(n, l) > 0.0 || (constants.flags & flag_shadows) == 0u
+                       ? phong(albedo, n, l, v, constants.light_colour, 0.9, 0.4, 40.0)
+                       : vec3(0.0);
+  payload.light_distance = dot(n, l) > 0.0 ? dist : 0.0;
+  payload.light_direction = l;
+  payload.next_origin = origin;
+  payload.next_direction = reflect(-v, n);
+  payload.fresnel = (constants.flags & flag_reflections) != 0u && reflectance > 0.0 ? schlick_fresnel(reflectance, dot(n, v))
+                                                                                    : 0.0;
+  return constants.ambient * albedo;
+#else
   float visible = 1.0;
   if ((constants.flags & flag_shadows) != 0u) visible = dot(n, l) > 0.0 ? light_visibility(origin, l, dist) : 0.0;
   vec3 colour = constants.ambient * albedo + visible * phong(albedo, n, l, v, constants.light_colour, 0.9, 0.4, 40.0);
@@ -45,6 +60,7 @@ vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float reflectance, float offset)
     colour = mix(colour, reflected_colour(origin, reflect(-v, n)), f);
   }
   return colour;
+#endif
 }
 
 #endif

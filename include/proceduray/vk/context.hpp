@@ -38,6 +38,9 @@ struct ContextOptions {
   DevicePreference device = DevicePreference::automatic;  ///< default: automatic
   bool validation = false;  ///< enable VK_LAYER_KHRONOS_validation and collect its messages; default off
   bool print_validation = true;  ///< also print validation messages to stderr; default on
+  /// > 0: report at most this maxRayRecursionDepth, as a device with that limit would (a test of
+  /// portable scenes: Vulkan guarantees only 1); 0 (default): the device's own.
+  std::uint32_t max_ray_recursion_depth = 0;
   const char* application_name = "proceduray";  ///< reported to the driver
 };
 
@@ -166,6 +169,9 @@ inline Context::Context(const ContextOptions& options)
   try {
     m_physical = select_device(m_vulkan.get(), m_preference);
     read_properties();
+    if (options.max_ray_recursion_depth > 0) {
+      m_rt_properties.maxRayRecursionDepth = std::min(m_rt_properties.maxRayRecursionDepth, options.max_ray_recursion_depth);
+    }
     create_device();
   } catch (...) {
     release();  // the destructor does not run for a constructor that threw (the members' do)

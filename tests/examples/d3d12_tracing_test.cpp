@@ -1,0 +1,55 @@
+// examples/03_d3d12_scene with Tracing::iterative: the sample's scene, shadows and a reflection
+// traced from raygen, gives the recursive image on a device whose maxRayRecursionDepth is forced
+// to 1, where the recursive scene is refused.
+#include "vk/test_context.hpp"
+
+#include <03_d3d12_scene/d3d12_scene.hpp>
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+using namespace proceduray;
+
+TEST_CASE("d3d12 tracing - iterative tracing gives the recursive image where maxRayRecursionDepth is 1") {
+  constexpr std::uint32_t width = 96, height = 64;
+  const d3d12::SceneConstants c = d3d12::default_constants(d3d12::sample_camera(width, height), 0.5f);
+  const auto prims = d3d12::default_primitives();
+  TestContext full;
+  const d3d12::D3d12Scene recursive(prims);
+  vk::Renderer a(full.ctx, recursive, recursive.renderer_options());
+  a.set(d3d12::constants_slot, c);
+  const std::vector<std::uint8_t> expected = a.render(width, height).rgba;
+  vk::Context limited({.validation = true, .max_ray_recursion_depth = 1});
+  const d3d12::D3d12Scene iterative(prims, d3d12::Layout::sample, {}, d3d12::Tracing::iterative);
+  CHECK(compile(iterative).pipeline().max_recursion_depth == 1);
+  vk::Renderer b(limited, iterative, iterative.renderer_options());
+  b.set(d3d12::constants_slot, c);
+  const std::vector<std::uint8_t> got = b.render(width, height).rgba;
+  d3d12::SceneConstants flat = c;
+  flat.flags &= ~d3d12::flag_reflections;
+  b.set(d3d12::constants_slot, flat);
+  const std::vector<std::uint8_t> no_reflections = b.render(width, height).rgba;
+  int worst = 0;
+  std::size_t differ = 0, reflected = 0;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const int d = std::abs(int(got[i]) - int(expected[i]));
+    worst = std::max(worst, d);
+    differ += d > 1;
+    reflected += std::abs(int(got[i]) - int(no_reflections[i])) > 8;
+  }
+  CAPTURE(worst);
+  CAPTURE(differ);
+  CHECK(worst <= 3);
+  CHECK(differ <= got.size() / 200);
+  CHECK(reflected > 200);  // the reflective ground mirrors the primitives
+  CHECK_THROWS_WITH_AS(vk::Renderer(limited, recursive, recursive.renderer_options()),
+                       doctest::Contains("trace iteratively from raygen instead"), DeviceLimitError);
+  // The free renderer_options compiles the recursive shaders: an iterative scene's depth 1 then
+  // refuses the closest hit that traces, naming it.
+  CHECK_THROWS_WITH_AS(vk::Renderer(limited, iterative, d3d12::renderer_options()),
+                       doctest::Contains("calls traceRayEXT"), UsageError);
+  CHECK(limited.validation_messages().empty());
+}
