@@ -96,6 +96,8 @@ TEST_CASE("world origin on the device - 10^6 out the float world is footprints o
   CHECK(far_moved.max < 0.01);
   CHECK(farther_moved.max < 0.01);
   // 10^6 out, coordinates round to 0.06: the CPU emulation measured a median of 12 footprints
-  // over 8 placements; any placement whose rounding is not a lucky zero is > 1 everywhere.
-  CHECK(far_plain.median > 1.0);
+  // over 8 placements, lavapipe over 1 here, the H200 0.94 (its arithmetic rounds this placement
+  // more kindly): a quarter footprint at least, and a thousand times the re-origined error.
+  CHECK(far_plain.median > 0.25);
+  CHECK(far_plain.median > 1000.0 * far_moved.max);
 }
