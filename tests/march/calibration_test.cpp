@@ -16,7 +16,7 @@ using namespace proceduray;
 namespace {
 
 CalibrationRow row(const char* geometry, double evals, double median, double p99, double fat, const char* threshold) {
-  CalibrationRow r{geometry, "sdf", sdf_capabilities().defaults, evals, median, p99, fat, 0.0};
+  CalibrationRow r{geometry, "sdf", sdf_capabilities().defaults, evals, median, p99, fat, 0.0, 0.5};
   set_knob(r.knobs, "threshold", threshold);
   return r;
 }
@@ -78,6 +78,23 @@ TEST_CASE("calibration - the cheapest row within the budget, cheaper as it loose
   CHECK(t.cheapest("cog", {.depth_median = 0.05, .silhouette_false_hits = 0.0}).evals == 20.0);
   CHECK(t.cheapest("cog", {}).evals == 15.0);  // no bound: the cheapest of all
   CHECK(t.cheapest("torus", {}).knobs.threshold == 0.5f);
+  // The normal's error is a budget too.
+  CalibrationRow sharp = row("cog", 16.0, 0.02, 0.06, 0.0, "2");
+  sharp.normal_p95 = 20.0;
+  const Calibration with_normals("d", "1x1", {sharp, row("cog", 18.0, 0.02, 0.06, 0.0, "1")});
+  CHECK(with_normals.cheapest("cog", {}).evals == 16.0);
+  CHECK(with_normals.cheapest("cog", {.normal_p95 = 1.0}).evals == 18.0);
+}
+
+TEST_CASE("calibration - a row off the front is dominated in cost and every error") {
+  const CalibrationRow a = row("cog", 20.0, 0.005, 0.015, 0.0, "0.5");
+  CalibrationRow b = a;
+  CHECK_FALSE(dominates(a, b));  // equal: neither
+  b.evals = 21.0;
+  CHECK(dominates(a, b));
+  b.normal_p95 = 0.1;  // b's normals are better: a no longer dominates
+  CHECK_FALSE(dominates(a, b));
+  CHECK_FALSE(dominates(b, a));
 }
 
 TEST_CASE("calibration - an unmeetable budget names the best reachable setting") {

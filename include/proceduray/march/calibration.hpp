@@ -11,9 +11,11 @@
 // should not pay for a thousandth. Errors are the accuracy metrics of accuracy/metrics.hpp,
 // measured against a ground truth in double: depth in pixel footprints (median and p99 of the
 // rays where both hit), silhouette false hits (fraction of the 1-pixel silhouette band's rays
-// that hit where the truth misses) and false misses (fraction of the truth's hits the render
-// missed). Cost is evaluations per ray that sees the geometry, which does not depend on the
-// machine; the table records the device, size and library version that measured it.
+// that hit where the truth misses), false misses (fraction of the truth's hits the render
+// missed) and the 95th percentile of the normal's error in degrees (the median hides what
+// tetrahedral differences cost on the Julia set: 0.95 against 37 degrees). Cost is evaluations
+// per ray that sees the geometry, which does not depend on the machine; the table records the
+// device, size and library version that measured it.
 //
 // File: CSV. Line 1 "# proceduray-calibration 1", line 2 "# library <version>", line 3
 // "# measured <device> <W>x<H>", then a header and a row per (geometry, setting). A table from
@@ -45,6 +47,7 @@ struct ErrorBudget {
   double depth_p99 = std::numeric_limits<double>::infinity();     ///< pixel footprints
   double silhouette_false_hits = 1.0;                              ///< fraction of the 1-pixel band's rays
   double false_misses = 1.0;                                       ///< fraction of the truth's hits
+  double normal_p95 = 180.0;                                       ///< normal error, 95th percentile, degrees
 };
 
 /// One measured setting of one geometry.
@@ -57,6 +60,7 @@ struct CalibrationRow {
   double depth_p99 = 0.0;              ///< pixel footprints
   double silhouette_false_hits = 0.0;  ///< fraction
   double false_misses = 0.0;           ///< fraction
+  double normal_p95 = 0.0;             ///< normal error against the truth's, 95th percentile, degrees
 
   /// How far over `b` this row is: the largest ratio measured / allowed (<= 1 meets it).
   double excess(const ErrorBudget& b) const {
@@ -65,13 +69,27 @@ struct CalibrationRow {
       return allowed > 0.0 ? measured / allowed : std::numeric_limits<double>::infinity();
     };
     return std::max({ratio(depth_median, b.depth_median), ratio(depth_p99, b.depth_p99),
-                     ratio(silhouette_false_hits, b.silhouette_false_hits), ratio(false_misses, b.false_misses)});
+                     ratio(silhouette_false_hits, b.silhouette_false_hits), ratio(false_misses, b.false_misses),
+                     ratio(normal_p95, b.normal_p95)});
   }
   bool meets(const ErrorBudget& b) const { return excess(b) == 0.0; }
 };
 
 /// The format line a calibration file starts with.
 inline constexpr std::string_view calibration_format = "# proceduray-calibration 1";
+
+/// Whether `a` is at least as good as `b` in cost and every error, and better in one: then `b`
+/// is off the front (no one would choose it).
+inline bool dominates(const CalibrationRow& a, const CalibrationRow& b) {
+  const double av[] = {a.evals, a.depth_median, a.depth_p99, a.silhouette_false_hits, a.false_misses, a.normal_p95};
+  const double bv[] = {b.evals, b.depth_median, b.depth_p99, b.silhouette_false_hits, b.false_misses, b.normal_p95};
+  bool better = false;
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (av[i] > bv[i]) return false;
+    better = better || av[i] < bv[i];
+  }
+  return better;
+}
 
 /// The table shipped with the library: $PROCEDURAY_SHADER_DIR/calibration/primitives.csv, else
 /// the shader directory the build or install defines (PROCEDURAY_SHADER_DIR), else ./shaders.
@@ -125,22 +143,23 @@ class Calibration {
       std::vector<std::string> f;
       std::stringstream cells(line);
       for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
-      if (f.size() != 7 + march_knob_names.size()) {
+      if (f.size() != 8 + march_knob_names.size()) {
         throw fail("line " + std::to_string(number) + " has " + std::to_string(f.size()) + " fields, not " +
-                   std::to_string(7 + march_knob_names.size()));
+                   std::to_string(8 + march_knob_names.size()));
       }
       CalibrationRow r;
       r.geometry = f[0];
       r.kind = f[1];
       try {
-        double* numbers[] = {&r.evals, &r.depth_median, &r.depth_p99, &r.silhouette_false_hits, &r.false_misses};
-        for (std::size_t i = 0; i < 5; ++i) {
+        double* numbers[] = {&r.evals, &r.depth_median, &r.depth_p99, &r.silhouette_false_hits, &r.false_misses,
+                             &r.normal_p95};
+        for (std::size_t i = 0; i < 6; ++i) {
           std::size_t used = 0;
           *numbers[i] = std::stod(f[2 + i], &used);
           if (used != f[2 + i].size() || !(*numbers[i] >= 0.0)) throw UsageError(f[2 + i]);
         }
         r.knobs = march_base_knobs;
-        for (std::size_t k = 0; k < march_knob_names.size(); ++k) set_knob(r.knobs, march_knob_names[k], f[7 + k]);
+        for (std::size_t k = 0; k < march_knob_names.size(); ++k) set_knob(r.knobs, march_knob_names[k], f[8 + k]);
       } catch (const std::exception& e) {
         throw fail("line " + std::to_string(number) + " has a bad value (" + e.what() + ")");
       }
@@ -162,7 +181,7 @@ class Calibration {
 
   /// The column header of the rows.
   static std::string header() {
-    std::string h = "geometry,kind,evals,depth_median,depth_p99,silhouette_false_hits,false_misses,";
+    std::string h = "geometry,kind,evals,depth_median,depth_p99,silhouette_false_hits,false_misses,normal_p95_degrees,";
     for (std::size_t i = 0; i < march_knob_names.size(); ++i) h += std::string(i ? "," : "") + std::string(march_knob_names[i]);
     return h;
   }
@@ -174,7 +193,7 @@ class Calibration {
     out.precision(9);
     for (const CalibrationRow& r : m_rows) {
       out << r.geometry << "," << r.kind << "," << r.evals << "," << r.depth_median << "," << r.depth_p99 << ","
-          << r.silhouette_false_hits << "," << r.false_misses;
+          << r.silhouette_false_hits << "," << r.false_misses << "," << r.normal_p95;
       for (const auto& kv : knob_values(r.knobs)) out << "," << kv.second;
       out << "\n";
     }
@@ -200,9 +219,10 @@ class Calibration {
     std::ostringstream m;
     m << "Calibration::cheapest: no calibrated setting of '" << geometry << "' meets the budget (depth median <= "
       << budget.depth_median << ", p99 <= " << budget.depth_p99 << " footprints, silhouette false hits <= "
-      << budget.silhouette_false_hits << ", false misses <= " << budget.false_misses
-      << "); the best reachable: depth median " << closest->depth_median << ", p99 " << closest->depth_p99
-      << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses " << closest->false_misses
+      << budget.silhouette_false_hits << ", false misses <= " << budget.false_misses << ", normal p95 <= "
+      << budget.normal_p95 << " degrees); the best reachable: depth median " << closest->depth_median << ", p99 "
+      << closest->depth_p99 << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses "
+      << closest->false_misses << ", normal p95 " << closest->normal_p95
       << " at " << closest->evals << " evaluations (" << describe(closest->knobs)
       << "); loosen the budget or calibrate finer settings (proceduray_sweep --calibration)";
     throw UsageError(m.str());
