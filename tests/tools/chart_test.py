@@ -7,15 +7,20 @@ accurate), C and D trade cost for error. The chart must show the objects' marker
 the medians, the red of the p99 crosses), and bad input must exit 2 with a message that names
 the fix.
 """
-import contextlib
 import csv
-import io
 import os
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tools', 'accuracy'))
 import chart  # noqa: E402
+from harness import check  # noqa: E402
+from harness import run as run_main  # noqa: E402
+
+
+def run(args):
+    return run_main(chart.main, args)
 
 HEADER = ['scene', 'device', 'width', 'height', 'max_steps', 'threshold_px', 'epsilon', 'step_scale', 'trace_ms',
           'object', 'object_evals', 'class', 'rays', 'depth_px_median', 'depth_px_p99', 'steps_mean']
@@ -55,23 +60,6 @@ def write_method_sweep(path):
                 w.writerow(['d3d12', 'llvmpipe', 32, 32, i, lab, 'cog', 'sdf', method, 512, 'footprint', 0.5, 1e-4, 1,
                             relax, 64, 'on', 'central', 1, 0, 'fixed', 0.01, 1.5, evals, cls, 100,
                             fat if cls == 'silhouette_1px' else 0.001, median, p99])
-
-
-def run(args):
-    out, err = io.StringIO(), io.StringIO()
-    code = 0
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = chart.main(args)
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
-
-
-def check(condition, what):
-    if not condition:
-        print('FAILED: ' + what, file=sys.stderr)
-        sys.exit(1)
 
 
 def main():

@@ -1,30 +1,18 @@
 #!/usr/bin/python3
 """tools/sweep/depth_chart.py: two known series drawn in their colours, bad input refused."""
-import contextlib
-import io
 import os
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tools', 'sweep'))
 import depth_chart  # noqa: E402
+from harness import check  # noqa: E402
+from harness import run as run_main  # noqa: E402
 
 
 def run(args):
-    out, err = io.StringIO(), io.StringIO()
-    code = 0
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = depth_chart.main(args)
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
-
-
-def check(condition, what):
-    if not condition:
-        print('FAILED: ' + what, file=sys.stderr)
-        sys.exit(1)
+    return run_main(depth_chart.main, args)
 
 
 def main():

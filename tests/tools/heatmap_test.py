@@ -4,31 +4,19 @@
 A 40 x 20 grid of zeros (black, no march) with a block of 200 evaluations on the right half:
 the PNG's right half must be bright (the colour map's top) and its left half dark.
 """
-import contextlib
-import io
 import os
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tools', 'accuracy'))
 import heatmap  # noqa: E402
+from harness import check  # noqa: E402
+from harness import run as run_main  # noqa: E402
 
 
 def run(args):
-    out, err = io.StringIO(), io.StringIO()
-    code = 0
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = heatmap.main(args)
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
-
-
-def check(condition, what):
-    if not condition:
-        print('FAILED: ' + what, file=sys.stderr)
-        sys.exit(1)
+    return run_main(heatmap.main, args)
 
 
 def main():

@@ -18,6 +18,7 @@
 // batch system can split a sweep over machines; the CSVs concatenate (one header each).
 // The reference uses each object's default iterations: fewer iterations show as error.
 #include "02_paper_scene/accuracy.hpp"
+#include "common/run.hpp"
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/reference.hpp"
 #include "03_d3d12_scene/accuracy.hpp"
@@ -228,11 +229,6 @@ proceduray::vk::DevicePreference device_of(const std::string& name) {
   return proceduray::vk::DevicePreference::automatic;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-}
-
 /// What one render of a view gives: the per-object metrics and evaluations, and the time.
 struct ObjectResult {
   acc::Metrics metrics;
@@ -256,7 +252,7 @@ double time_frames(pr::vk::Renderer& r, pr::UniformSlot<Constants> slot, const C
   for (unsigned i = 0; i < o.warmup; ++i) r.render(w, h, false);
   std::vector<double> ms;
   for (unsigned i = 0; i < o.frames; ++i) ms.push_back(r.render(w, h, false).trace_ms);
-  return median(ms);
+  return examples::median(ms);
 }
 
 /// Renders `c` with outputs and measures `ids` against the truth.

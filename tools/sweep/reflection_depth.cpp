@@ -8,6 +8,7 @@
 //   proceduray_reflection_depth --device gpu --size 1920x1080 --csv depth.csv
 //   tools/sweep/depth_chart.py depth.csv --out docs/images/reflection_depth.png
 #include "02_paper_scene/paper_scene.hpp"
+#include "common/run.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -16,15 +17,6 @@
 #include <fstream>
 #include <string>
 #include <vector>
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::string size = "640x360", device = "auto", csv;
@@ -87,11 +79,11 @@ int main(int argc, char** argv) {
         ta.push_back(a.render(width, height, false).trace_ms);
         tb.push_back(b.render(width, height, false).trace_ms);
       }
-      const double ma = median(ta), mb = median(tb);
+      const double ma = examples::median(ta), mb = examples::median(tb);
       std::printf("%12u %14.3f %14.3f %8.3f\n", r, ma, mb, ma > 0 ? mb / ma : 0.0);
       if (out.is_open()) {
         for (const auto& [mode, t] : {std::pair{"recursive", &ta}, std::pair{"iterative", &tb}}) {
-          out << mode << "," << r << "," << median(*t) << "," << *std::min_element(t->begin(), t->end()) << ","
+          out << mode << "," << r << "," << examples::median(*t) << "," << *std::min_element(t->begin(), t->end()) << ","
               << *std::max_element(t->begin(), t->end()) << "," << width << "," << height << "," << ctx.name() << "\n";
         }
       }
