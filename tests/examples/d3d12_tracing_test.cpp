@@ -1,6 +1,7 @@
 // examples/03_d3d12_scene with Tracing::iterative: the sample's scene, shadows and a reflection
 // traced from raygen, gives the recursive image on a device whose maxRayRecursionDepth is forced
 // to 1, where the recursive scene is refused.
+#include "vk/frame_pixels.hpp"
 #include "vk/test_context.hpp"
 
 #include <03_d3d12_scene/d3d12_scene.hpp>
@@ -32,14 +33,10 @@ TEST_CASE("d3d12 tracing - iterative tracing gives the recursive image where max
   flat.flags &= ~d3d12::flag_reflections;
   b.set(d3d12::constants_slot, flat);
   const std::vector<std::uint8_t> no_reflections = b.render(width, height).rgba;
-  int worst = 0;
-  std::size_t differ = 0, reflected = 0;
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    const int d = std::abs(int(got[i]) - int(expected[i]));
-    worst = std::max(worst, d);
-    differ += d > 1;
-    reflected += std::abs(int(got[i]) - int(no_reflections[i])) > 8;
-  }
+  const frame_pixels::Diff same = frame_pixels::diff(got, expected, 1);
+  const int worst = same.worst;
+  const std::size_t differ = same.over;
+  const std::size_t reflected = frame_pixels::diff(got, no_reflections, 8).over;
   CAPTURE(worst);
   CAPTURE(differ);
   CHECK(worst <= 3);

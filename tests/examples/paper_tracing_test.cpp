@@ -2,6 +2,7 @@
 // raygen give the recursive image on a device whose maxRayRecursionDepth is forced to 1 (where
 // the recursive scene is refused), and the pipeline's recursion depth and stack size are the
 // minimum the scene needs.
+#include "vk/frame_pixels.hpp"
 #include "vk/test_context.hpp"
 
 #include <02_paper_scene/paper_scene.hpp>
@@ -60,15 +61,10 @@ TEST_CASE("paper tracing - iterative tracing gives the recursive image where max
   const paper::PaperScene iterative({}, paper::Tracing::iterative);
   const std::vector<std::uint8_t> got = render(limited, iterative, 3);
   const std::vector<std::uint8_t> no_reflections = render(limited, iterative, 1);
-  REQUIRE(got.size() == expected.size());
-  int worst = 0;
-  std::size_t differ = 0, reflected = 0;
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    const int d = std::abs(int(got[i]) - int(expected[i]));
-    worst = std::max(worst, d);
-    differ += d > 1;
-    reflected += std::abs(int(got[i]) - int(no_reflections[i])) > 8;
-  }
+  const frame_pixels::Diff same = frame_pixels::diff(got, expected, 1);
+  const int worst = same.worst;
+  const std::size_t differ = same.over;
+  const std::size_t reflected = frame_pixels::diff(got, no_reflections, 8).over;
   CAPTURE(worst);
   CAPTURE(differ);
   CHECK(worst <= 3);                  // the same sum, added up in another order

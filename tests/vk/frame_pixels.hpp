@@ -2,6 +2,7 @@
 //
 //   glm::ivec3 c = frame_pixels::rgb(frame, {x, y});          // REQUIREs (x, y) inside the frame
 //   CHECK(frame_pixels::near(c, frame_pixels::bytes(colour)));  // within 2 levels per channel
+//   const frame_pixels::Diff d = frame_pixels::diff(a.rgba, b.rgba, 1);   // two whole images
 #pragma once
 
 #include <proceduray/vk/renderer.hpp>
@@ -11,6 +12,9 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <span>
 
 namespace frame_pixels {
 
@@ -34,6 +38,23 @@ inline glm::ivec3 bytes(glm::vec3 c) { return glm::ivec3(glm::round(glm::clamp(c
 template <int N>
 bool near(glm::vec<N, int> a, glm::vec<N, int> b, int tolerance = 2) {
   return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec<N, int>(tolerance)));
+}
+
+/// How two images of the same size differ, channel by channel.
+struct Diff {
+  int worst = 0;          ///< the largest difference, in levels
+  std::size_t over = 0;   ///< channels that differ by more than the `by` given to diff
+};
+/// Compares a and b (REQUIREs equal sizes).
+inline Diff diff(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b, int by) {
+  REQUIRE(a.size() == b.size());
+  Diff d;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const int level = std::abs(int(a[i]) - int(b[i]));
+    d.worst = level > d.worst ? level : d.worst;
+    d.over += level > by;
+  }
+  return d;
 }
 
 }  // namespace frame_pixels
