@@ -360,8 +360,9 @@ TEST_CASE("compile duplicate bindings name both entries") {
   ReportScene w;
   build_report_scene(w);
   Scene& v = w.scene;
-  v.add_miss(w.radiance, sig, ProceduralRootArguments{});
-  CHECK_THROWS_WITH_AS(v.add_miss(w.radiance, sig, ProceduralRootArguments{}),
+  const auto w_sig = v.local_signature_id<ProceduralRootArguments>("Procedural");  // sig is r's: another scene
+  v.add_miss(w.radiance, w_sig, ProceduralRootArguments{});
+  CHECK_THROWS_WITH_AS(v.add_miss(w.radiance, w_sig, ProceduralRootArguments{}),
                        doctest::Contains("Scene::add_miss: ray \"Radiance\" already has a miss entry"),
                        DuplicateIdError);
 }

@@ -134,7 +134,9 @@ void prove(LayoutRule rule) {
   flatten(t, rule, false, "", 0, predicted);
   flatten(t, rule, true, "", 0, host);
   REQUIRE(!glsl.leaves.empty());
-  for (const auto& [name, leaf] : glsl.leaves) {
+  for (const auto& member : glsl.leaves) {
+    const std::string& name = member.first;  // not a structured binding: clang 14 cannot capture one
+    const auto& leaf = member.second;
     INFO("member ", name);
     REQUIRE(predicted.count(name) == 1);
     CHECK(predicted[name].offset == leaf.offset);
@@ -146,7 +148,9 @@ void prove(LayoutRule rule) {
   CHECK((rule == LayoutRule::scalar ? glsl.block_size : proceduray::round_up(glsl.block_size, extent.align)) ==
         extent.size);
   if (proceduray::matches_host(t, rule)) {
-    for (const auto& [name, leaf] : glsl.leaves) {
+    for (const auto& member : glsl.leaves) {
+      const std::string& name = member.first;  // not a structured binding: clang 14 cannot capture one
+      const auto& leaf = member.second;
       INFO("member ", name);
       CHECK(host[name].offset == leaf.offset);
       CHECK(host[name].stride == leaf.stride);
@@ -254,7 +258,9 @@ TEST_CASE("the shaderRecordEXT block of a closest-hit shader has the C++ offsets
   // glslang also reflects what the shader reads through the buffer reference: arguments.spheres.data[i].radius.
   host[".spheres.radius"] = {offsetof(Sphere, radius), 0};
   REQUIRE(glsl.leaves.size() == host.size());
-  for (const auto& [name, leaf] : glsl.leaves) {
+  for (const auto& member : glsl.leaves) {
+    const std::string& name = member.first;  // not a structured binding: clang 14 cannot capture one
+    const auto& leaf = member.second;
     INFO("member ", name);
     REQUIRE(host.count(name) == 1);
     CHECK(host[name].offset == leaf.offset);
@@ -273,7 +279,9 @@ TEST_CASE("a push-constant block has the C++ offsets") {
   Leaves host;
   flatten(type_ops<Camera140>, LayoutRule::std140, true, "", 0, host);
   REQUIRE(glsl.leaves.size() == host.size());
-  for (const auto& [name, leaf] : glsl.leaves) {
+  for (const auto& member : glsl.leaves) {
+    const std::string& name = member.first;  // not a structured binding: clang 14 cannot capture one
+    const auto& leaf = member.second;
     INFO("member ", name);
     REQUIRE(host.count(name) == 1);
     CHECK(host[name].offset == leaf.offset);

@@ -57,6 +57,7 @@ struct PlanBuilder {
     if (s.entries().raygen_shaders().empty()) {
       throw SceneError(std::string(op) + ": no raygen entry; add one with Scene::add_raygen");
     }
+    out.m_scene.value = s.serial();
     for (std::uint32_t r = 0; r < rays; ++r) out.m_ray_names.push_back(s.rays().name(r));
     for (std::uint32_t g = 0; g < s.geometries().size(); ++g) {
       const Geometry& geometry = s.geometries().entities()[g];
@@ -289,6 +290,31 @@ inline void PlanBuilder::pipeline() {
 }
 
 inline void PlanBuilder::declarations() {
+  // Every name the declarations will hold, checked once more with the pipeline's global signature
+  // and the struct type names (registration saw neither): a clash here would surface as a glslang
+  // error on a line of generated code.
+  std::vector<GlslName> names;
+  for (const std::string& r : s.rays().names()) for (GlslName& n : ray_glsl_names(r)) names.push_back(std::move(n));
+  for (const std::string& l : s.layers().names()) for (GlslName& n : layer_glsl_names(l)) names.push_back(std::move(n));
+  for (const std::string& c : s.callables().names()) for (GlslName& n : callable_glsl_names(c)) names.push_back(std::move(n));
+  if (out.m_global) {
+    for (GlslName& n : Entities::signature_glsl_names(*out.m_global)) names.push_back(std::move(n));
+  }
+  std::vector<const TypeOps*> types;
+  auto type = [&](const TypeOps* t) {
+    if (t == nullptr || t->kind != TypeKind::structure || std::find(types.begin(), types.end(), t) != types.end()) return;
+    types.push_back(t);
+    names.push_back({std::string(t->glsl_name), "struct " + std::string(t->glsl_name)});
+  };
+  for (const Ray& r : s.rays().entities()) type(r.payload_glsl);
+  for (const HitGroup& g : s.hit_groups().entities()) type(g.attribute_glsl);
+  for (const LocalSignature& l : s.local_signatures().entities()) type(l.arguments_glsl);
+  for (const Callable& c : s.callables().entities()) type(c.data_glsl);
+  if (out.m_global) {
+    for (const Binding& b : out.m_global->bindings) type(b.type);
+    type(out.m_global->push_constants.type);
+  }
+  check_glsl_names(op, {}, names);
   const std::string common = detail::common_declarations(s, out);
   for (PlannedStage& stage : out.m_pipeline.stages) {
     stage.declarations = common + detail::stage_declarations(s, out, stage.stage, stage.shader);

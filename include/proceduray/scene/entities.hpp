@@ -18,6 +18,10 @@
 // Geometry goes into BLASes (Scene::blases()): its own, or the one named by GeometryDesc::blas.
 #pragma once
 
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <span>
@@ -35,6 +39,7 @@
 #include "proceduray/scene/errors.hpp"
 #include "proceduray/scene/geometry.hpp"
 #include "proceduray/scene/global_signature.hpp"
+#include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/scene/hit_group.hpp"
 #include "proceduray/scene/ids.hpp"
 #include "proceduray/scene/layers.hpp"
@@ -45,7 +50,17 @@
 
 namespace proceduray {
 
+/// The most bytes a ray payload may have. Vulkan sets no limit, but a payload lives on every
+/// nested ray's stack (and NVIDIA keeps it in registers where it can): past a few KiB it is cheaper
+/// to keep the data in a storage buffer indexed by gl_LaunchIDEXT and carry an index.
+inline constexpr std::uint32_t max_payload_size = 4096;
+
 namespace detail {
+inline std::uint32_t next_scene_serial() {
+  static std::atomic<std::uint32_t> serial{0};
+  return ++serial;
+}
+
 template <class A>
 constexpr const TypeOps* attribute_glsl_of() {
   if constexpr (std::is_void_v<A>) return nullptr;
@@ -57,10 +72,21 @@ constexpr const TypeOps* attribute_glsl_of() {
 class Entities {
  public:
   /// Registers a ray type with payload type Payload; throws DuplicateIdError.
+  /// Throws SceneError for conflicting flags, cull mask 0, a payload over max_payload_size, or an id
+  /// that is no valid GLSL name; DuplicateIdError for an id taken, also after GLSL mangling.
   template <PayloadData Payload>
   RayId<Payload> add_ray(std::string id, RayDesc desc) {
-    return RayId<Payload>(m_rays.add("Scene::add_ray", std::move(id),
-                                     Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}));
+    constexpr std::string_view op = "Scene::add_ray";
+    m_rays.check_new(op, id);
+    validate_ray(desc, id, op);
+    if (sizeof(Payload) > max_payload_size) {
+      throw SceneError(std::string(op) + ": ray \"" + id + "\" has a payload of " + std::to_string(sizeof(Payload)) +
+                       " bytes, over the " + std::to_string(max_payload_size) + " the library allows (a payload lives "
+                       "on every nested ray's stack); keep the data in a storage buffer and carry an index");
+    }
+    check_glsl_names(op, glsl_names(), ray_glsl_names(id));
+    return RayId<Payload>(m_rays.add(op, std::move(id), Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}),
+                          m_serial);
   }
 
   /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
@@ -84,7 +110,8 @@ class Entities {
       size = triangle_attribute_size;
     }
     return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
-                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}));
+                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}),
+                      m_serial);
   }
 
   /// Registers a geometry and puts it in its BLAS; throws InvalidGeometryError, DuplicateIdError.
@@ -94,7 +121,7 @@ class Entities {
     // Every check comes before the first change, so a throw leaves the scene as it was.
     const BlasSet::Join join = m_blases.check(desc, id, op);
     m_geometries.check_new(op, id);
-    const GeometryId gid(static_cast<std::uint32_t>(m_geometries.size()));
+    const GeometryId gid(static_cast<std::uint32_t>(m_geometries.size()), m_serial);
     const std::uint32_t index = m_blases.add(join, gid, desc, id);
     m_geometries.add(op, std::move(id), Geometry{std::move(desc), join.blas, index});
     return gid;
@@ -102,7 +129,13 @@ class Entities {
 
   /// Adds a named layer (a bit of instance masks and cull masks) and returns its bit;
   /// throws DuplicateIdError, or SceneError past eight layers.
-  std::uint8_t add_layer(std::string name) { return m_layers.add(std::move(name), "Scene::add_layer"); }
+  std::uint8_t add_layer(std::string name) {
+    const auto known = m_layers.names();
+    if (!name.empty() && std::find(known.begin(), known.end(), name) == known.end()) {
+      check_glsl_names("Scene::add_layer", glsl_names(), layer_glsl_names(name));
+    }
+    return m_layers.add(std::move(name), "Scene::add_layer");
+  }
   /// The union of the named layers' bits; throws UnknownIdError naming the known layers.
   std::uint8_t layer_mask(std::initializer_list<std::string_view> names) const {
     return m_layers.mask(names, "Scene::layer_mask");
@@ -119,22 +152,29 @@ class Entities {
     if (desc.shader.empty()) {
       throw SceneError("Scene::add_callable: callable " + detail::quote_id(id) + " has no shader; set .shader");
     }
+    m_callables.check_new("Scene::add_callable", id);
+    check_glsl_names("Scene::add_callable", glsl_names(), callable_glsl_names(id));
     return CallableId<Data>(m_callables.add("Scene::add_callable", std::move(id),
-                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}));
+                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}),
+                            m_serial);
   }
 
   /// Registers a global signature; throws SceneError for bad bindings, DuplicateIdError.
   GlobalSignatureId add_global_signature(std::string id, GlobalSignatureDesc desc) {
     validate(desc, id, "Scene::add_global_signature");
+    m_global_signatures.check_new("Scene::add_global_signature", id);
+    check_glsl_names("Scene::add_global_signature", glsl_names(), signature_glsl_names(desc));
     return GlobalSignatureId(m_global_signatures.add("Scene::add_global_signature", std::move(id),
-                                                     GlobalSignature{std::move(desc)}));
+                                                     GlobalSignature{std::move(desc)}),
+                             m_serial);
   }
 
   /// Registers a local signature whose records carry Arguments; throws DuplicateIdError.
   template <RootArgumentsData Arguments>
   LocalSignatureId<Arguments> add_local_signature(std::string id) {
     return LocalSignatureId<Arguments>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
-                                                         LocalSignature{sizeof(Arguments), typeid(Arguments), &type_ops<Arguments>}));
+                                                         LocalSignature{sizeof(Arguments), typeid(Arguments), &type_ops<Arguments>}),
+                                       m_serial);
   }
 
   /// The ray registered as `id`, or nullptr.
@@ -155,15 +195,19 @@ class Entities {
     if constexpr (!std::is_void_v<Payload>) {
       check_type(m_rays.entities()[index].payload_type, typeid(Payload), "Scene::ray_id", "ray", id, "payload");
     }
-    return RayId<Payload>(index);
+    return RayId<Payload>(index, m_serial);
   }
   /// The hit group of `id`; throws UnknownIdError.
-  HitGroupId hit_group_id(std::string_view id) const { return HitGroupId(m_hit_groups.index_of(id, "Scene::hit_group_id")); }
+  HitGroupId hit_group_id(std::string_view id) const {
+    return HitGroupId(m_hit_groups.index_of(id, "Scene::hit_group_id"), m_serial);
+  }
   /// The geometry of `id`; throws UnknownIdError.
-  GeometryId geometry_id(std::string_view id) const { return GeometryId(m_geometries.index_of(id, "Scene::geometry_id")); }
+  GeometryId geometry_id(std::string_view id) const {
+    return GeometryId(m_geometries.index_of(id, "Scene::geometry_id"), m_serial);
+  }
   /// The global signature of `id`; throws UnknownIdError.
   GlobalSignatureId global_signature_id(std::string_view id) const {
-    return GlobalSignatureId(m_global_signatures.index_of(id, "Scene::global_signature_id"));
+    return GlobalSignatureId(m_global_signatures.index_of(id, "Scene::global_signature_id"), m_serial);
   }
   /// The local signature of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
   template <class Arguments = void>
@@ -173,7 +217,7 @@ class Entities {
       check_type(m_local_signatures.entities()[index].arguments_type, typeid(Arguments), "Scene::local_signature_id",
                  "local signature", id, "root arguments");
     }
-    return LocalSignatureId<Arguments>(index);
+    return LocalSignatureId<Arguments>(index, m_serial);
   }
 
   /// The callable of `id`; throws UnknownIdError or, for a typed lookup, TypeMismatchError.
@@ -183,30 +227,30 @@ class Entities {
     if constexpr (!std::is_void_v<Data>) {
       check_type(m_callables.entities()[index].data_type, typeid(Data), "Scene::callable_id", "callable", id, "data");
     }
-    return CallableId<Data>(index);
+    return CallableId<Data>(index, m_serial);
   }
   /// The callable of an id; throws UnknownIdError.
-  const Callable& callable(CallableId<> id) const { return m_callables.at(id.index(), "Scene::callable"); }
+  const Callable& callable(CallableId<> id) const { return m_callables.at(own(id, "Scene::callable"), "Scene::callable"); }
 
   /// The ray of an id; throws UnknownIdError for an id this scene did not issue.
-  const Ray& ray(RayId<> id) const { return m_rays.at(id.index(), "Scene::ray"); }
+  const Ray& ray(RayId<> id) const { return m_rays.at(own(id, "Scene::ray"), "Scene::ray"); }
   /// The ray registered as `id`; throws UnknownIdError.
   const Ray& ray(std::string_view id) const { return m_rays.at(id, "Scene::ray"); }
   /// The hit group of an id; throws UnknownIdError.
-  const HitGroup& hit_group(HitGroupId id) const { return m_hit_groups.at(id.index(), "Scene::hit_group"); }
+  const HitGroup& hit_group(HitGroupId id) const { return m_hit_groups.at(own(id, "Scene::hit_group"), "Scene::hit_group"); }
   /// The hit group registered as `id`; throws UnknownIdError.
   const HitGroup& hit_group(std::string_view id) const { return m_hit_groups.at(id, "Scene::hit_group"); }
   /// The geometry of an id; throws UnknownIdError.
-  const Geometry& geometry(GeometryId id) const { return m_geometries.at(id.index(), "Scene::geometry"); }
+  const Geometry& geometry(GeometryId id) const { return m_geometries.at(own(id, "Scene::geometry"), "Scene::geometry"); }
   /// The geometry registered as `id`; throws UnknownIdError.
   const Geometry& geometry(std::string_view id) const { return m_geometries.at(id, "Scene::geometry"); }
   /// The global signature of an id; throws UnknownIdError.
   const GlobalSignature& global_signature(GlobalSignatureId id) const {
-    return m_global_signatures.at(id.index(), "Scene::global_signature");
+    return m_global_signatures.at(own(id, "Scene::global_signature"), "Scene::global_signature");
   }
   /// The local signature of an id; throws UnknownIdError.
   const LocalSignature& local_signature(LocalSignatureId<> id) const {
-    return m_local_signatures.at(id.index(), "Scene::local_signature");
+    return m_local_signatures.at(own(id, "Scene::local_signature"), "Scene::local_signature");
   }
   /// The BLAS a geometry lives in; throws UnknownIdError.
   const Blas& blas_of(GeometryId id) const { return m_blases.all()[geometry(id).blas]; }
@@ -230,6 +274,37 @@ class Entities {
   /// TLAS instances over all BLASes.
   std::uint64_t instance_count() const { return m_blases.instance_count(); }
 
+  /// The serial ids of this scene carry (a copy of a scene keeps it: the copy accepts the ids).
+  std::uint32_t serial() const { return m_serial; }
+  /// `id`'s index, after checking that this scene issued it; throws UnknownIdError naming `op`.
+  template <class Tag, class Data>
+  std::uint32_t own(Id<Tag, Data> id, std::string_view op) const {
+    if (id.scene() != 0 && id.scene() != m_serial) {
+      throw UnknownIdError(std::string(op) + ": the id (index " + std::to_string(id.index()) + ") was issued by scene #" +
+                           std::to_string(id.scene()) + ", not by this one (#" + std::to_string(m_serial) +
+                           "); use an id this scene returned (or look it up by name here)");
+    }
+    return id.index();
+  }
+  /// Every name the scene's rays, layers, callables and global signatures would declare in GLSL.
+  std::vector<GlslName> glsl_names() const {
+    std::vector<GlslName> out;
+    for (const std::string& r : m_rays.names()) for (GlslName& n : ray_glsl_names(r)) out.push_back(std::move(n));
+    for (const std::string& l : m_layers.names()) for (GlslName& n : layer_glsl_names(l)) out.push_back(std::move(n));
+    for (const std::string& c : m_callables.names()) for (GlslName& n : callable_glsl_names(c)) out.push_back(std::move(n));
+    for (const GlobalSignature& g : m_global_signatures.entities()) {
+      for (GlslName& n : signature_glsl_names(g.desc)) out.push_back(std::move(n));
+    }
+    return out;
+  }
+  /// What a global signature declares: its named bindings and push constant block.
+  static std::vector<GlslName> signature_glsl_names(const GlobalSignatureDesc& desc) {
+    std::vector<GlslName> out;
+    for (const Binding& b : desc.bindings) for (GlslName& n : binding_glsl_names(b.name, "binding")) out.push_back(std::move(n));
+    for (GlslName& n : binding_glsl_names(desc.push_constants.name, "push constant block")) out.push_back(std::move(n));
+    return out;
+  }
+
   /// Reserves room for `count` geometries (and their BLASes).
   void reserve_geometries(std::size_t count) {
     m_geometries.reserve(count);
@@ -246,6 +321,29 @@ class Entities {
     }
   }
 
+  static void validate_ray(const RayDesc& desc, std::string_view id, std::string_view op) {
+    const auto bits = static_cast<std::uint32_t>(desc.flags);
+    const auto count = [&](std::uint32_t mask) { return std::popcount(bits & mask); };
+    const std::string where = std::string(op) + ": ray \"" + std::string(id) + "\"";
+    if ((bits & ~0xFFu) != 0) {
+      throw SceneError(where + " has unknown ray flag bits 0x" + detail::hex(bits & ~0xFFu) +
+                       "; combine the RayFlags values only");
+    }
+    if (count(0x01 | 0x02 | 0x40 | 0x80) > 1) {
+      throw SceneError(where + " combines more than one of opaque, no_opaque, cull_opaque and cull_no_opaque (flags 0x" +
+                       detail::hex(bits) + "); Vulkan allows one of them per ray: keep one");
+    }
+    if (count(0x10 | 0x20) > 1) {
+      throw SceneError(where + " culls both back- and front-facing triangles (flags 0x" + detail::hex(bits) +
+                       "); it could never hit a triangle: keep one of the two");
+    }
+    if (desc.cull_mask == 0) {
+      throw SceneError(where + " has cull mask 0, which no instance passes (mask & cull_mask != 0); use "
+                       "scene.layer_mask({...}) or 0xFF for all");
+    }
+  }
+
+  std::uint32_t m_serial = detail::next_scene_serial();
   Registry<Ray> m_rays{"ray"};
   Registry<HitGroup> m_hit_groups{"hit group"};
   Registry<Geometry> m_geometries{"geometry"};

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -59,6 +60,17 @@ class MissingEntryError : public SceneError {
 };
 
 namespace detail {
+
+/// `value` in hexadecimal, without a prefix.
+inline std::string hex(std::uint32_t value) {
+  static constexpr char digits[] = "0123456789abcdef";
+  std::string out;
+  do {
+    out.insert(out.begin(), digits[value & 0xF]);
+    value >>= 4;
+  } while (value != 0);
+  return out;
+}
 
 /// Levenshtein distance between two ids (case-sensitive).
 inline std::size_t edit_distance(std::string_view a, std::string_view b) {

@@ -42,6 +42,9 @@ struct Binding {
   std::uint32_t count = 1;                         ///< array size; default 1
   std::string name;                                ///< GLSL name to declare it under (glsl_for); empty: not declared
   const TypeOps* type = nullptr;                   ///< a uniform or storage buffer's contents (UniformSlot sets it)
+  /// A storage buffer indexed by the TLAS instance (gl_InstanceCustomIndexEXT): the renderer
+  /// refuses fewer elements than the scene has instances (StorageSlot::per_instance sets it).
+  bool per_instance = false;
   friend bool operator==(const Binding&, const Binding&) = default;
 };
 

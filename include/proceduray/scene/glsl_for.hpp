@@ -31,6 +31,7 @@
 // Every block comes from shader/glsl_codegen.hpp, the one GLSL emitter.
 #pragma once
 
+#include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/scene/outputs_glsl.hpp"
 #include "proceduray/scene/plan.hpp"
 #include "proceduray/scene/scene.hpp"
@@ -46,16 +47,7 @@ namespace proceduray {
 
 namespace detail {
 
-/// `name` with every character that may not appear in a GLSL identifier replaced by '_'.
-inline std::string glsl_identifier(std::string_view name) {
-  std::string out(name);
-  for (char& c : out) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-    if (!ok) c = '_';
-  }
-  if (out.empty() || (out[0] >= '0' && out[0] <= '9')) out.insert(out.begin(), '_');
-  return out;
-}
+using proceduray::glsl_identifier;  // glsl_names.hpp
 
 /// The one type a shader's uses agree on, or nullptr; throws when they disagree.
 inline const TypeOps* one_type(const std::vector<const TypeOps*>& types, std::string_view shader, const char* what) {

@@ -5,7 +5,9 @@
 //   proceduray::RayId<> any_ray = radiance;          // typed ids convert to untyped ones
 //   proceduray::LocalSignatureId<Arguments> sig = scene.add_local_signature<Arguments>("Procedural");
 //
-// Ids are never raw integers: a GeometryId does not convert to a HitGroupId.
+// Ids are never raw integers: a GeometryId does not convert to a HitGroupId. An id also carries
+// the serial of the scene that issued it, so another scene (or a renderer built from another
+// scene) refuses it instead of reading whatever entity has the same index.
 #pragma once
 
 #include <compare>
@@ -31,23 +33,27 @@ class Id {
   static constexpr std::uint32_t invalid_index = 0xFFFF'FFFFu;  ///< index of a default-constructed id
 
   constexpr Id() = default;
-  /// Wraps a registry index; only the registry should call this.
-  constexpr explicit Id(std::uint32_t index) : m_index(index) {}
+  /// Wraps a registry index of scene `scene` (0: any scene, unchecked); only the scene should call this.
+  constexpr explicit Id(std::uint32_t index, std::uint32_t scene = 0) : m_index(index), m_scene(scene) {}
   /// A typed id converts to the untyped id of the same kind.
   template <class Other>
     requires(std::is_void_v<Data> && !std::is_void_v<Other>)
-  constexpr Id(Id<Tag, Other> other) : m_index(other.index()) {}
+  constexpr Id(Id<Tag, Other> other) : m_index(other.index()), m_scene(other.scene()) {}
 
   /// Position in the registry, which is also the order of registration.
   constexpr std::uint32_t index() const { return m_index; }
+  /// Serial of the scene that issued the id (0: made by hand, not checked).
+  constexpr std::uint32_t scene() const { return m_scene; }
   /// False for a default-constructed id.
   constexpr bool valid() const { return m_index != invalid_index; }
 
-  friend constexpr bool operator==(Id, Id) = default;
-  friend constexpr auto operator<=>(Id, Id) = default;
+  /// Ids compare by index (an id the scene issued equals one a plan rebuilt from the index).
+  friend constexpr bool operator==(Id a, Id b) { return a.m_index == b.m_index; }
+  friend constexpr auto operator<=>(Id a, Id b) { return a.m_index <=> b.m_index; }
 
  private:
   std::uint32_t m_index = invalid_index;
+  std::uint32_t m_scene = 0;
 };
 
 /// A ray type; Payload is its payload type (void: untyped).

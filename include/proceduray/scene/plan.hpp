@@ -112,6 +112,11 @@ class Plan {
   std::span<const PlannedGeometry> geometries() const { return m_geometries; }
   /// A geometry of this plan; throws UnknownIdError for an id the plan does not have, naming `operation`.
   const PlannedGeometry& geometry(GeometryId id, std::string_view operation = "Plan::geometry") const {
+    if (id.scene() != 0 && id.scene() != m_scene) {
+      throw UnknownIdError(std::string(operation) + ": geometry #" + std::to_string(id.index()) + " was issued by "
+                           "scene #" + std::to_string(id.scene()) + ", but this plan (and a renderer built from it) "
+                           "was compiled from scene #" + std::to_string(m_scene) + "; use an id of that scene");
+    }
     if (id.index() >= m_geometries.size()) {
       throw UnknownIdError(std::string(operation) + ": geometry #" + std::to_string(id.index()) + " is not in the "
                            "compiled scene (it has " + std::to_string(m_geometries.size()) + " geometries); "
@@ -173,6 +178,14 @@ class Plan {
  private:
   friend struct PlanBuilder;  // compile.hpp fills the plan
   std::vector<std::string> m_ray_names;
+  /// Serial of the scene compiled (Entities::serial); not part of a plan's value, so two scenes
+  /// built alike compile to equal plans.
+  struct SceneSerial {
+    std::uint32_t value = 0;
+    operator std::uint32_t() const { return value; }
+    friend bool operator==(SceneSerial, SceneSerial) { return true; }
+  };
+  SceneSerial m_scene;
   std::vector<PlannedGeometry> m_geometries;
   std::vector<PlannedBlas> m_blases;
   std::vector<TlasInstance> m_instances;

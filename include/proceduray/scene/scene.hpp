@@ -57,7 +57,8 @@ class Scene : public Entities {
   template <class Payload, RootArgumentsData Arguments, class Given>
     requires ArgumentsMatchSignature<Given, Arguments>
   EntryId add_miss(RayId<Payload> ray, LocalSignatureId<Arguments> signature, const Given& data) {
-    Entry e{.region = SbtRegionKind::miss, .ray = ray.index(), .local_signature = signature_index(signature, "Scene::add_miss")};
+    Entry e{.region = SbtRegionKind::miss, .ray = own(ray, "Scene::add_miss"),
+            .local_signature = signature_index(signature, "Scene::add_miss")};
     return add_entry("Scene::add_miss", e, &data, sizeof(Arguments));
   }
 
@@ -66,23 +67,25 @@ class Scene : public Entities {
     requires ArgumentsMatchSignature<Given, Arguments>
   EntryId add_callable_record(CallableId<Data> callable, LocalSignatureId<Arguments> signature, const Given& data) {
     Entry e{.region = SbtRegionKind::callable, .local_signature = signature_index(signature, "Scene::add_callable_record"),
-            .shader = callable.index()};
+            .shader = own(callable, "Scene::add_callable_record")};
     return add_entry("Scene::add_callable_record", e, &data, sizeof(Arguments));
   }
 
   /// Binds <ray, hit group> (no root arguments) to a geometry, or one instance of it.
   template <class Payload>
   EntryId add_hit(RayId<Payload> ray, HitGroupId group, GeometryId geometry, std::uint32_t instance = all_instances) {
-    Entry e{.ray = ray.index(), .hit_group = group.index(), .geometry = geometry.index(), .instance = instance};
-    return add_entry("Scene::add_hit", e, nullptr, 0);
+    constexpr std::string_view op = "Scene::add_hit";
+    Entry e{.ray = own(ray, op), .hit_group = own(group, op), .geometry = own(geometry, op), .instance = instance};
+    return add_entry(op, e, nullptr, 0);
   }
   /// Binds <ray, hit group, local signature, arguments> to a geometry, or one instance of it.
   template <class Payload, RootArgumentsData Arguments, class Given>
     requires ArgumentsMatchSignature<Given, Arguments>
   EntryId add_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Arguments> signature, const Given& args,
                   GeometryId geometry, std::uint32_t instance = all_instances) {
-    Entry e{.ray = ray.index(), .hit_group = group.index(), .local_signature = signature_index(signature, "Scene::add_hit"),
-            .geometry = geometry.index(), .instance = instance};
+    constexpr std::string_view op = "Scene::add_hit";
+    Entry e{.ray = own(ray, op), .hit_group = own(group, op), .local_signature = signature_index(signature, op),
+            .geometry = own(geometry, op), .instance = instance};
     return add_entry("Scene::add_hit", e, &args, sizeof(Arguments));
   }
   /// The same by string ids; throws UnknownIdError, or TypeMismatchError when Arguments is not the signature's type.
@@ -96,21 +99,21 @@ class Scene : public Entities {
   /// Declares the hit group `ray` uses on geometry of the group's kind that has no entry.
   template <class Payload>
   EntryId set_default_hit(RayId<Payload> ray, HitGroupId group) {
-    Entry e{.ray = ray.index(), .hit_group = group.index(), .is_default = true};
+    Entry e{.ray = own(ray, "Scene::set_default_hit"), .hit_group = own(group, "Scene::set_default_hit"), .is_default = true};
     return add_entry("Scene::set_default_hit", e, nullptr, 0);
   }
   /// The same, with root arguments.
   template <class Payload, RootArgumentsData Arguments, class Given>
     requires ArgumentsMatchSignature<Given, Arguments>
   EntryId set_default_hit(RayId<Payload> ray, HitGroupId group, LocalSignatureId<Arguments> signature, const Given& args) {
-    Entry e{.ray = ray.index(), .hit_group = group.index(),
+    Entry e{.ray = own(ray, "Scene::set_default_hit"), .hit_group = own(group, "Scene::set_default_hit"),
             .local_signature = signature_index(signature, "Scene::set_default_hit"), .is_default = true};
     return add_entry("Scene::set_default_hit", e, &args, sizeof(Arguments));
   }
 
   /// Makes a registered global signature the one the pipeline uses; default: none.
   void set_global_signature(GlobalSignatureId id) {
-    global_signatures().check_index(id.index(), "Scene::set_global_signature");
+    global_signatures().check_index(own(id, "Scene::set_global_signature"), "Scene::set_global_signature");
     m_global_signature = id;
   }
   /// Registers `desc` as `id` and makes it the one the pipeline uses.
@@ -120,7 +123,8 @@ class Scene : public Entities {
     return g;
   }
   /// Declares the deepest traceRayEXT nesting the shaders do (1 = rays from raygen only).
-  /// Undeclared, it is 1, and a pipeline whose hit, miss or callable shaders trace is refused.
+  /// Undeclared, the renderer derives it from what each shader traces (scene/recursion.hpp); it
+  /// refuses a declared depth below that, and needs one when shaders trace in a cycle (reflections).
   void set_max_recursion_depth(std::uint32_t depth) {
     if (depth == 0) {
       throw SceneError("Scene::set_max_recursion_depth: depth 0 allows no traceRayEXT at all; use >= 1");
@@ -145,7 +149,7 @@ class Scene : public Entities {
  private:
   /// A signature the caller passed: checked even when default-constructed (invalid).
   std::uint32_t signature_index(LocalSignatureId<> id, std::string_view op) const {
-    local_signatures().check_index(id.index(), op);
+    local_signatures().check_index(own(id, op), op);
     return id.index();
   }
   EntryId add_raygen_entry(std::string shader, std::uint32_t signature, const void* data, std::uint32_t size) {

@@ -6,8 +6,8 @@
 //                                                     {BindingKind::storage_image, 1}, constants}});
 //   renderer.set(constants, value);   // value must be a SceneConstants: anything else does not compile
 //
-//   constexpr proceduray::StorageSlot<Tint> tints{.binding = 3, .name = "tints"};
-//   renderer.set_storage(tints, std::span<const Tint>(per_instance));  // GLSL: tints.data[i]
+//   constexpr proceduray::StorageSlot<Tint> tints{.binding = 3, .name = "tints", .per_instance = true};
+//   renderer.set_storage(tints, std::span<const Tint>(per_instance));  // GLSL: tints.data[gl_InstanceCustomIndexEXT]
 //
 //   constexpr proceduray::PushConstantSlot<FrameKnobs> knobs{.name = "knobs"};
 //   scene.add_global_signature("global", {.bindings = {...}, .push_constants = knobs});
@@ -40,9 +40,12 @@ struct StorageSlot {
   std::uint32_t binding = 0;  ///< layout(binding = N)
   std::uint32_t set = 0;      ///< layout(set = N); default 0
   const char* name = "";      ///< GLSL instance name glsl_for declares it under; empty: declared by hand
+  /// Indexed by gl_InstanceCustomIndexEXT: set_storage refuses fewer elements than TLAS instances
+  /// (past the end, a shader reads nothing: instances would render black).
+  bool per_instance = false;
 
   /// The binding as the global signature declares it.
-  operator Binding() const { return {BindingKind::storage_buffer, binding, set, 1, name, &type_ops<T>}; }
+  operator Binding() const { return {BindingKind::storage_buffer, binding, set, 1, name, &type_ops<T>, per_instance}; }
 };
 
 /// Push constants holding one T (GLSL: `name.member`), T registered with the shader layer. Cheaper

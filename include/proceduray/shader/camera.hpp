@@ -35,6 +35,14 @@ PROCEDURAY_STRUCT(Camera, scalar, eye, forward, right, up, pixel_angle, pad0, pa
 /// A camera at `eye` looking at `target` with vertical field of view `fov_y_degrees`; throws UsageError on degenerate input.
 inline Camera look_at(glm::vec3 eye, glm::vec3 target, float fov_y_degrees, std::uint32_t width, std::uint32_t height,
                       glm::vec3 world_up = {0.0f, 1.0f, 0.0f}) {
+  const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  if (!finite(eye) || !finite(target) || !finite(world_up) || !std::isfinite(fov_y_degrees)) {
+    // NaN compares false with everything, so it would pass the checks below and trace NaN rays.
+    throw UsageError("look_at: eye (" + std::to_string(eye.x) + ", " + std::to_string(eye.y) + ", " +
+                     std::to_string(eye.z) + "), target (" + std::to_string(target.x) + ", " + std::to_string(target.y) +
+                     ", " + std::to_string(target.z) + "), up or fov " + std::to_string(fov_y_degrees) +
+                     " is not finite (NaN or infinity); check the values the camera is computed from");
+  }
   const glm::vec3 view = target - eye;
   const glm::vec3 side = glm::cross(view, world_up);
   if (width == 0 || height == 0 || !(fov_y_degrees > 0.0f && fov_y_degrees < 180.0f) ||

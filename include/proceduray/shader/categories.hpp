@@ -140,11 +140,14 @@ struct ClashAt {
   bool found = false;
 };
 
+// Type identity comes from `first` (std::is_same), never from comparing the addresses of two
+// type_ops: GCC cannot fold that in a constant expression under -fsanitize=undefined (which
+// implies -fno-delete-null-pointer-checks).
 template <std::size_t N>
-constexpr ClashAt find_name_clash(const std::array<const TypeOps*, N>& t) {
+constexpr ClashAt find_name_clash(const std::array<const TypeOps*, N>& t, const std::array<std::uint32_t, N>& first) {
   for (std::size_t i = 0; i < N; ++i) {
     for (std::size_t j = i + 1; j < N; ++j) {
-      if (t[i] != t[j] && t[i]->kind == TypeKind::structure && t[j]->kind == TypeKind::structure &&
+      if (first[i] != first[j] && t[i]->kind == TypeKind::structure && t[j]->kind == TypeKind::structure &&
           t[i]->glsl_name == t[j]->glsl_name) {
         return {i, j, true};
       }
@@ -156,6 +159,8 @@ constexpr ClashAt find_name_clash(const std::array<const TypeOps*, N>& t) {
 template <class... Ts>
 struct TypeList {
   static constexpr std::array<const TypeOps*, sizeof...(Ts)> types = {&type_ops<Ts>...};
+  /// For each entry, the index of the first entry of the same type.
+  static constexpr std::array<std::uint32_t, sizeof...(Ts)> first = {index_in<Ts, Ts...>()...};
   template <std::size_t I>
   using at = std::tuple_element_t<I, std::tuple<Ts..., void>>;
 };
@@ -180,7 +185,7 @@ struct ShaderInterface {
   using AllTypes = typename detail::JoinTypes<P, C, A, H>::type;
 
  private:
-  static constexpr detail::ClashAt m_clash = detail::find_name_clash(AllTypes::types);
+  static constexpr detail::ClashAt m_clash = detail::find_name_clash(AllTypes::types, AllTypes::first);
   static_assert(detail::NameClash<typename AllTypes::template at<m_clash.a>,
                                   typename AllTypes::template at<m_clash.b>, m_clash.found>::ok);
 

@@ -35,7 +35,8 @@ class Bindings {
  public:
   /// Lays out the sets of `desc` (nullptr: none) and writes `tlas` to its acceleration-structure
   /// bindings; throws UsageError for descriptor arrays, DeviceLimitError for push constants past the device's limit.
-  Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas);
+  Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas,
+           std::uint32_t instance_count = 0);
   Bindings(const Bindings&) = delete;
   Bindings& operator=(const Bindings&) = delete;
 
@@ -98,6 +99,7 @@ class Bindings {
     std::uint32_t set = 0, binding = 0;
     const TypeOps* type = nullptr;
     std::unique_ptr<Buffer> buffer;
+    bool per_instance = false;
   };
   Uniform& uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op);
   void set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes, std::string_view op);
@@ -114,6 +116,7 @@ class Bindings {
   }
 
   const Context* m_ctx;
+  std::uint32_t m_instance_count = 0;  // TLAS instances, for per-instance storage buffers
   std::vector<std::unique_ptr<DescriptorSet>> m_sets;  // index = set number
   std::vector<VkDescriptorSet> m_handles;              // their handles, bound every frame
   std::vector<Uniform> m_uniforms;
@@ -124,8 +127,9 @@ class Bindings {
   std::vector<std::byte> m_push;
 };
 
-inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas)
-    : m_ctx(&ctx) {
+inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas,
+                          std::uint32_t instance_count)
+    : m_ctx(&ctx), m_instance_count(instance_count) {
   if (desc == nullptr) return;
   m_push_block = desc->push_constants;
   m_push_size = desc->push_bytes();
@@ -158,7 +162,7 @@ inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, c
       case BindingKind::acceleration_structure: m_sets[b.set]->write(b.binding, tlas); break;
       case BindingKind::storage_image: m_images.emplace_back(b.set, b.binding); break;
       case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false}); break;
-      case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr}); break;
+      case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr, b.per_instance}); break;
       case BindingKind::output_image: break;  // the renderer binds each output's image (bind_output)
     }
   }
@@ -190,6 +194,12 @@ inline void Bindings::set_storage_bytes(const proceduray::Binding& slot, const T
     check_type(s.type, type, slot, op);
     if (bytes.empty()) {
       throw UsageError(std::string(op) + ": no elements given for " + where(slot) + "; a storage buffer needs at least one");
+    }
+    const std::size_t count = s.type != nullptr && s.type->cpp_size > 0 ? bytes.size() / s.type->cpp_size : bytes.size();
+    if (s.per_instance && count < m_instance_count) {
+      throw UsageError(std::string(op) + ": " + where(slot) + " is indexed per TLAS instance but got " +
+                       std::to_string(count) + " elements for " + std::to_string(m_instance_count) +
+                       " instances (the ones past the end would read nothing); give one element per instance");
     }
     if (!s.buffer || s.buffer->size() < bytes.size()) {
       s.buffer = std::make_unique<Buffer>(*m_ctx, bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);

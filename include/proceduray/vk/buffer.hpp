@@ -44,7 +44,6 @@ class Buffer {
   }
 
  private:
-  const Context* m_ctx = nullptr;
   DeviceHandle<VkDeviceMemory> m_memory;  // declared before the buffer: the buffer is destroyed first
   DeviceHandle<VkBuffer> m_buffer;
   VkDeviceSize m_size = 0;
@@ -53,7 +52,7 @@ class Buffer {
 };
 
 inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory)
-    : m_ctx(&ctx), m_size(size) {
+    : m_size(size) {
   if (size == 0) {
     throw UsageError("Buffer: size 0 requested; Vulkan buffers need at least one byte");
   }

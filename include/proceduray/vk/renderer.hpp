@@ -84,7 +84,8 @@ class Renderer {
   }
   /// Changes the instance mask (Layers bits) of one instance, any policy: the TLAS is rebuilt
   /// before the next trace (a mask is not a motion, so no refit is involved).
-  void set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask) {
+  /// Throws UsageError for a mask over 0xFF (an instance mask has 8 bits).
+  void set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask) {
     m_structures->set_mask(geometry, instance, mask, "Renderer::set_mask");
   }
   /// Replaces a DynamicGeometry procedural geometry's boxes: the same count refits its BLAS before
@@ -148,10 +149,17 @@ class Renderer {
 
 inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
     : m_ctx(&ctx), m_plan(compile(scene)), m_layout(m_plan.layout(ctx.limits())) {
+  if (const auto raygen = m_plan.records(SbtRegionKind::raygen); raygen.size() > 1) {
+    throw UsageError("Renderer: the scene has " + std::to_string(raygen.size()) + " raygen entries (first \"" +
+                     m_plan.pipeline().groups[raygen[0].group].name + "\", second \"" +
+                     m_plan.pipeline().groups[raygen[1].group].name + "\"); a Renderer traces one raygen: keep "
+                     "one per scene, or make one scene per raygen");
+  }
   const auto start = Clock::now();
   m_structures = std::make_unique<SceneAcceleration>(ctx, scene, m_plan, options.blas);
   m_timings.acceleration_ms = ms_since(start);
-  m_bindings = std::make_unique<Bindings>(ctx, m_plan.global_signature(), m_structures->tlas().structure());
+  m_bindings = std::make_unique<Bindings>(ctx, m_plan.global_signature(), m_structures->tlas().structure(),
+                                          static_cast<std::uint32_t>(m_plan.instances().size()));
   PipelineTimings pipeline;
   m_pipeline = make_scene_pipeline(ctx, m_plan, m_bindings->layouts(), m_bindings->push_size(), std::move(options),
                                    &pipeline);

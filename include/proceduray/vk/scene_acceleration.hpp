@@ -49,7 +49,7 @@ class SceneAcceleration {
   void set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
                       std::string_view op = "SceneAcceleration::set_transforms");
   /// Changes one instance's mask, any policy: TLAS rebuild at the next record().
-  void set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask,
+  void set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
                 std::string_view op = "SceneAcceleration::set_mask");
   /// New boxes for a DynamicGeometry procedural geometry: refit for the same count, else rebuild.
   void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op = "SceneAcceleration::set_aabbs");
@@ -93,6 +93,7 @@ class SceneAcceleration {
   std::uint32_t movable_instance(GeometryId geometry, std::uint32_t instance, std::string_view op) const;
   /// InvalidGeometryError naming `op`, the geometry and the instance for a non-finite or singular matrix.
   void check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t, std::string_view op) const;
+  void check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m, std::string_view op) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
   void record_refit(VkCommandBuffer cmd, std::uint32_t blas);
@@ -214,6 +215,16 @@ inline std::uint32_t SceneAcceleration::movable_instance(GeometryId geometry, st
   return k;
 }
 
+inline void SceneAcceleration::check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
+                                            std::string_view op) const {
+  // An instance transform is 3x4: a projective last row would be dropped without a word.
+  if (m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f) return;
+  throw UsageError(std::string(op) + ": geometry \"" + m_plan->geometry(geometry, op).name + "\" instance " +
+                   std::to_string(instance) + " matrix has last row (" + std::to_string(m[0][3]) + ", " +
+                   std::to_string(m[1][3]) + ", " + std::to_string(m[2][3]) + ", " + std::to_string(m[3][3]) +
+                   "), not (0, 0, 0, 1); an instance transform is affine: pass a rotation, scale and translation");
+}
+
 inline void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t,
                                                std::string_view op) const {
   detail::check_matrix(t, [&] {
@@ -237,6 +248,7 @@ inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<con
   // The one conversion of a user's matrix: into Vulkan's rows, kept as they are up to the TLAS.
   std::vector<InstanceTransform> rows(blas.instance_count);
   for (std::uint32_t i = 0; i < blas.instance_count; ++i) {
+    check_affine(geometry, i, object_to_world[i], op);
     rows[i] = instance_transform(object_to_world[i]);
     check_transform(geometry, i, rows[i], op);
   }
@@ -244,17 +256,23 @@ inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<con
   m_transforms_dirty = true;
 }
 
-inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t instance, std::uint8_t mask,
+inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
                                         std::string_view op) {
   const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
+  if (mask > 0xFF) {  // an int would otherwise lose its high bits and could become 0: the instance vanishes
+    throw UsageError(std::string(op) + ": mask 0x" + proceduray::detail::hex(mask) + " of geometry \"" +
+                     m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
+                     " has more than Vulkan's 8 instance-mask bits; use layer bits (Scene::layer_mask), 0..0xFF");
+  }
   if (m_instances[k].mask == mask) return;
-  m_instances[k].mask = mask;
+  m_instances[k].mask = static_cast<std::uint8_t>(mask);
   m_tlas_rebuild = true;
 }
 
 inline void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
                                              std::string_view op) {
   const std::uint32_t k = movable_instance(geometry, instance, op);
+  check_affine(geometry, instance, object_to_world, op);
   const InstanceTransform rows = instance_transform(object_to_world);  // the one conversion
   check_transform(geometry, instance, rows, op);                        // throws
   m_instances[k].transform = rows;

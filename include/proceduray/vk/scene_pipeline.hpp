@@ -11,6 +11,7 @@
 
 #include <proceduray/error.hpp>
 #include <proceduray/scene/plan.hpp>
+#include <proceduray/scene/recursion.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
@@ -70,9 +71,42 @@ inline std::string find_shader(std::span<const std::filesystem::path> dirs, cons
                    "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
 }
 
+/// The recursion depth to build the plan's pipeline with, from what its stages trace
+/// (scene/recursion.hpp): the derived depth when none was declared; the declared one when it
+/// covers the derived depth, or when a cycle leaves the bound to the shaders. Throws UsageError
+/// for a declared depth below the derived one or a cycle with no declared depth, and
+/// DeviceLimitError for a depth past the device's maxRayRecursionDepth, naming the chain of rays.
+inline std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& plan, std::span<const StageTraces> traces) {
+  const PipelinePlan& planned = plan.pipeline();
+  const RecursionNeed need = recursion_need(plan, traces);
+  const std::uint32_t device = ctx.ray_tracing_properties().maxRayRecursionDepth;
+  const std::string declared = std::to_string(planned.max_recursion_depth);
+  if (!need.bounded && !planned.recursion_depth_declared) {
+    throw UsageError("Renderer: the shaders trace in a cycle (" + need.path + "), so rays nest as deep as the shaders "
+                     "let them and no depth can be derived; stop the recursion in the shader (a depth counter in the "
+                     "payload) and declare that bound with Scene::set_max_recursion_depth(n), n <= " +
+                     std::to_string(device) + " on " + ctx.name());
+  }
+  if (need.bounded && planned.recursion_depth_declared && planned.max_recursion_depth < need.depth) {
+    throw UsageError("Renderer: the shaders nest rays " + std::to_string(need.depth) + " deep (" + need.path +
+                     ") but the scene declares max recursion depth " + declared + ", which would crash at the nested "
+                     "trace; call Scene::set_max_recursion_depth(" + std::to_string(need.depth) + ") or more, or leave "
+                     "it undeclared to use the derived depth");
+  }
+  const std::uint32_t depth = need.bounded && !planned.recursion_depth_declared ? need.depth : planned.max_recursion_depth;
+  if (depth > device) {
+    throw DeviceLimitError("Renderer: the pipeline needs recursion depth " + std::to_string(depth) +
+                           (need.bounded ? " (" + need.path + ")" : std::string(" (declared)")) + " but " + ctx.name() +
+                           " allows " + std::to_string(device) + " (maxRayRecursionDepth); trace fewer nested rays "
+                           "(iterate in the raygen instead of recursing in closest-hit shaders)");
+  }
+  return depth;
+}
+
 /// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push
-/// constants. Throws UsageError for a missing shader, or for a non-raygen stage that traces rays at
-/// an undeclared recursion depth; ShaderCompileError naming the file and line.
+/// constants, at the recursion depth pipeline_depth() gives. Throws UsageError for a missing shader
+/// or a depth the shaders exceed, DeviceLimitError past the device's depth, ShaderCompileError
+/// naming the file and line.
 inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
                                                      std::span<const VkDescriptorSetLayout> set_layouts,
                                                      std::uint32_t push_size, RendererOptions options,
@@ -85,6 +119,7 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
   const PipelinePlan& planned = plan.pipeline();
   PipelineTimings t;
   PipelineDesc desc;
+  std::vector<StageTraces> traces;
   auto start = Clock::now();
   for (const PlannedStage& stage : planned.stages) {
     const std::string path = find_shader(options.shader_dirs, stage.shader);
@@ -92,15 +127,15 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
                                                  : stage.declarations) + options.extra_declarations;
     std::vector<std::uint32_t> spirv = compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
                                                      .preamble = std::move(preamble)});
-    check_recursion_depth("Renderer", stage.stage, stage.shader, spirv, planned.max_recursion_depth,
-                          planned.recursion_depth_declared, "call Scene::set_max_recursion_depth(n)");  // throws
+    traces.push_back(trace_info(spirv));
     desc.add_shader(stage.stage, std::move(spirv));
   }
   t.compile_ms = ms_since(start);
+  const std::uint32_t depth = pipeline_depth(ctx, plan, traces);  // throws
   desc.groups = shader_groups(planned);
   desc.set_layouts.assign(set_layouts.begin(), set_layouts.end());
   desc.push_constant_size = push_size;
-  desc.max_recursion_depth = planned.max_recursion_depth;
+  desc.max_recursion_depth = depth;
   PipelineCache cache(ctx, options.pipeline_cache);
   desc.cache = cache.get();
   start = Clock::now();

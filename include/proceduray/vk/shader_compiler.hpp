@@ -10,15 +10,18 @@
 // A failed compile throws ShaderCompileError with glslang's log, the shader's name and line.
 //
 //   proceduray::vk::traces_rays(spirv);   // true when the shader calls traceRayEXT (OpTraceRayKHR)
+//   proceduray::vk::trace_info(spirv);    // which rays (payload locations) it traces, whether it calls callables
 #pragma once
 
 #include <proceduray/error.hpp>
+#include <proceduray/scene/recursion.hpp>
 #include <proceduray/scene/shader_stage.hpp>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +32,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace proceduray::vk {
@@ -75,6 +79,37 @@ inline bool traces_rays(std::span<const std::uint32_t> spirv) noexcept {
     at += word_count;
   }
   return false;
+}
+
+/// What a SPIR-V module traces: the Location of each payload its OpTraceRayKHR instructions pass
+/// (glsl_for declares ray r's payload at location r), and whether it calls executeCallableEXT.
+/// A payload without a Location (or a malformed module) counts as any ray.
+inline StageTraces trace_info(std::span<const std::uint32_t> spirv) {
+  constexpr std::uint32_t op_decorate = 71, op_trace_ray = 4445, op_execute_callable = 4446, location = 30;
+  constexpr std::size_t header_words = 5;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> locations;  // (id, location)
+  std::vector<std::uint32_t> payloads;                             // ids passed to OpTraceRayKHR
+  StageTraces out;
+  for (std::size_t at = header_words; at < spirv.size();) {
+    const std::uint32_t word_count = spirv[at] >> 16, op = spirv[at] & 0xFFFFu;
+    if (word_count == 0 || at + word_count > spirv.size()) {
+      out.any_ray = true;
+      break;
+    }
+    if (op == op_decorate && word_count >= 4 && spirv[at + 2] == location) locations.emplace_back(spirv[at + 1], spirv[at + 3]);
+    if (op == op_trace_ray && word_count >= 12) payloads.push_back(spirv[at + 11]);
+    if (op == op_execute_callable) out.calls = true;
+    at += word_count;
+  }
+  for (std::uint32_t id : payloads) {
+    const auto it = std::find_if(locations.begin(), locations.end(), [&](const auto& l) { return l.first == id; });
+    if (it == locations.end()) {
+      out.any_ray = true;
+    } else if (std::find(out.rays.begin(), out.rays.end(), it->second) == out.rays.end()) {
+      out.rays.push_back(it->second);
+    }
+  }
+  return out;
 }
 
 /// The library's GLSL folder: $PROCEDURAY_SHADER_DIR, else the one known at build time.

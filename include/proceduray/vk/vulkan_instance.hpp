@@ -23,6 +23,7 @@
 #include <cstring>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -58,10 +59,18 @@ class ValidationLog {
 
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   VkDebugUtilsMessageTypeFlagsEXT type,
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
     auto* log = static_cast<ValidationLog*>(self);
     std::string text = data->pMessage ? data->pMessage : "";
+    // The loader's own general warnings (e.g. VK_INSTANCE_LAYERS also naming the validation layer
+    // we enable) say nothing about the application's use of Vulkan: shown, not counted.
+    const bool loader = type == VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT && data->pMessageIdName != nullptr &&
+                        std::string_view(data->pMessageIdName) == "Loader Message";
+    if (loader && severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
+      if (log->m_print) std::fprintf(stderr, "proceduray: Vulkan loader note: %s\n", text.c_str());
+      return VK_FALSE;
+    }
     if (log->m_print) {
       std::fprintf(stderr, "proceduray: validation %s: %s\n",
                    severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning", text.c_str());
