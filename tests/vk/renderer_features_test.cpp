@@ -206,7 +206,7 @@ TEST_CASE("features DynamicTransform moves instances with TLAS refits and no BLA
   const vk::Frame all = r.frame();
   CHECK(all.work == vk::FrameWork{.tlas_updates = 1});
   CHECK(near(pixel(all, where(high)), bytes(red)));
-  const glm::mat4 singular[] = {glm::mat4(0.0f)};
+  const glm::mat4 singular[] = {glm::scale(glm::mat4(1.0f), glm::vec3(0.0f))};  // affine, rank 0
   CHECK_THROWS_WITH_AS(r.renderer.set_transforms(r.scene.ball(0), singular),
                        doctest::Contains("Renderer::set_transforms: geometry \"a\" instance 0 transform is singular"),
                        InvalidGeometryError);

@@ -101,7 +101,7 @@ TEST_CASE("traces_rays on compiled shaders: a closest-hit that calls traceRayEXT
   CHECK_FALSE(traces_rays(calling));
 }
 
-TEST_CASE("trace_info names the payload locations a shader traces with, and callable calls") {
+TEST_CASE("trace_info names the payload variables a shader traces with, and callable calls") {
   const std::string head = "#version 460\n#extension GL_EXT_ray_tracing : require\n"
                            "layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;\n"
                            "struct P { vec4 c; };\n"
@@ -110,20 +110,19 @@ TEST_CASE("trace_info names the payload locations a shader traces with, and call
                            "layout(location = 0) callableDataEXT P call;\n";
   const auto traces_shadow = compile_glsl({.stage = ShaderStage::closest_hit, .name = "t.rchit", .code = head +
       "void main() { traceRayEXT(tlas, 0, 0xFF, 0, 1, 0, vec3(0), 0.0, vec3(0, 1, 0), 1.0, 2); }\n"});
-  const StageTraces a = trace_info(traces_shadow);
-  CHECK(a.rays == std::vector<std::uint32_t>{2});
-  CHECK_FALSE(a.any_ray);
+  const TraceInfo a = trace_info(traces_shadow);
+  CHECK(a.payloads == std::vector<std::string>{"shadow"});
+  CHECK_FALSE(a.unnamed);
   CHECK_FALSE(a.calls);
   const auto both = compile_glsl({.stage = ShaderStage::closest_hit, .name = "t.rchit", .code = head +
       "void main() { traceRayEXT(tlas, 0, 0xFF, 0, 1, 0, vec3(0), 0.0, vec3(0, 1, 0), 1.0, 0);\n"
       "  traceRayEXT(tlas, 0, 0xFF, 0, 1, 0, vec3(0), 0.0, vec3(0, 1, 0), 1.0, 2);\n"
       "  executeCallableEXT(0, 0); }\n"});
-  const StageTraces b = trace_info(both);
-  CHECK(b.rays == std::vector<std::uint32_t>{0, 2});  // the incoming payload's location too
+  const TraceInfo b = trace_info(both);
+  CHECK(b.payloads == std::vector<std::string>{"payload", "shadow"});  // the incoming payload too
   CHECK(b.calls);
   const auto none = compile_glsl({.stage = ShaderStage::closest_hit, .name = "t.rchit", .code = head + "void main() {}\n"});
-  CHECK(trace_info(none).rays.empty());
-  const std::vector<std::uint32_t> truncated(traces_shadow.begin(), traces_shadow.begin() + 9);
-  CHECK(trace_info(std::vector<std::uint32_t>{0x07230203u, 0, 0, 0, 0, 0}).any_ray);  // a zero word count: malformed
-  CHECK_FALSE(trace_info(truncated).calls);
+  CHECK(trace_info(none).payloads.empty());
+  CHECK_FALSE(trace_info(none).unnamed);
+  CHECK(trace_info(std::vector<std::uint32_t>{0x07230203u, 0, 0, 0, 0, 0}).unnamed);  // a zero word count: malformed
 }

@@ -30,16 +30,18 @@
 // by live allocations, mallinfo2().uordblks + hblkhd (arena chunks in use, plus the large blocks
 // malloc maps by themselves), grow only when something is kept, however the arenas are laid out.
 // On glibc 2.36 (Debian 12) mallinfo2() sums every arena, whatever `man mallinfo2` says under
-// BUGS (checked: 10 MB malloc'ed by another thread count). MALLOC_ARENA_MAX=1 puts every thread
+// BUGS (checked: 10 MB malloc'ed in another thread are counted). MALLOC_ARENA_MAX=1 puts every thread
 // in the main arena: the heap number is then the main arena's, as the man page describes it, and
-// RSS stops stepping. uordblks also counts chunks a thread has freed into its tcache (a few KB),
+// RSS did not step in the runs below. uordblks also counts chunks a thread has freed into its tcache (a few KB),
 // hence a limit in percent and a warm-up interval before the baseline.
-// Observed on lavapipe (llvmpipe, LLVM 15, 2 cores), 10000 frames at 64x64, about 1.6 ms a frame:
-//   MALLOC_ARENA_MAX unset  7 arenas (6 of the threads': 1.3 MB and 5 x 132 KB); heap 47.7 MB,
-//                           +1.3 KB (+0.003%) after the warm-up; RSS 116.5 MB, +1 MiB in one
-//                           step at frame 9000 (+0.9%) with the heap unchanged
-//   MALLOC_ARENA_MAX=1      1 arena; heap 47.7 MB, +3.5 KB (+0.007%); RSS 115.2 MB, flat
-//   --validation            heap 55.1 MB, +25 KB in the first 2000 frames (the layer's own
+// Observed on lavapipe (llvmpipe, LLVM 15, 2 cores, shared with builds), 10000 frames at 64x64 in 15-21 s:
+//   MALLOC_ARENA_MAX unset  7 arenas; heap 47.7 MB, +1.0 to +1.3 KB (+0.003%) after the warm-up;
+//                           RSS 116.4 MB, +1 MiB in one step between frames 8000 and 9000 (+0.9%)
+//                           in every run: one lavapipe thread's arena grew from 1.3 to 2.3 MB of
+//                           system memory (malloc_stats) while the bytes in use did not
+//   MALLOC_ARENA_MAX=1      1 arena; heap 47.7 MB, +1.8 to +4.3 KB (+0.004 to +0.009%); RSS
+//                           115.3 MB, flat
+//   --validation            heap 55.1 MB, +25 KB over the first 2000 frames (the layer's own
 //                           tracking), then flat; no validation messages
 #include <proceduray/proceduray.hpp>
 
@@ -72,10 +74,10 @@ PROCEDURAY_STRUCT(Colour, scalar, rgb);
 
 namespace {
 
-constexpr std::uint32_t instances = 16;     // one-box instances, left half of the view
-constexpr std::size_t boxes = 256;          // the DynamicGeometry boxes, top right
-constexpr std::uint32_t grid = 8;           // the mesh: grid x grid quads, bottom right
-constexpr int recount_every = 20;           // frames between changes of the box count (BLAS rebuilds)
+constexpr std::uint32_t instances = 16;  // one-box instances, left half of the view
+constexpr std::size_t boxes = 256;       // the DynamicGeometry boxes, top right
+constexpr std::uint32_t grid = 8;        // the mesh: grid x grid quads, bottom right
+constexpr int recount_every = 20;        // frames between changes of the box count (BLAS rebuilds)
 
 /// Bytes held by live allocations: the arenas' in-use chunks and malloc's own mmaps.
 std::size_t heap_bytes() {
@@ -140,6 +142,13 @@ bool one_colour(const std::vector<std::uint8_t>& rgba) {
   return true;
 }
 
+void add(pr::vk::FrameWork& to, const pr::vk::FrameWork& work) {
+  to.blas_builds += work.blas_builds;
+  to.blas_refits += work.blas_refits;
+  to.tlas_builds += work.tlas_builds;
+  to.tlas_updates += work.tlas_updates;
+}
+
 struct Options {
   std::uint32_t frames = 10000;
   std::string size = "64x64";
@@ -159,19 +168,20 @@ int run(const Options& o, std::uint32_t width, std::uint32_t height) {
   const auto box = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
                                                 .intersection = "bench.rint"});
   const auto triangle = scene.add_hit_group("triangle", {.closest_hit = "bench.rchit"});
+  const auto with = [](pr::GeometryDesc d, pr::UpdatePolicy update) {
+    d.update = update;
+    return d;
+  };
   std::vector<pr::InstanceTransform> placed;
   for (std::uint32_t i = 0; i < instances; ++i) placed.push_back(pr::instance_transform(place(i, 0.0f)));
-  pr::GeometryDesc moving = pr::GeometryDesc::procedural({pr::Aabb{}}, placed);
-  moving.update = pr::UpdatePolicy::DynamicTransform;
-  const pr::GeometryId moved = scene.add_geometry("instances", moving);
+  const pr::GeometryId movers = scene.add_geometry(
+      "instances", with(pr::GeometryDesc::procedural({pr::Aabb{}}, placed), pr::UpdatePolicy::DynamicTransform));
   std::vector<pr::Aabb> next;
   boxes_at(next, boxes, 0.0f);
-  pr::GeometryDesc cloud = pr::GeometryDesc::procedural(next);
-  cloud.update = pr::UpdatePolicy::DynamicGeometry;
-  const pr::GeometryId cloud_id = scene.add_geometry("boxes", cloud);
-  pr::GeometryDesc sheet = pr::GeometryDesc::triangles(mesh());
-  sheet.update = pr::UpdatePolicy::DynamicGeometry;
-  const pr::GeometryId sheet_id = scene.add_geometry("sheet", sheet);
+  const pr::GeometryId cloud =
+      scene.add_geometry("boxes", with(pr::GeometryDesc::procedural(next), pr::UpdatePolicy::DynamicGeometry));
+  const pr::GeometryId sheet =
+      scene.add_geometry("sheet", with(pr::GeometryDesc::triangles(mesh()), pr::UpdatePolicy::DynamicGeometry));
   scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                             {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
   scene.add_raygen("bench.rgen");
@@ -203,49 +213,50 @@ int run(const Options& o, std::uint32_t width, std::uint32_t height) {
       case 0:
         if (f % 8 == 0) {
           for (std::uint32_t i = 0; i < instances; ++i) transforms[i] = place(i, t);
-          renderer.set_transforms(moved, transforms);
+          renderer.set_transforms(movers, transforms);
         } else {
-          renderer.set_transform(moved, (f / 8) % instances, place((f / 8) % instances, t));
+          renderer.set_transform(movers, (f / 8) % instances, place((f / 8) % instances, t));
         }
         break;
       case 1:
         boxes_at(next, (f / recount_every) % 2 == 0 ? boxes : boxes - 1, 0.05f * std::sin(t));
-        renderer.set_aabbs(cloud_id, next);
+        renderer.set_aabbs(cloud, next);
         break;
       case 2:
         wave(vertices, t);
-        renderer.set_vertices(sheet_id, vertices);
+        renderer.set_vertices(sheet, vertices);
         break;
       default: {
         const std::uint32_t i = (f / 8) % instances;  // hidden at one mask frame, shown at the next
         masks[i] = masks[i] == 0xFF ? 0x00 : 0xFF;
-        renderer.set_mask(moved, i, masks[i]);
+        renderer.set_mask(movers, i, masks[i]);
       }
     }
     const bool check = f % o.every == 0;
-    const pr::vk::Frame frame = renderer.render(width, height, check);
-    sum.blas_builds += frame.work.blas_builds;
-    sum.blas_refits += frame.work.blas_refits;
-    sum.tlas_builds += frame.work.tlas_builds;
-    sum.tlas_updates += frame.work.tlas_updates;
+    bool blank = false;
+    {  // the frame and its pixels are freed before the heap is sampled below
+      const pr::vk::Frame frame = renderer.render(width, height, check);
+      add(sum, frame.work);
+      add(total, frame.work);
+      blank = check && one_colour(frame.rgba);
+    }
     if (!check) continue;
-    if (one_colour(frame.rgba)) {
+    if (blank) {
       std::fprintf(stderr, "bench_soak: frame %u is all one colour: the animated scene renders nothing\n", f);
       return 1;
     }
     const auto now = std::chrono::steady_clock::now();
     const double ms = std::chrono::duration<double, std::milli>(now - interval).count() / o.every;
     interval = now;
-    last_heap = heap_bytes();  // after the readback's vector is freed: only what stays counts
+    last_heap = heap_bytes();
     last_rss = rss_bytes();
-    if (f == o.every) first_heap = last_heap, first_rss = last_rss;
+    if (f == o.every) {  // the end of the warm-up: the baseline
+      first_heap = last_heap;
+      first_rss = last_rss;
+    }
     std::printf("%8u %12zu %12zu %9.3f   %u, %u, %u, %u\n", f, last_heap, last_rss, ms, sum.blas_builds,
                 sum.blas_refits, sum.tlas_builds, sum.tlas_updates);
     std::fflush(stdout);  // a line as it comes, for runs watched or cut short
-    total.blas_builds += sum.blas_builds;
-    total.blas_refits += sum.blas_refits;
-    total.tlas_builds += sum.tlas_builds;
-    total.tlas_updates += sum.tlas_updates;
     sum = {};
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

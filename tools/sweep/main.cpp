@@ -316,7 +316,9 @@ std::vector<acc::Label> labels(const Options& o, const std::string& device, unsi
 }
 
 int run(const Options& o) {
-  const auto [width, height] = parse_pair(o.size, 'x', "--size", "WxH with positive numbers, e.g. 256x256");
+  // Named, not a structured binding: clang 14 cannot capture one in the lambdas below.
+  const auto size = parse_pair(o.size, 'x', "--size", "WxH with positive numbers, e.g. 256x256");
+  const auto width = size.first, height = size.second;
   if (width == 0 || height == 0) throw BadInput("--size '" + o.size + "' is not WxH with positive numbers, e.g. 256x256");
   const auto [shard, shards] = parse_pair(o.shard, '/', "--shard", "i/n with 0 <= i < n, e.g. 0/4");
   if (shards == 0 || shard >= shards) throw BadInput("--shard '" + o.shard + "' is not i/n with 0 <= i < n, e.g. 0/4");

@@ -2,7 +2,7 @@
 //
 //   proceduray::glsl_identifier("primary-2");     // "primary_2": ids become GLSL names
 //   auto names = proceduray::ray_glsl_names("shadow");   // shadow, shadow_ray, shadow_flags, shadow_mask
-//   proceduray::check_glsl_names("Scene::add_ray", existing, names);   // throws on a clash or a reserved word
+//   proceduray::check_glsl_names("Scene::add_ray", scene.glsl_names(), names);   // throws on a clash or a reserved word
 //
 // glsl_for declares a ray's payload under the ray's id, `<ray>_ray`/`_flags`/`_mask`,
 // `layer_<layer>`, `<callable>_callable`/`_call`, and each named binding and push constant block.

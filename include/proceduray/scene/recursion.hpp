@@ -1,7 +1,7 @@
 // How deep traceRayEXT calls nest, derived from which rays each shader stage traces: the depth a
 // pipeline must be built with, or the cycle that makes it depend on the shaders alone.
 //
-//   std::vector<proceduray::StageTraces> traces = ...;   // per planned stage (vk: trace_info(spirv))
+//   std::vector<proceduray::StageTraces> traces(plan.pipeline().stages.size());   // per stage (vk: trace_info(spirv))
 //   proceduray::RecursionNeed need = proceduray::recursion_need(plan, traces);
 //   need.bounded;   // false: a stage's rays reach that stage again (reflections): no static bound
 //   need.depth;     // when bounded: the deepest nesting, 1 = raygen traces only

@@ -119,14 +119,18 @@ constexpr bool size_ok(const TypeOps& s) {
 /// PROCEDURAY_DEFINE_STRUCT (define_struct.hpp) registers (type, name) pairs through the same checks.
 #define PROCEDURAY_DETAIL_REGISTER(Type, Rule, FIELD, CHECK, ...)                                              \
   struct ProcedurayFields_##Type;                                                                              \
-  inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>);                       \
+  [[maybe_unused]] inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>);      \
   struct ProcedurayFields_##Type {                                                                             \
     static constexpr ::std::string_view glsl_name = #Type;                                                     \
     static constexpr ::proceduray::LayoutRule rule = ::proceduray::LayoutRule::Rule;                           \
     static constexpr ::proceduray::Field fields[] = {PROCEDURAY_DETAIL_FOR_EACH(FIELD, Type, Rule, __VA_ARGS__)}; \
   };                                                                                                           \
-  /* defined, so a registration inside an unnamed namespace is no unused-function warning */                   \
-  inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>) { return {}; }         \
+  /* defined and [[maybe_unused]]: a registration inside an unnamed namespace is no unused-function */        \
+  /* warning (GCC) and no unneeded-internal-declaration warning (clang, which sees it used only in */         \
+  /* unevaluated operands) */                                                                                  \
+  [[maybe_unused]] inline ProcedurayFields_##Type proceduray_fields(::proceduray::detail::TypeTag<Type>) {      \
+    return {};                                                                                                 \
+  }                                                                                                            \
   static_assert(::proceduray::detail::PlainStruct<Type>,                                                       \
                 #Type ": a GPU-visible struct must be standard-layout and trivially copyable");                \
   static_assert(!::proceduray::is_glsl_reserved(#Type),                                                        \

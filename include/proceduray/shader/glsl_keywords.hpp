@@ -14,7 +14,7 @@ namespace proceduray {
 /// GLSL 4.60 keywords, reserved words, basic type names (incl. explicit-arithmetic, texture, subpass,
 /// memory-model, mesh, ray-tracing and SPIR-V-intrinsics extensions, as glslang's scanner knows them)
 /// and `main`, sorted so lookups are a binary search. tests/vk/glsl_keywords_glslang_test.cpp
-/// checks that every word of these families that glslang rejects as a name is here.
+/// checks that every word of these families that glslang refuses as a name is here.
 inline constexpr std::array<std::string_view, 435> glsl_reserved_words = {{
     "accelerationStructureEXT", "accelerationStructureNV", "active", "asm", "atomic_uint", "attachmentEXT",
     "attribute", "bool", "break", "buffer", "bvec2", "bvec3", "bvec4", "callableDataEXT", "callableDataInEXT",

@@ -11,11 +11,13 @@
 
 #include <proceduray/error.hpp>
 #include <proceduray/scene/plan.hpp>
+#include <proceduray/scene/glsl_names.hpp>
 #include <proceduray/scene/recursion.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -69,6 +71,33 @@ inline std::string find_shader(std::span<const std::filesystem::path> dirs, cons
   }
   throw UsageError("Renderer: shader '" + name + "' is not in any shader folder (searched" + tried +
                    "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
+}
+
+/// What planned stage `s` traces, from trace_info(its SPIR-V): a payload named like a ray's
+/// id (glsl_for's outgoing payloads) is that ray; `payload` (the incoming one) is each ray whose
+/// records run the stage; any other name, or none, may be any ray.
+inline StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, const TraceInfo& info) {
+  StageTraces out{.any_ray = info.unnamed, .calls = info.calls};
+  const PipelinePlan& planned = plan.pipeline();
+  auto add = [&](std::uint32_t r) {
+    if (std::find(out.rays.begin(), out.rays.end(), r) == out.rays.end()) out.rays.push_back(r);
+  };
+  for (const std::string& name : info.payloads) {
+    bool known = false;
+    if (name == "payload") {
+      for (const SbtRecord& rec : plan.records(SbtRegionKind::miss)) {
+        if (rec.group != no_index && planned.groups[rec.group].general == s) add(rec.ray), known = true;
+      }
+      for (const SbtRecord& rec : plan.records(SbtRegionKind::hit)) {
+        if (rec.group != no_index && planned.groups[rec.group].closest_hit == s) add(rec.ray), known = true;
+      }
+    }
+    for (std::uint32_t r = 0; r < plan.ray_count(); ++r) {
+      if (glsl_identifier(plan.ray_name(r)) == name) add(r), known = true;
+    }
+    out.any_ray |= !known;
+  }
+  return out;
 }
 
 /// The recursion depth to build the plan's pipeline with, from what its stages trace
@@ -127,7 +156,7 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
                                                  : stage.declarations) + options.extra_declarations;
     std::vector<std::uint32_t> spirv = compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
                                                      .preamble = std::move(preamble)});
-    traces.push_back(trace_info(spirv));
+    traces.push_back(stage_traces(plan, static_cast<std::uint32_t>(traces.size()), trace_info(spirv)));
     desc.add_shader(stage.stage, std::move(spirv));
   }
   t.compile_ms = ms_since(start);

@@ -10,11 +10,10 @@
 // A failed compile throws ShaderCompileError with glslang's log, the shader's name and line.
 //
 //   proceduray::vk::traces_rays(spirv);   // true when the shader calls traceRayEXT (OpTraceRayKHR)
-//   proceduray::vk::trace_info(spirv);    // which rays (payload locations) it traces, whether it calls callables
+//   proceduray::vk::trace_info(spirv);    // the payload variables it traces with, whether it calls callables
 #pragma once
 
 #include <proceduray/error.hpp>
-#include <proceduray/scene/recursion.hpp>
 #include <proceduray/scene/shader_stage.hpp>
 
 #include <glslang/Public/ResourceLimits.h>
@@ -81,32 +80,50 @@ inline bool traces_rays(std::span<const std::uint32_t> spirv) noexcept {
   return false;
 }
 
-/// What a SPIR-V module traces: the Location of each payload its OpTraceRayKHR instructions pass
-/// (glsl_for declares ray r's payload at location r), and whether it calls executeCallableEXT.
-/// A payload without a Location (or a malformed module) counts as any ray.
-inline StageTraces trace_info(std::span<const std::uint32_t> spirv) {
-  constexpr std::uint32_t op_decorate = 71, op_trace_ray = 4445, op_execute_callable = 4446, location = 30;
+/// What a SPIR-V module traces and calls, before the payloads are matched to rays.
+struct TraceInfo {
+  std::vector<std::string> payloads;  ///< debug names of the payload variables OpTraceRayKHR passes
+  bool unnamed = false;               ///< a payload without a name (or a malformed module)
+  bool calls = false;                 ///< calls executeCallableEXT (OpExecuteCallableKHR)
+};
+
+/// The payload variables a SPIR-V module's traceRayEXT calls pass, by their OpName. SPIR-V has no
+/// Location on ray payloads (GLSL's location only picks the variable), so the name is what ties a
+/// trace to a ray: glsl_for declares ray r's outgoing payload under the ray's id and the incoming
+/// one as `payload` (scene_pipeline.hpp maps them).
+inline TraceInfo trace_info(std::span<const std::uint32_t> spirv) {
+  constexpr std::uint32_t op_name = 5, op_trace_ray = 4445, op_execute_callable = 4446;
   constexpr std::size_t header_words = 5;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> locations;  // (id, location)
-  std::vector<std::uint32_t> payloads;                             // ids passed to OpTraceRayKHR
-  StageTraces out;
+  std::vector<std::pair<std::uint32_t, std::string>> names;  // (id, OpName)
+  std::vector<std::uint32_t> payloads;                       // ids passed to OpTraceRayKHR
+  TraceInfo out;
   for (std::size_t at = header_words; at < spirv.size();) {
     const std::uint32_t word_count = spirv[at] >> 16, op = spirv[at] & 0xFFFFu;
     if (word_count == 0 || at + word_count > spirv.size()) {
-      out.any_ray = true;
+      out.unnamed = true;
       break;
     }
-    if (op == op_decorate && word_count >= 4 && spirv[at + 2] == location) locations.emplace_back(spirv[at + 1], spirv[at + 3]);
+    if (op == op_name && word_count >= 3) {
+      std::string name;
+      for (std::size_t w = at + 2; w < at + word_count; ++w) {
+        for (int b = 0; b < 4; ++b) {
+          const char c = static_cast<char>((spirv[w] >> (8 * b)) & 0xFFu);
+          if (c == '\0') break;
+          name += c;
+        }
+      }
+      names.emplace_back(spirv[at + 1], std::move(name));
+    }
     if (op == op_trace_ray && word_count >= 12) payloads.push_back(spirv[at + 11]);
     if (op == op_execute_callable) out.calls = true;
     at += word_count;
   }
   for (std::uint32_t id : payloads) {
-    const auto it = std::find_if(locations.begin(), locations.end(), [&](const auto& l) { return l.first == id; });
-    if (it == locations.end()) {
-      out.any_ray = true;
-    } else if (std::find(out.rays.begin(), out.rays.end(), it->second) == out.rays.end()) {
-      out.rays.push_back(it->second);
+    const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == id; });
+    if (it == names.end() || it->second.empty()) {
+      out.unnamed = true;
+    } else if (std::find(out.payloads.begin(), out.payloads.end(), it->second) == out.payloads.end()) {
+      out.payloads.push_back(it->second);
     }
   }
   return out;

@@ -1,0 +1,6 @@
+#include "proceduray/scene/scene.hpp"
+
+// @declarations
+void usage(const proceduray::Scene& scene) {
+  // @statements
+}
