@@ -219,3 +219,23 @@ TEST_CASE("bad input: VK_INSTANCE_LAYERS naming the validation layer the context
   vk::Context ctx{{.validation = true}};
   CHECK(ctx.validation_messages().empty());
 }
+
+TEST_CASE("bad input: changing the scene under a live renderer changes nothing it draws") {
+  // The renderer keeps the Plan it was compiled from (a value) and read the scene's geometry only
+  // while it was built: later edits cannot make it read past what it built.
+  TestContext t;
+  RendererScene s;
+  Scene scene = s.table(t.ctx);
+  vk::Renderer r(t.ctx, scene, RendererScene::options());
+  renderer_scene::prepare(r, width, height);
+  const vk::Frame before = r.render(width, height);
+  scene.add_raygen("other.rgen");
+  scene.set_max_recursion_depth(4);
+  const GeometryId extra = scene.add_geometry("extra", GeometryDesc::procedural({Aabb{}}));
+  scene.add_hit(scene.ray_id("primary"), scene.hit_group_id("ball"), extra);
+  const vk::Frame after = r.render(width, height);
+  CHECK(after.rgba == before.rgba);
+  CHECK(r.plan().records(SbtRegionKind::raygen).size() == 1);
+  CHECK(r.plan().instances().size() == 3);
+  CHECK_THROWS_AS(r.set_mask(extra, 0, 0xFF), UnknownIdError);  // not in what the renderer built
+}

@@ -126,3 +126,18 @@ TEST_CASE("trace_info names the payload variables a shader traces with, and call
   CHECK_FALSE(trace_info(none).unnamed);
   CHECK(trace_info(std::vector<std::uint32_t>{0x07230203u, 0, 0, 0, 0, 0}).unnamed);  // a zero word count: malformed
 }
+
+TEST_CASE("compile_glsl blames an error in the preamble on the preamble, not on a line of the file") {
+  // glslang numbers preamble lines as string -1; the old message said "line 4" of a 5-line file.
+  try {
+    compile_glsl({.stage = ShaderStage::miss, .name = "sky.rmiss",
+                  .code = "#version 460\n#extension GL_EXT_ray_tracing : require\nvoid main() {\n}\n",
+                  .preamble = "const uint a_ray = 0u;\nconst uint b = 1u;\nconst uint a_ray = 2u;\n"});
+    FAIL("the redefinition compiled");
+  } catch (const ShaderCompileError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("shader 'sky.rmiss' failed to compile in its preamble (the generated declarations, then the extra "
+                    "ones; its line 3: `const uint a_ray = 2u;`)") != std::string::npos);
+    CHECK(e.line() == 0);
+  }
+}

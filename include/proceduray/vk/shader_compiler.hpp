@@ -50,9 +50,11 @@ struct ShaderSource {
 /// A shader that did not compile: what() holds the name, the first error line and glslang's log.
 class ShaderCompileError : public UsageError {
  public:
-  ShaderCompileError(std::string name, int line, std::string log)
+  /// `preamble`: where in the preamble the error is, when it is there (line is then 0).
+  ShaderCompileError(std::string name, int line, std::string log, std::string preamble = {})
       : UsageError("compile_glsl: shader '" + name + "' failed to compile" +
-                         (line > 0 ? " at line " + std::to_string(line) : std::string()) + ":\n" + log),
+                   (line > 0 ? " at line " + std::to_string(line) : std::string()) +
+                   (preamble.empty() ? std::string() : " in its preamble (" + preamble + ")") + ":\n" + log),
         m_name(std::move(name)), m_line(line), m_log(std::move(log)) {}
   const std::string& name() const noexcept { return m_name; }
   /// First line glslang reported an error on; 0 when it named none.
@@ -235,6 +237,20 @@ inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source) {
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
     std::string log = shader.getInfoLog();
+    // glslang numbers the preamble as string -1: an error there is in generated (or extra)
+    // declarations, not at that line of the user's file, which may not even have it.
+    std::smatch m;
+    static const std::regex in_preamble(R"(ERROR: -1:(\d+):)");
+    if (std::regex_search(log, m, in_preamble)) {
+      const int line = std::stoi(m[1].str());
+      std::istringstream lines(preamble);
+      std::string text;
+      for (int i = 0; i < line && std::getline(lines, text); ++i) {
+      }
+      throw ShaderCompileError(source.name, 0, log,
+                               "the generated declarations, then the extra ones; its line " + std::to_string(line - 1) +
+                                   ": `" + text + "`");
+    }
     throw ShaderCompileError(source.name, detail::first_error_line(log), log);
   }
   glslang::TProgram program;
