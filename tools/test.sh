@@ -40,7 +40,7 @@ fi
 
 if want meson; then
   step "Meson build (clang) and tests"
-  if [ -d "$out/meson" ] && ! grep -q clang "$out/meson/meson-info/intro-compilers.json" 2>/dev/null; then
+  if [ -d "$out/meson" ] && ! grep -q "clang++" "$out/meson/build.ninja" 2>/dev/null; then
     rm -rf "$out/meson"  # an older build by another compiler
   fi
   if [ -d "$out/meson" ]; then
@@ -48,7 +48,7 @@ if want meson; then
   else
     CC=clang CXX=clang++ meson setup "$out/meson" "$root" -Doptimization=2 -Ddebug=false >/dev/null
   fi
-  grep -q "clang" "$out/meson/meson-info/intro-compilers.json" || { echo "the Meson build is not using clang"; exit 1; }
+  grep -q "clang++" "$out/meson/build.ninja" || { echo "the Meson build is not using clang++"; exit 1; }
   meson compile -C "$out/meson" -j "$jobs"
   meson test -C "$out/meson" --num-processes "$jobs" --print-errorlogs
 fi

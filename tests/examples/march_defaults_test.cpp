@@ -22,7 +22,9 @@ TEST_CASE("march defaults - each primitive's default is measured and on its fron
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
     defaults.emplace_back(std::string(d3d12::primitive_names[k]), d3d12::capabilities(kind).defaults);
   }
-  for (const auto& [name, knobs] : defaults) {
+  for (const auto& entry : defaults) {  // not a structured binding: clang 14 cannot capture one in CAPTURE
+    const std::string& name = entry.first;
+    const MarchKnobs& knobs = entry.second;
     CAPTURE(name);
     CAPTURE(describe(knobs));
     const CalibrationRow* own = nullptr;

@@ -272,3 +272,25 @@ TEST_CASE("renderer with unbound geometry fails at build naming the missing pair
   RendererScene s;
   CHECK_THROWS_WITH_AS(compile(s.table(t.ctx, false)), doctest::Contains("ball"), SceneError);
 }
+
+TEST_CASE("renderer a ray without a miss shader leaves a missed payload as the raygen set it") {
+  // Defined behaviour (README, "Errors you may see"): the miss record is null, so a miss runs no
+  // shader; the raygen must initialise the payload before traceRayEXT.
+  TestContext t;
+  namespace rs = renderer_scene;
+  Scene scene;
+  const auto primary = scene.add_ray<rs::Colour>("primary", {});
+  const auto floor_group = scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
+  const TriangleMesh quad{{{-6, -1, -6}, {6, -1, -6}, {6, -1, 6}, {-6, -1, 6}}, {0, 2, 1, 0, 3, 2}};
+  const GeometryId floor = scene.add_geometry("floor", GeometryDesc::triangles(quad));
+  scene.set_global_signature({.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                           {BindingKind::storage_image, 1, 0, 1, "image"}, rs::constants_slot, rs::tints_slot}});
+  const auto paint = scene.add_local_signature<rs::Paint>("paint");
+  scene.add_raygen("init.rgen");
+  scene.add_hit(primary, floor_group, paint, rs::Paint{rs::floor_colour}, floor);
+  vk::Renderer renderer(t.ctx, scene, RendererScene::options());
+  rs::prepare(renderer, width, height);
+  const vk::Frame f = renderer.render(width, height);
+  CHECK(near(pixel(f, {0, 0}), bytes(glm::vec4(1, 0, 1, 1))));  // the sky: missed, payload as initialised
+  CHECK(near(pixel(f, where({0.0f, -1.0f, 2.5f})), bytes(rs::floor_colour)));
+}
