@@ -1,10 +1,12 @@
 // An entry whose arguments type differs from its local signature's root arguments type does not compile.
-// expect: no matching function for call to
-// expect: proceduray::Scene::add_hit(
-// expect: required for the satisfaction of
-// expect: ArgumentsMatchSignature<Given, Arguments>
-// expect: with Given = demo::TriangleArgs
-// expect: Arguments = demo::ProceduralArgs]
+// expect-gcc: no matching function for call to
+// expect-gcc: proceduray::Scene::add_hit(
+// expect-gcc: required for the satisfaction of
+// expect-gcc: ArgumentsMatchSignature<Given, Arguments>
+// expect-gcc: with Given = demo::TriangleArgs
+// expect-gcc: Arguments = demo::ProceduralArgs]
+// expect-clang: no matching member function for call to 'add_hit'
+// expect-clang: because 'ArgumentsMatchSignature<demo::TriangleArgs, demo::ProceduralArgs>' evaluated to false
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 

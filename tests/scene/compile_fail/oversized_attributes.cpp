@@ -1,7 +1,8 @@
 // A hit group's attributes larger than the 32 bytes every device guarantees do not compile.
 // expect: static assertion failed: Scene::add_hit_group: the attribute type
 // expect: at most 32 bytes
-// expect: with Attributes = demo::WideHit
+// expect-gcc: with Attributes = demo::WideHit
+// expect-clang: 'proceduray::Entities::add_hit_group<demo::WideHit>' requested here
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 

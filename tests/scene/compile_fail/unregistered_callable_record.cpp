@@ -1,9 +1,11 @@
 // A callable record's data must be registered root arguments, like every record's.
-// expect: no matching function for call to
-// expect: proceduray::Scene::add_callable_record(
-// expect: required for the satisfaction of
-// expect: RootArgumentsData<Arguments>
-// expect: [with Arguments = demo::TintArgs]
+// expect-gcc: no matching function for call to
+// expect-gcc: proceduray::Scene::add_callable_record(
+// expect-gcc: required for the satisfaction of
+// expect-gcc: RootArgumentsData<Arguments>
+// expect-gcc: [with Arguments = demo::TintArgs]
+// expect-clang: no matching member function for call to 'add_callable_record'
+// expect-clang: because 'demo::TintArgs' does not satisfy 'RootArgumentsData'
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 

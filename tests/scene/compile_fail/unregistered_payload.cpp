@@ -1,6 +1,8 @@
 // A ray's payload must come from the shader layer: a struct without PROCEDURAY_STRUCT is no payload.
-// expect: PayloadData<Payload>
-// expect: [with Payload = demo::Colour]
+// expect-gcc: PayloadData<Payload>
+// expect-gcc: [with Payload = demo::Colour]
+// expect-clang: because 'demo::Colour' does not satisfy 'PayloadData'
+// expect-clang: because 'demo::Colour' does not satisfy 'RegisteredStruct'
 #include <proceduray/scene/scene.hpp>
 
 namespace demo {

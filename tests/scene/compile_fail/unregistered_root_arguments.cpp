@@ -1,8 +1,10 @@
 // Root arguments must come from the shader layer: a struct without PROCEDURAY_STRUCT is not root arguments.
-// expect: required for the satisfaction of
-// expect: RootArgumentsData<Arguments>
-// expect: [with Arguments = demo::Material]
-// expect: proceduray_fields(proceduray::detail::TypeTag<T>{})
+// expect-gcc: required for the satisfaction of
+// expect-gcc: RootArgumentsData<Arguments>
+// expect-gcc: [with Arguments = demo::Material]
+// expect-gcc: proceduray_fields(proceduray::detail::TypeTag<T>{})
+// expect-clang: because 'demo::Material' does not satisfy 'RootArgumentsData'
+// expect-clang: because 'demo::Material' does not satisfy 'RegisteredStruct'
 #include <proceduray/scene/scene.hpp>
 
 #include <cstdint>

@@ -1,6 +1,7 @@
 // A payload type is not root arguments: using it as RootArguments does not compile.
 // expect: static assertion failed: ShaderInterface::root_arguments: the type is not in this interface's RootArguments category
-// expect: [with T = demo::Radiance
+// expect-gcc: [with T = demo::Radiance
+// expect-clang: 'RootArguments<demo::Record>::contains<demo::Radiance>'
 #include <proceduray/shader/categories.hpp>
 #include <proceduray/shader/field_list.hpp>
 

@@ -1,7 +1,8 @@
 // Push constants of another type than the slot's do not compile.
-// expect: cannot convert
+// expect-gcc: cannot convert
 // expect: demo::Camera
 // expect: demo::Knobs
+// expect-clang: no known conversion from 'demo::Camera' to 'const std::type_identity_t<Knobs>' (aka 'const demo::Knobs')
 #include <proceduray/shader/field_list.hpp>
 #include <proceduray/vk/renderer.hpp>
 

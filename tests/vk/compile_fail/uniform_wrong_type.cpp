@@ -1,7 +1,8 @@
 // Writing a value of another type to a typed uniform does not compile.
-// expect: cannot convert
+// expect-gcc: cannot convert
 // expect: demo::Camera
 // expect: demo::Constants
+// expect-clang: no known conversion from 'demo::Camera' to 'const std::type_identity_t<Constants>' (aka 'const demo::Constants')
 #include <proceduray/shader/field_list.hpp>
 #include <proceduray/vk/renderer.hpp>
 
