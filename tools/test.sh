@@ -6,8 +6,8 @@
 #      every test compiled and run by both compilers
 #   4. CTest
 #   5. the CMake and Meson test lists compared (tests/list_tests.py compare)
-#   6. sanitizers: an ASan+UBSan (GCC) build of the non-Vulkan tests and of the Vulkan layer's tests,
-#      run with leak detection on (tools/sanitizers/lsan.supp: the Vulkan driver's and loader's own)
+#   6. sanitizers: an ASan+UBSan (GCC) build of the non-Vulkan tests and of a Vulkan subset
+#      (proceduray_vk_sanitize_tests), run with leak detection on and no suppressions
 # PROCEDURAY_TEST_STEPS="cmake meson ctest sanitize" runs a subset (default: all).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -63,20 +63,26 @@ fi
 
 if want sanitize; then
   step "ASan + UBSan build"
-  flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
-  cmake -S "$root" -B "$out/sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" \
+  # vptr is left out: its checks need the typeinfo of every polymorphic class, and Debian builds
+  # glslang's static libraries without RTTI (undefined `typeinfo for glslang::TShader`).
+  # GCC 12 also warns maybe-uninitialized inside libstdc++'s <regex> when ASan instruments it (a
+  # false positive, not in our code), so that one warning is not an error here.
+  flags="-fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+  flags+=" -Wno-maybe-uninitialized"
+  # -O0: a third of -O1's compile time under ASan; these tests are fast either way.
+  cmake -S "$root" -B "$out/sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O0 -g1" \
     "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
-  layers=(shader scene march accuracy image vk)
-  # shellcheck disable=SC2046
-  cmake --build "$out/sanitize" -j"$jobs" --target $(printf 'proceduray_%s_tests ' "${layers[@]}")
+  binaries=(proceduray_shader_tests proceduray_scene_tests proceduray_march_tests proceduray_accuracy_tests
+            proceduray_image_tests proceduray_vk_sanitize_tests)
+  cmake --build "$out/sanitize" -j"$jobs" --target "${binaries[@]}"
 
   step "ASan + UBSan tests"
-  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1"
+  export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-  export LSAN_OPTIONS="suppressions=$root/tools/sanitizers/lsan.supp:print_suppressions=0"
-  for layer in "${layers[@]}"; do
-    echo "-- $layer"
-    (cd "$out/sanitize/tests" && "./proceduray_${layer}_tests" --minimal)
+  export PROCEDURAY_TEST_OUTPUT="$out/sanitize/test-output"
+  for binary in "${binaries[@]}"; do
+    echo "-- $binary"
+    (cd "$out/sanitize/tests" && "./$binary" --minimal)
   done
 fi
 step "done"

@@ -1,12 +1,14 @@
 // The ray-tracing pipeline of a compiled scene: each planned stage's GLSL read from the shader
-// folders and compiled after its declarations, the planned groups, the plan's recursion depth,
-// and a disk pipeline cache when asked.
+// folders and compiled after its declarations, the planned groups, a recursion depth derived
+// from what the stages trace (or the declared one, checked against it), and a disk pipeline
+// cache when asked.
 //
 //   proceduray::vk::PipelineTimings timings;
 //   std::unique_ptr<proceduray::vk::Pipeline> pipeline = proceduray::vk::make_scene_pipeline(
 //       ctx, plan, bindings.layouts(), bindings.push_size(), {.shader_dirs = {"shaders"}}, &timings);
 //   timings.compile_ms;   // glslang, all stages
 //   std::vector<proceduray::vk::ShaderGroup> groups = proceduray::vk::shader_groups(plan.pipeline());   // for a PipelineDesc
+//   std::uint32_t depth = proceduray::vk::pipeline_depth(ctx, plan, traces);   // traces: stage_traces() per stage
 #pragma once
 
 #include <proceduray/error.hpp>
@@ -84,16 +86,20 @@ inline StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, c
   };
   for (const std::string& name : info.payloads) {
     bool known = false;
+    const auto take = [&](std::uint32_t r) {
+      add(r);
+      known = true;
+    };
     if (name == "payload") {
       for (const SbtRecord& rec : plan.records(SbtRegionKind::miss)) {
-        if (rec.group != no_index && planned.groups[rec.group].general == s) add(rec.ray), known = true;
+        if (rec.group != no_index && planned.groups[rec.group].general == s) take(rec.ray);
       }
       for (const SbtRecord& rec : plan.records(SbtRegionKind::hit)) {
-        if (rec.group != no_index && planned.groups[rec.group].closest_hit == s) add(rec.ray), known = true;
+        if (rec.group != no_index && planned.groups[rec.group].closest_hit == s) take(rec.ray);
       }
     }
     for (std::uint32_t r = 0; r < plan.ray_count(); ++r) {
-      if (glsl_identifier(plan.ray_name(r)) == name) add(r), known = true;
+      if (glsl_identifier(plan.ray_name(r)) == name) take(r);
     }
     out.any_ray |= !known;
   }

@@ -2,6 +2,7 @@
 using namespace doc_vk;
 
 // @declarations
-void usage(const proceduray::vk::Context& ctx, const proceduray::Plan& plan, const proceduray::vk::Bindings& bindings) {
+void usage(const proceduray::vk::Context& ctx, const proceduray::Plan& plan, const proceduray::vk::Bindings& bindings,
+           const std::vector<proceduray::StageTraces>& traces) {
   // @statements
 }
