@@ -352,3 +352,26 @@ TEST_CASE("bad input: an unknown march knob") {
   MarchKnobs k;
   CHECK_THROWS_WITH_AS(set_knob(k, "treshold", "0.5"), Contains("march knobs: unknown knob 'treshold'; valid: "), UsageError);
 }
+
+TEST_CASE("bad input: two bindings of one global signature with one name") {
+  Scene s;
+  CHECK_THROWS_WITH_AS(s.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                                                      {BindingKind::storage_image, 1, 0, 1, "tlas"}}}),
+                       Contains("binding \"tlas\" and binding \"tlas\" would both be declared in GLSL as \"tlas\""),
+                       DuplicateIdError);
+}
+
+TEST_CASE("bad input: a ray registered after a global signature with a binding of its name") {
+  Scene s;
+  s.set_global_signature({.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}});
+  s.add_ray<Colour>("tlas", {});  // registration does not see signatures: only one of them is declared
+  s.add_raygen("camera.rgen");
+  CHECK_THROWS_WITH_AS(compile(s), Contains("compile: binding \"tlas\" and ray \"tlas\" would both be declared"),
+                       DuplicateIdError);
+}
+
+TEST_CASE("glsl names: two global signatures may reuse binding names") {
+  Scene s;  // not an error: only the pipeline's signature is declared
+  s.add_global_signature("a", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}});
+  CHECK_NOTHROW(s.add_global_signature("b", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}}));
+}

@@ -286,15 +286,13 @@ class Entities {
     }
     return id.index();
   }
-  /// Every name the scene's rays, layers, callables and global signatures would declare in GLSL.
+  /// Every name the scene's rays, layers and callables would declare in GLSL. Global signatures'
+  /// names are not here: only the one the pipeline uses is declared, and compile() checks it.
   std::vector<GlslName> glsl_names() const {
     std::vector<GlslName> out;
     for (const std::string& r : m_rays.names()) for (GlslName& n : ray_glsl_names(r)) out.push_back(std::move(n));
     for (const std::string& l : m_layers.names()) for (GlslName& n : layer_glsl_names(l)) out.push_back(std::move(n));
     for (const std::string& c : m_callables.names()) for (GlslName& n : callable_glsl_names(c)) out.push_back(std::move(n));
-    for (const GlobalSignature& g : m_global_signatures.entities()) {
-      for (GlslName& n : signature_glsl_names(g.desc)) out.push_back(std::move(n));
-    }
     return out;
   }
   /// What a global signature declares: its named bindings and push constant block.

@@ -84,7 +84,7 @@ inline void check_glsl_names(std::string_view op, const std::vector<GlslName>& e
                        "ray_count); rename it");
     }
     const auto clash = [&](const GlslName& other) {
-      if (other.name != c.name || other.origin == c.origin) return;
+      if (other.name != c.name) return;
       throw DuplicateIdError(std::string(op) + ": " + c.origin + " and " + other.origin +
                              " would both be declared in GLSL as \"" + c.name +
                              "\" (an id becomes a GLSL name with every character other than a letter, digit or _ "
