@@ -312,7 +312,10 @@ TEST_CASE("bad input: a callable without a shader") {
 
 TEST_CASE("bad input: a procedural object without an intersection shader") {
   Small a;
-  CHECK_THROWS_AS(add_object<bad_input::Hit>(a.scene, "box", {.geometry = GeometryDesc::procedural({Aabb{}})}), Error);
+  CHECK_THROWS_WITH_AS(add_object<bad_input::Hit>(a.scene, "box", {.geometry = GeometryDesc::procedural({Aabb{}})}),
+                       Contains("add_object: procedural hit group \"box\" has no intersection shader; AABB geometry needs "
+                                "one: set .intersection"),
+                       SceneError);
 }
 
 TEST_CASE("bad input: an inverted AABB") {

@@ -293,10 +293,7 @@ inline void PlanBuilder::declarations() {
   // Every name the declarations will hold, checked once more with the pipeline's global signature
   // and the struct type names (registration saw neither): a clash here would surface as a glslang
   // error on a line of generated code.
-  std::vector<GlslName> names;
-  for (const std::string& r : s.rays().names()) for (GlslName& n : ray_glsl_names(r)) names.push_back(std::move(n));
-  for (const std::string& l : s.layers().names()) for (GlslName& n : layer_glsl_names(l)) names.push_back(std::move(n));
-  for (const std::string& c : s.callables().names()) for (GlslName& n : callable_glsl_names(c)) names.push_back(std::move(n));
+  std::vector<GlslName> names = s.glsl_names();  // rays, layers, callables
   if (out.m_global) {
     for (GlslName& n : Entities::signature_glsl_names(*out.m_global)) names.push_back(std::move(n));
   }

@@ -67,19 +67,33 @@ class ShaderCompileError : public UsageError {
   std::string m_log;
 };
 
+namespace detail {
+/// Calls `f(opcode, instruction words)` for each instruction after the 5-word header until `f`
+/// returns false; returns false when the module is truncated or malformed (a zero word count).
+template <class F>
+bool each_spirv_instruction(std::span<const std::uint32_t> spirv, F&& f) {
+  constexpr std::size_t header_words = 5;  // magic, version, generator, bound, schema
+  for (std::size_t at = header_words; at < spirv.size();) {
+    const std::uint32_t word_count = spirv[at] >> 16;
+    if (word_count == 0 || at + word_count > spirv.size()) return false;
+    if (!f(spirv[at] & 0xFFFFu, spirv.subspan(at, word_count))) return true;
+    at += word_count;
+  }
+  return true;
+}
+constexpr std::uint32_t op_name = 5, op_trace_ray = 4445, op_execute_callable = 4446;
+}  // namespace detail
+
 /// Whether a SPIR-V module calls traceRayEXT (an OpTraceRayKHR instruction, opcode 4445): a
 /// non-raygen stage that does needs a pipeline recursion depth >= 2. executeCallableEXT
 /// (OpExecuteCallableKHR, 4446) is not a trace. A truncated or malformed module gives false.
 inline bool traces_rays(std::span<const std::uint32_t> spirv) noexcept {
-  constexpr std::uint32_t op_trace_ray = 4445;
-  constexpr std::size_t header_words = 5;  // magic, version, generator, bound, schema
-  for (std::size_t at = header_words; at < spirv.size();) {
-    const std::uint32_t word_count = spirv[at] >> 16;
-    if ((spirv[at] & 0xFFFFu) == op_trace_ray) return true;
-    if (word_count == 0) return false;
-    at += word_count;
-  }
-  return false;
+  bool found = false;
+  detail::each_spirv_instruction(spirv, [&](std::uint32_t op, std::span<const std::uint32_t>) {
+    found = op == detail::op_trace_ray;
+    return !found;
+  });
+  return found;
 }
 
 /// What a SPIR-V module traces and calls, before the payloads are matched to rays.
@@ -94,32 +108,24 @@ struct TraceInfo {
 /// trace to a ray: glsl_for declares ray r's outgoing payload under the ray's id and the incoming
 /// one as `payload` (scene_pipeline.hpp maps them).
 inline TraceInfo trace_info(std::span<const std::uint32_t> spirv) {
-  constexpr std::uint32_t op_name = 5, op_trace_ray = 4445, op_execute_callable = 4446;
-  constexpr std::size_t header_words = 5;
   std::vector<std::pair<std::uint32_t, std::string>> names;  // (id, OpName)
   std::vector<std::uint32_t> payloads;                       // ids passed to OpTraceRayKHR
   TraceInfo out;
-  for (std::size_t at = header_words; at < spirv.size();) {
-    const std::uint32_t word_count = spirv[at] >> 16, op = spirv[at] & 0xFFFFu;
-    if (word_count == 0 || at + word_count > spirv.size()) {
-      out.unnamed = true;
-      break;
-    }
-    if (op == op_name && word_count >= 3) {
-      std::string name;
-      for (std::size_t w = at + 2; w < at + word_count; ++w) {
-        for (int b = 0; b < 4; ++b) {
-          const char c = static_cast<char>((spirv[w] >> (8 * b)) & 0xFFu);
-          if (c == '\0') break;
-          name += c;
+  const auto each = [&](std::uint32_t op, std::span<const std::uint32_t> words) {
+    if (op == detail::op_name && words.size() >= 3) {
+      std::string name;  // a nul-terminated UTF-8 literal, four bytes a word
+      for (std::uint32_t w : words.subspan(2)) {
+        for (int b = 0; b < 4 && ((w >> (8 * b)) & 0xFFu) != 0; ++b) {
+          name += static_cast<char>((w >> (8 * b)) & 0xFFu);
         }
       }
-      names.emplace_back(spirv[at + 1], std::move(name));
+      names.emplace_back(words[1], std::move(name));
     }
-    if (op == op_trace_ray && word_count >= 12) payloads.push_back(spirv[at + 11]);
-    if (op == op_execute_callable) out.calls = true;
-    at += word_count;
-  }
+    if (op == detail::op_trace_ray && words.size() >= 12) payloads.push_back(words[11]);
+    if (op == detail::op_execute_callable) out.calls = true;
+    return true;
+  };
+  out.unnamed = !detail::each_spirv_instruction(spirv, each);
   for (std::uint32_t id : payloads) {
     const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == id; });
     if (it == names.end() || it->second.empty()) {
