@@ -29,7 +29,7 @@ struct Options {
   std::filesystem::path out;  ///< default: <program>.png
   proceduray::vk::DevicePreference device = proceduray::vk::DevicePreference::automatic;
   bool validation = false;
-  std::filesystem::path cache;  ///< pipeline cache file; default none
+  std::filesystem::path cache;  ///< pipeline cache file; default: the cache folder's
   std::optional<int> exit;      ///< set when the program should stop with this code
 };
 
@@ -48,7 +48,7 @@ inline Options parse(int argc, char** argv, const char* program, Options default
   app.add_option("--out", o.out, "PNG to write")->capture_default_str();
   app.add_option("--device", device, "cpu (lavapipe), gpu or auto (PROCEDURAY_DEVICE overrides auto)")
       ->check(CLI::IsMember({"cpu", "gpu", "auto"}))->capture_default_str();
-  app.add_option("--cache", o.cache, "pipeline cache file (default none)");
+  app.add_option("--cache", o.cache, "pipeline cache file (default: one per device in $XDG_CACHE_HOME/proceduray or ~/.cache/proceduray)");
   app.add_flag("--validation", o.validation, "enable the Khronos validation layer");
   if (extra) extra(app);
   try {

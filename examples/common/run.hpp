@@ -35,9 +35,10 @@ inline double median(std::vector<double> v) {
 /// Prints the device, the acceleration-structure, compile and pipeline times, and the warm-up.
 inline void print_build(const proceduray::vk::Context& ctx, proceduray::vk::Renderer& renderer) {
   const auto& t = renderer.timings();
-  std::printf("device: %s\nacceleration structures: %.1f ms\nshaders compiled: %.1f ms\npipeline: %.1f ms (%s)\n",
-              ctx.name().c_str(), t.acceleration_ms, t.compile_ms, t.pipeline_ms,
-              t.pipeline_cached ? "from cache" : "cold");
+  std::printf("device: %s\nacceleration structures: %.1f ms\nshaders: %.1f ms (%u from the SPIR-V cache, %u compiled)\n"
+              "pipeline: %.1f ms (%s)\nshader and pipeline work: %.1f ms\n",
+              ctx.name().c_str(), t.acceleration_ms, t.compile_ms, t.spirv_cached, t.spirv_compiled, t.pipeline_ms,
+              t.pipeline_cached ? "pipeline cache warm" : "pipeline cache cold", t.compile_ms + t.pipeline_ms);
   std::printf("warm-up: %.1f ms\n", renderer.warm_up());
 }
 

@@ -246,7 +246,8 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
     entry_of_tag[p.tag] = id.index();
   }
 
-  const auto limits = all_limits()[seed % 5];
+  const auto all = all_limits();
+  const auto limits = all[seed % all.size()];
   const Plan sbt = compile(s);
   const SbtLayout layout = sbt.layout(limits);
   const auto hit = sbt.records(SbtRegionKind::hit);

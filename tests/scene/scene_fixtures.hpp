@@ -35,6 +35,13 @@ inline const DeviceLimits h100_limits{
     .max_ray_recursion_depth = 31, .max_ray_hit_attribute_size = 32,
     .max_geometry_count = 16777215, .max_instance_count = 16777215, .device = "NVIDIA H100 80GB HBM3"};
 
+// shared/device-profiles/nvidia-h200-580.json (NVIDIA H200, driver 580.159.04): the H100's numbers,
+// kept as its own profile so a driver that changes one of them shows up here.
+inline const DeviceLimits h200_limits{
+    .sbt = {.handle_size = 32, .handle_alignment = 32, .base_alignment = 64, .max_stride = 4096},
+    .max_ray_recursion_depth = 31, .max_ray_hit_attribute_size = 32,
+    .max_geometry_count = 16777215, .max_instance_count = 16777215, .device = "NVIDIA H200"};
+
 /// Synthetic profiles the issue names.
 inline constexpr SbtProperties synthetic_32_32_64{.handle_size = 32, .handle_alignment = 32, .base_alignment = 64, .max_stride = 4096};
 inline constexpr SbtProperties synthetic_64_64_256{.handle_size = 64, .handle_alignment = 64, .base_alignment = 256, .max_stride = 4096};
@@ -42,7 +49,8 @@ inline constexpr SbtProperties synthetic_small_stride{.handle_size = 32, .handle
 
 /// Every profile SBT tests run over.
 inline std::vector<SbtProperties> all_sbt_profiles() {
-  return {lavapipe_limits.sbt, h100_limits.sbt, synthetic_32_32_64, synthetic_64_64_256, synthetic_small_stride};
+  return {lavapipe_limits.sbt, h100_limits.sbt, h200_limits.sbt, synthetic_32_32_64, synthetic_64_64_256,
+          synthetic_small_stride};
 }
 /// Device limits for every profile (synthetic ones keep lavapipe's non-SBT limits).
 inline std::vector<DeviceLimits> all_limits() {

@@ -98,6 +98,31 @@ TEST_CASE("output images hold the camera ray's t, normal, ids, steps and flags p
   CHECK(again.outputs.t == f.outputs.t);
 }
 
+TEST_CASE("output views of submitted frames equal the outputs render() copies, per frame in flight") {
+  TestContext t;
+  constexpr std::uint32_t size = 32;
+  const Scene scene = ball_scene({Output::t, Output::steps});
+  vk::Renderer renderer(t.ctx, scene, options());
+  const vk::Frame f = renderer.render(size, size);
+  const vk::FrameTicket a = renderer.submit(size, size, vk::Readback::all);
+  const vk::FrameTicket b = renderer.submit(size, size, vk::Readback::all);
+  for (const vk::FrameTicket& ticket : {a, b}) {
+    const std::span<const float> t_view = renderer.output<float>(ticket, Output::t);
+    const std::span<const std::uint32_t> steps = renderer.output<std::uint32_t>(ticket, Output::steps);
+    CHECK(std::vector<float>(t_view.begin(), t_view.end()) == f.outputs.t);
+    CHECK(std::vector<std::uint32_t>(steps.begin(), steps.end()) == f.outputs.steps);
+    const std::span<const std::uint8_t> rgba = renderer.rgba(ticket);
+    CHECK(std::vector<std::uint8_t>(rgba.begin(), rgba.end()) == f.rgba);
+  }
+  CHECK_THROWS_WITH_AS(renderer.output<std::uint32_t>(a, Output::t),
+                       doctest::Contains("output 't' holds float values; ask for output<float>"), UsageError);
+  CHECK_THROWS_WITH_AS(renderer.output<float>(a, Output::normal),
+                       doctest::Contains("does not ask for output 'normal'; add it with Scene::set_outputs"), UsageError);
+  const vk::FrameTicket c = renderer.submit(size, size, vk::Readback::rgba);
+  CHECK_THROWS_WITH_AS(renderer.output<float>(c, Output::t),
+                       doctest::Contains("frame 4 was not submitted with Readback::all"), UsageError);
+}
+
 TEST_CASE("output images exist only for the outputs asked for and none give an empty Outputs") {
   TestContext t;
   vk::Renderer some(t.ctx, ball_scene({Output::t}), options());

@@ -7,7 +7,8 @@
 //   bindings.set_push(knobs_slot, knobs);        // the global signature's typed push constants
 //   bindings.bind_image(image.view());           // every storage-image binding
 //   bindings.check_ready("Renderer::render");    // throws UsageError naming what was never given
-//   bindings.upload();                           // changed uniforms to their buffers, before a submit
+//   bindings.record_upload(frame_cmd);           // changed uniforms, recorded into the frame (vkCmdUpdateBuffer)
+//   bindings.upload();                           // or written from the host (no frame may be in flight)
 //
 // A slot must be the one the global signature was declared with: same set, binding and type
 // (a uniform of another type would read or write past its buffer), else UsageError.
@@ -40,7 +41,7 @@ class Bindings {
   Bindings(const Bindings&) = delete;
   Bindings& operator=(const Bindings&) = delete;
 
-  /// Sets a uniform's value, uploaded by upload(). Other types do not compile.
+  /// Sets a uniform's value, uploaded by record_upload() or upload(). Other types do not compile.
   template <class T>
   void set(UniformSlot<T> slot, const std::type_identity_t<T>& value, std::string_view op = "Bindings::set") {
     Uniform& u = uniform(slot, &type_ops<T>, sizeof(T), op);
@@ -66,12 +67,42 @@ class Bindings {
   void bind_output(std::uint32_t binding, VkImageView view) { m_sets.at(0)->write(binding, view); }
   /// Throws UsageError, naming `op`, when a uniform, storage buffer or push constant block was never given.
   void check_ready(std::string_view op) const;
-  /// Copies changed uniform values into their buffers.
+  /// Copies changed uniform values into their buffers from the host: only when no submitted
+  /// frame still reads them.
   void upload() {
     for (Uniform& u : m_uniforms) {
       if (u.dirty) u.buffer->write(std::span<const std::byte>(u.value));
       u.dirty = false;
     }
+  }
+  /// Records changed uniform values into `cmd` (vkCmdUpdateBuffer, 64 KiB at a time), between
+  /// barriers after earlier traces' reads and before this trace's: frames in flight keep the
+  /// values they were recorded with, and the host never writes memory the device reads.
+  void record_upload(VkCommandBuffer cmd) {
+    bool any = false;
+    for (const Uniform& u : m_uniforms) any = any || u.dirty;
+    if (!any) return;
+    barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_UNIFORM_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+            VK_ACCESS_TRANSFER_WRITE_BIT);
+    for (Uniform& u : m_uniforms) {
+      if (!u.dirty) continue;
+      constexpr std::size_t chunk = 65536;  // vkCmdUpdateBuffer's limit per call
+      for (std::size_t at = 0; at < u.value.size(); at += chunk) {
+        const std::size_t n = std::min(chunk, u.value.size() - at);
+        vkCmdUpdateBuffer(cmd, u.buffer->get(), at, n, u.value.data() + at);
+      }
+      u.dirty = false;
+    }
+    barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+            VK_ACCESS_UNIFORM_READ_BIT);
+  }
+  /// True when the uniform at `slot` has its buffer (set() was called): a first set() writes the
+  /// descriptor set, which no submitted frame may be using.
+  bool has_buffer(const proceduray::Binding& slot) const {
+    for (const Uniform& u : m_uniforms) {
+      if (u.set == slot.set && u.binding == slot.binding) return u.buffer != nullptr;
+    }
+    return false;
   }
 
   /// The sets, in set-number order (a gap in the numbers is an empty set).
@@ -91,9 +122,10 @@ class Bindings {
   struct Uniform {
     std::uint32_t set = 0, binding = 0;
     const TypeOps* type = nullptr;
-    std::vector<std::byte> value;
+    std::vector<std::byte> value;  // padded to 4-byte words
     std::unique_ptr<Buffer> buffer;
     bool dirty = false;
+    std::size_t size = 0;  // bytes of the type given
   };
   struct Storage {
     std::uint32_t set = 0, binding = 0;
@@ -105,6 +137,13 @@ class Bindings {
   void set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes, std::string_view op);
   void set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,
                       std::string_view op);
+  static void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAccessFlags src, VkPipelineStageFlags dst_stage,
+                      VkAccessFlags dst) {
+    auto b = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    b.srcAccessMask = src;
+    b.dstAccessMask = dst;
+    vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 1, &b, 0, nullptr, 0, nullptr);
+  }
   static std::string where(const proceduray::Binding& b) {
     return "set " + std::to_string(b.set) + " binding " + std::to_string(b.binding);
   }
@@ -161,7 +200,7 @@ inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, c
     switch (b.kind) {
       case BindingKind::acceleration_structure: m_sets[b.set]->write(b.binding, tlas); break;
       case BindingKind::storage_image: m_images.emplace_back(b.set, b.binding); break;
-      case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false}); break;
+      case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false, 0}); break;
       case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr, b.per_instance}); break;
       case BindingKind::output_image: break;  // the renderer binds each output's image (bind_output)
     }
@@ -173,12 +212,15 @@ inline Bindings::Uniform& Bindings::uniform(const proceduray::Binding& slot, con
     if (u.set != slot.set || u.binding != slot.binding) continue;
     check_type(u.type, type, slot, op);
     if (!u.buffer) {
-      u.value.resize(size);
-      u.buffer = std::make_unique<Buffer>(*m_ctx, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      // vkCmdUpdateBuffer writes whole 4-byte words: the buffer and the value are padded to them.
+      u.size = size;
+      u.value.resize((size + 3) / 4 * 4);
+      u.buffer = std::make_unique<Buffer>(*m_ctx, (size + 3) / 4 * 4,
+                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
       m_sets[u.set]->write(u.binding, *u.buffer);
     }
-    if (u.value.size() != size) {  // an untyped binding given two types
-      throw UsageError(std::string(op) + ": " + where(slot) + " was given " + std::to_string(u.value.size()) +
+    if (u.size != size) {  // an untyped binding given two types
+      throw UsageError(std::string(op) + ": " + where(slot) + " was given " + std::to_string(u.size) +
                        " bytes before and " + std::to_string(size) + " now; keep one type per uniform");
     }
     return u;

@@ -6,8 +6,14 @@
 //   aabbs.write(boxes);          // host-visible buffers are written in place
 //   aabbs.address();             // VkDeviceAddress for builds and shaders
 //
-// Memory is host-visible and coherent unless Buffer::device_local is asked for; every
-// buffer gets VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT when its usage needs an address.
+//   Buffer readback(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, Buffer::host_cached);
+//   // ... copy into it on the device, wait ...
+//   readback.invalidate();       // then read readback.data()
+//
+// Memory is host-visible and coherent unless Buffer::device_local or Buffer::host_cached is asked
+// for; every buffer gets VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT when its usage needs an address.
+// host_cached is for what the host reads: uncached (write-combined) memory is read at a fraction
+// of memory speed, so a 16 MiB frame took 55-75 ms to copy out of it on an H200 host.
 #pragma once
 
 #include <proceduray/vk/context.hpp>
@@ -22,8 +28,9 @@ namespace proceduray::vk {
 /// A VkBuffer bound to its own VkDeviceMemory.
 class Buffer {
  public:
-  /// Where the memory lives.
-  enum Memory { device_local, host_visible };
+  /// Where the memory lives. host_cached: host-visible, cached where the device has such memory
+  /// (for readback; call invalidate() before reading), else coherent.
+  enum Memory { device_local, host_visible, host_cached };
 
   Buffer() = default;
   /// Creates a buffer of `size` bytes (must be > 0) with `usage`; device addresses are enabled when usage asks.
@@ -35,6 +42,9 @@ class Buffer {
   VkDeviceAddress address() const;
   /// Mapped pointer of a host-visible buffer, else nullptr.
   void* data() const noexcept { return m_mapped; }
+  /// Makes device writes visible to data() in non-coherent memory (after the fence of the copy);
+  /// nothing to do for coherent memory.
+  void invalidate() const;
 
   /// Copies `bytes` to `offset`; throws UsageError past the end or for device-local memory.
   void write(std::span<const std::byte> bytes, VkDeviceSize offset = 0);
@@ -49,6 +59,8 @@ class Buffer {
   VkDeviceSize m_size = 0;
   VkDeviceAddress m_address = 0;
   void* m_mapped = nullptr;
+  bool m_coherent = true;
+  VkDevice m_device = VK_NULL_HANDLE;
 };
 
 inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory)
@@ -68,18 +80,23 @@ inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
   vkGetBufferMemoryRequirements(ctx.device(), raw, &needs);
   const VkMemoryPropertyFlags flags = memory == host_visible
                                           ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                                          : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+                                      : memory == host_cached ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT
+                                                              : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
   auto address_flags = make<VkMemoryAllocateFlagsInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO);
   address_flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
   const bool wants_address = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
   auto alloc = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, wants_address ? &address_flags : nullptr);
   alloc.allocationSize = needs.size;
-  alloc.memoryTypeIndex = ctx.memory_type(needs.memoryTypeBits, flags);
+  alloc.memoryTypeIndex = memory == host_cached
+                             ? ctx.memory_type(needs.memoryTypeBits, flags, VK_MEMORY_PROPERTY_HOST_CACHED_BIT)
+                             : ctx.memory_type(needs.memoryTypeBits, flags);
+  m_coherent = (ctx.memory_flags(alloc.memoryTypeIndex) & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
+  m_device = ctx.device();
   VkDeviceMemory mem = VK_NULL_HANDLE;
   check(vkAllocateMemory(ctx.device(), &alloc, nullptr, &mem), "vkAllocateMemory", std::to_string(needs.size) + " bytes");
   m_memory = own(ctx.device(), mem, vkFreeMemory);
   check(vkBindBufferMemory(ctx.device(), raw, mem, 0), "vkBindBufferMemory");
-  if (memory == host_visible) {
+  if (memory != device_local) {
     check(vkMapMemory(ctx.device(), mem, 0, VK_WHOLE_SIZE, 0, &m_mapped), "vkMapMemory");
   }
   if (wants_address) {
@@ -97,6 +114,14 @@ inline VkDeviceAddress Buffer::address() const {
   return m_address;
 }
 
+inline void Buffer::invalidate() const {
+  if (m_coherent || m_mapped == nullptr) return;
+  auto range = make<VkMappedMemoryRange>(VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE);
+  range.memory = m_memory.get();
+  range.size = VK_WHOLE_SIZE;
+  check(vkInvalidateMappedMemoryRanges(m_device, 1, &range), "vkInvalidateMappedMemoryRanges");
+}
+
 inline void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset) {
   if (m_mapped == nullptr) {
     throw UsageError("Buffer::write: the buffer is device-local; create it with Buffer::host_visible to write it "
@@ -107,6 +132,12 @@ inline void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset)
                      std::to_string(offset) + " overrun the buffer's " + std::to_string(m_size) + " bytes");
   }
   std::memcpy(static_cast<std::byte*>(m_mapped) + offset, bytes.data(), bytes.size());
+  if (!m_coherent) {
+    auto range = make<VkMappedMemoryRange>(VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE);
+    range.memory = m_memory.get();
+    range.size = VK_WHOLE_SIZE;
+    check(vkFlushMappedMemoryRanges(m_device, 1, &range), "vkFlushMappedMemoryRanges");
+  }
 }
 
 }  // namespace proceduray::vk

@@ -12,6 +12,7 @@
 #include <vulkan/vulkan.h>
 
 #include <string>
+#include <string_view>
 #include <system_error>
 
 namespace proceduray::vk {
@@ -80,10 +81,10 @@ class VulkanError : public std::system_error, public proceduray::Error {
 };
 
 /// Throws VulkanError unless `result` is VK_SUCCESS; `call` names the failed function.
-inline void check(VkResult result, const char* call, const std::string& context = {}) {
-  if (result == VK_SUCCESS) return;
+inline void check(VkResult result, const char* call, std::string_view context = {}) {
+  if (result == VK_SUCCESS) return;  // a string_view: the frame loop's checks build no string
   std::string what = std::string(call) + " failed";
-  if (!context.empty()) what += " (" + context + ")";
+  if (!context.empty()) what += " (" + std::string(context) + ")";
   if (result == VK_ERROR_DEVICE_LOST) {
     what += ": the device was lost; a shader ran too long or read out of bounds. Run with the validation "
             "layer (ContextOptions::validation) to find the cause";

@@ -3,8 +3,12 @@
 //
 //   proceduray::vk::OutputImages outputs(ctx, plan.outputs());
 //   outputs.resize(width, height, bindings);           // makes and binds the images for this size
-//   ctx.submit([&](VkCommandBuffer cmd) { outputs.record_clear(cmd); /* ... trace ... */ });
+//   ctx.submit([&](VkCommandBuffer cmd) { outputs.record_init(cmd); outputs.record_clear(cmd); /* trace */ });
 //   proceduray::vk::Outputs read = outputs.read();     // read.t: width * height floats, -1 where nothing hit
+//   outputs.record_copy(frame_cmd, readback, offset);  // or copy them in the frame, then, after its fence,
+//   proceduray::vk::Outputs same = outputs.read(static_cast<const std::uint8_t*>(readback.data()) + offset);
+//
+// Images made by resize() reach the general layout through record_init(cmd), in the frame.
 //
 // Renderer does all of this when the scene asks for outputs; a scene that asks for none gets no image.
 #pragma once
@@ -15,6 +19,8 @@
 #include <proceduray/vk/storage_image.hpp>
 
 #include <cstdint>
+#include <cstring>
+#include <utility>
 #include <memory>
 #include <span>
 #include <vector>
@@ -52,11 +58,54 @@ class OutputImages {
     if (m_planned.empty() || (m_width == width && m_height == height)) return;
     m_images.clear();
     for (const PlannedOutput& p : m_planned) {
-      m_images.push_back(std::make_unique<StorageImage>(*m_ctx, width, height, output_format(p.output)));
+      m_images.push_back(
+          std::make_unique<StorageImage>(*m_ctx, width, height, output_format(p.output), StorageImage::recorded));
       bindings.bind_output(p.binding, m_images.back()->view());
     }
     m_width = width;
     m_height = height;
+  }
+  /// Records the layout transitions of images resize() made (nothing for those done before).
+  void record_init(VkCommandBuffer cmd) {
+    for (auto& image : m_images) image->record_init(cmd);
+  }
+  /// Bytes of all the images, packed one after another in the planned order.
+  VkDeviceSize bytes() const noexcept {
+    VkDeviceSize n = 0;
+    for (const auto& image : m_images) n += image->bytes();
+    return n;
+  }
+  /// Records copies of every image to `buffer` from `offset` on, one after another (bytes() in all).
+  void record_copy(VkCommandBuffer cmd, const Buffer& buffer, VkDeviceSize offset) const {
+    for (const auto& image : m_images) {
+      image->record_copy(cmd, buffer, offset);
+      offset += image->bytes();
+    }
+  }
+  /// The outputs out of memory that record_copy filled (mapped, after the frame's fence).
+  Outputs read(const std::uint8_t* copied) const {
+    Outputs out;
+    for (std::size_t i = 0; i < m_images.size(); ++i) {
+      const std::size_t n = static_cast<std::size_t>(m_images[i]->bytes()) / 4;
+      switch (m_planned[i].output) {
+        case Output::t: out.t.resize(n); std::memcpy(out.t.data(), copied, n * 4); break;
+        case Output::normal: out.normal.resize(n); std::memcpy(out.normal.data(), copied, n * 4); break;
+        case Output::ids: out.ids.resize(n); std::memcpy(out.ids.data(), copied, n * 4); break;
+        case Output::steps: out.steps.resize(n); std::memcpy(out.steps.data(), copied, n * 4); break;
+        case Output::flags: out.flags.resize(n); std::memcpy(out.flags.data(), copied, n * 4); break;
+      }
+      copied += m_images[i]->bytes();
+    }
+    return out;
+  }
+  /// Where output `o` starts in what record_copy wrote and its bytes; {0, 0} when not planned.
+  std::pair<VkDeviceSize, VkDeviceSize> range(Output o) const noexcept {
+    VkDeviceSize at = 0;
+    for (std::size_t i = 0; i < m_images.size(); ++i) {
+      if (m_planned[i].output == o) return {at, m_images[i]->bytes()};
+      at += m_images[i]->bytes();
+    }
+    return {0, 0};
   }
   /// Records the clears that make every pixel "nothing written" before a trace.
   void record_clear(VkCommandBuffer cmd) const {

@@ -20,9 +20,19 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace proceduray::vk {
+
+/// The pipeline cache's file name for this device and driver: pipeline-<vendor>-<device>-<cache UUID>.bin.
+inline std::string default_pipeline_cache_name(const Context& ctx) {
+  const VkPhysicalDeviceProperties& p = ctx.properties();
+  char name[96];
+  int n = std::snprintf(name, sizeof name, "pipeline-%04x-%04x-", p.vendorID, p.deviceID);
+  for (std::uint8_t b : p.pipelineCacheUUID) n += std::snprintf(name + n, sizeof name - static_cast<std::size_t>(n), "%02x", b);
+  return std::string(name) + ".bin";
+}
 
 /// A pipeline cache loaded from and saved to one file.
 class PipelineCache {
@@ -117,8 +127,11 @@ inline void PipelineCache::save() const {
   check(vkGetPipelineCacheData(m_ctx->device(), m_cache.get(), &size, data.data()), "vkGetPipelineCacheData");
   data.resize(size);
   const std::uint64_t size64 = size, sum = checksum(data.data(), data.size());
-  // Write beside it and rename: a run killed mid-write leaves the old file, not half a new one.
-  const std::filesystem::path tmp = m_path.string() + ".tmp";
+  // Write beside it under this process's own name and rename: a run killed mid-write, or two runs
+  // at once, leave a whole file, never half of one.
+  const std::filesystem::path tmp = m_path.string() + "." + std::to_string(::getpid()) + ".tmp";
+  std::error_code ec;
+  if (m_path.has_parent_path()) std::filesystem::create_directories(m_path.parent_path(), ec);
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out.write(magic.data(), magic.size());
@@ -126,11 +139,16 @@ inline void PipelineCache::save() const {
     out.write(reinterpret_cast<const char*>(&sum), 8);
     out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
     if (!out) {
+      std::filesystem::remove(tmp, ec);
       throw EnvironmentError("PipelineCache::save: cannot write '" + tmp.string() +
                              "'; choose a cache path in a writable folder");
     }
   }
-  std::filesystem::rename(tmp, m_path);
+  std::filesystem::rename(tmp, m_path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw EnvironmentError("PipelineCache::save: cannot replace '" + m_path.string() + "'; choose a cache path in a writable folder");
+  }
 }
 
 }  // namespace proceduray::vk

@@ -11,6 +11,13 @@
 //   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
+//
+//   // The frame loop: N frames in flight (RendererOptions::frames_in_flight, default 2), nothing
+//   // allocated per frame, pixels read only when asked, straight out of host-cached memory.
+//   proceduray::vk::FrameTicket t = renderer.submit(1024, 768);    // records and submits; no wait
+//   std::span<const std::uint8_t> rgba = renderer.rgba(t);        // waits; valid until N more submits
+//   renderer.read_rgba(t, my_pixels);                              // or copies into your span
+//   renderer.wait(t).trace_ms;                                     // times and work, no pixels
 //   frame.outputs.t;                                  // per-pixel outputs the scene asked for (Scene::set_outputs)
 //   frame.work.blas_builds;                           // what the frame rebuilt: BLAS builds, refits, TLAS work
 //   ctx.submit([&](VkCommandBuffer cmd) { renderer.record(cmd, 1024, 768); });   // or into your own command buffer
@@ -18,12 +25,15 @@
 //
 // It compiles the scene (compile.hpp) and keeps the Plan, a value: changing the scene afterwards
 // does not change the renderer; the scene is read only while the constructor runs.
+// Uniforms and push constants are recorded into each frame, so setting them never waits. The
+// other setters write memory that submitted frames read: they wait for the frames in flight.
 #pragma once
 
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/bindings.hpp>
 #include <proceduray/vk/frame.hpp>
+#include <proceduray/vk/frame_ring.hpp>
 #include <proceduray/vk/output_images.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/scene_acceleration.hpp>
@@ -32,10 +42,14 @@
 #include <proceduray/vk/trace.hpp>
 
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace proceduray::vk {
@@ -46,6 +60,21 @@ struct BuildTimings {
   double compile_ms = 0;       ///< GLSL to SPIR-V (glslang)
   double pipeline_ms = 0;      ///< vkCreateRayTracingPipelinesKHR
   bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
+  std::uint32_t spirv_cached = 0;    ///< stages whose SPIR-V came from the cache (RendererOptions::cache)
+  std::uint32_t spirv_compiled = 0;  ///< stages glslang compiled
+};
+
+/// What a submitted frame copies back for the host, in the frame's own command buffer.
+enum class Readback {
+  none,  ///< nothing: the frame stays on the device (Renderer::image() holds the last one)
+  rgba,  ///< the RGBA8 image
+  all,   ///< the image and every per-pixel output the scene asked for
+};
+
+/// A submitted frame: its number, 1, 2, ...; what Renderer::wait, rgba and output take.
+struct FrameTicket {
+  std::uint64_t number = 0;
+  friend bool operator==(const FrameTicket&, const FrameTicket&) = default;
 };
 
 /// Builds the device objects of a scene and traces frames of it.
@@ -59,11 +88,13 @@ class Renderer {
   /// Sets a uniform's value; it is uploaded before the next trace. Other types do not compile.
   template <class T>
   void set(UniformSlot<T> slot, const std::type_identity_t<T>& value) {
+    if (!m_bindings->has_buffer(slot)) m_ring->wait_all();  // the first set writes the descriptor set
     m_bindings->set(slot, value, "Renderer::set");
   }
   /// Sets a storage buffer's contents, an array of T (at least one element); reallocated when it grows.
   template <class T>
   void set_storage(StorageSlot<T> slot, std::span<const std::type_identity_t<T>> values) {
+    m_ring->wait_all();  // written in place (and maybe reallocated): no frame in flight may read it
     m_bindings->set_storage(slot, values, "Renderer::set_storage");
   }
   /// Sets the push constants, recorded with the next trace. Other types do not compile; a slot of
@@ -75,33 +106,61 @@ class Renderer {
   /// Moves instance `instance` of `geometry`; the TLAS is refit before the next trace (no BLAS work).
   /// Throws for a Static geometry (declare it UpdatePolicy::DynamicTransform).
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world) {
+    m_ring->wait_all();
     m_structures->set_transform(geometry, instance, object_to_world, "Renderer::set_transform");
   }
   /// Moves every instance of `geometry` (one matrix per instance, in instance order): one TLAS
   /// refit for all of them. Throws like set_transform, or for a count that is not the instance count.
   void set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world) {
+    m_ring->wait_all();
     m_structures->set_transforms(geometry, object_to_world, "Renderer::set_transforms");
   }
   /// Changes the instance mask (Layers bits) of one instance, any policy: the TLAS is rebuilt
   /// before the next trace (a mask is not a motion, so no refit is involved).
   /// Throws UsageError for a mask over 0xFF (an instance mask has 8 bits).
   void set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask) {
+    m_ring->wait_all();
     m_structures->set_mask(geometry, instance, mask, "Renderer::set_mask");
   }
   /// Replaces a DynamicGeometry procedural geometry's boxes: the same count refits its BLAS before
   /// the next trace, another count rebuilds it. Throws for other policies, triangles or bad boxes.
   void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes) {
+    m_ring->wait_all();
     m_structures->set_aabbs(geometry, boxes, "Renderer::set_aabbs");
   }
   /// Replaces a DynamicGeometry triangle geometry's vertex positions (same count, same indices): BLAS refit.
   void set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices) {
+    m_ring->wait_all();
     m_structures->set_vertices(geometry, vertices, "Renderer::set_vertices");
   }
   /// Replaces a DynamicGeometry triangle geometry's mesh: refit when the indices are the same, else rebuild.
-  void set_mesh(GeometryId geometry, TriangleMesh mesh) { m_structures->set_mesh(geometry, std::move(mesh), "Renderer::set_mesh"); }
+  void set_mesh(GeometryId geometry, TriangleMesh mesh) {
+    m_ring->wait_all();
+    m_structures->set_mesh(geometry, std::move(mesh), "Renderer::set_mesh");
+  }
 
-  /// Traces one width x height frame and, with `readback`, returns its pixels.
+  /// Traces one width x height frame, waits for it and, with `readback`, returns its pixels and
+  /// outputs (copied into the Frame's vectors: the frame loop reads them with submit and rgba).
   Frame render(std::uint32_t width, std::uint32_t height, bool readback = true);
+  /// Records and submits one width x height frame, with the copies `readback` asks for, and
+  /// returns at once: it waits only for the frame that used the slot frames_in_flight frames ago.
+  FrameTicket submit(std::uint32_t width, std::uint32_t height, Readback readback = Readback::rgba);
+  /// Waits for the frame; its times and structure work (its rgba and outputs vectors stay empty).
+  /// Throws UsageError for a frame whose slot a later frame reused.
+  Frame wait(FrameTicket frame);
+  /// Waits for the frame and views its RGBA8 pixels (width * height * 4 bytes, rows top to bottom)
+  /// in mapped host-cached memory, valid until frames_in_flight more frames are submitted. Throws
+  /// UsageError for a frame submitted without readback or whose slot was reused.
+  std::span<const std::uint8_t> rgba(FrameTicket frame);
+  /// Waits for the frame and copies its pixels into `out`; throws UsageError when `out` holds
+  /// fewer than width * height * 4 bytes (or as rgba()).
+  void read_rgba(FrameTicket frame, std::span<std::uint8_t> out);
+  /// Waits for the frame (submitted with Readback::all) and views one per-pixel output: float for
+  /// t and normal, std::uint32_t for ids, steps and flags (as in Outputs).
+  template <class T>
+  std::span<const T> output(FrameTicket frame, Output which);
+  /// Frames in flight, as RendererOptions::frames_in_flight asked.
+  std::uint32_t frames_in_flight() const noexcept { return m_ring->size(); }
   /// Records one width x height frame into a command buffer the caller submits: the structure
   /// work the updates need, then the trace into image(). Changed uniforms are uploaded now, so
   /// submit before the next set(). Returns the structure work recorded.
@@ -128,9 +187,29 @@ class Renderer {
   }
   /// Checks the size and the bindings, and makes the image when the size changed.
   void prepare(std::uint32_t width, std::uint32_t height, std::string_view op);
-  /// The structure work and the trace, with `stamp(cmd, 0)` and `stamp(cmd, 1)` around vkCmdTraceRaysKHR.
-  FrameWork record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,
-                         const std::function<void(VkCommandBuffer, std::uint32_t)>& stamp);
+  FrameTicket submit_as(std::uint32_t width, std::uint32_t height, Readback readback, std::string_view op);
+  /// Records one of the ring's timestamps (or nothing) around vkCmdTraceRaysKHR.
+  struct Stamp {
+    const FrameRing* ring = nullptr;
+    const FrameSlot* slot = nullptr;
+    std::uint32_t which = 0;
+    void operator()(VkCommandBuffer) const {
+      if (ring != nullptr) ring->stamp(*slot, which);
+    }
+  };
+  /// Per slot: what its frame was asked and what it did.
+  struct SlotFrame {
+    Frame frame;
+    Readback readback = Readback::none;
+    bool timed = false;  // trace_ms read after the wait
+    Clock::time_point submitted{};
+  };
+  /// The image layout transitions, structure work, uploads and the trace.
+  FrameWork record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, Stamp before, Stamp after);
+  /// The slot of `frame`, waited for and timed.
+  std::pair<FrameSlot*, SlotFrame*> finished(FrameTicket frame, std::string_view op);
+  /// Mapped bytes of output `which` in a slot (Readback::all), after its rgba.
+  std::span<const std::uint8_t> output_bytes(FrameTicket frame, Output which, std::string_view op);
 
   const Context* m_ctx;
   proceduray::Plan m_plan;
@@ -142,13 +221,16 @@ class Renderer {
   std::unique_ptr<SbtBuffer> m_sbt;
   std::unique_ptr<StorageImage> m_image;
   std::unique_ptr<OutputImages> m_outputs;
-  DeviceHandle<VkQueryPool> m_queries;
+  std::vector<SlotFrame> m_slot_frames;  // index = FrameSlot::index
+  std::unique_ptr<FrameRing> m_ring;     // last: destroyed first, it waits for the frames in flight
 };
 
 // ---------------------------------------------------------------------------------------------
 
 inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
     : m_ctx(&ctx), m_plan(compile(scene)), m_layout(m_plan.layout(ctx.limits())) {
+  m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
+  m_slot_frames.resize(m_ring->size());
   if (const auto raygen = m_plan.records(SbtRegionKind::raygen); raygen.size() > 1) {
     throw UsageError("Renderer: the scene has " + std::to_string(raygen.size()) + " raygen entries (first \"" +
                      m_plan.pipeline().groups[raygen[0].group].name + "\", second \"" +
@@ -166,71 +248,151 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, Re
   m_timings.compile_ms = pipeline.compile_ms;
   m_timings.pipeline_ms = pipeline.pipeline_ms;
   m_timings.pipeline_cached = pipeline.pipeline_cached;
+  m_timings.spirv_cached = pipeline.spirv_cached;
+  m_timings.spirv_compiled = pipeline.spirv_compiled;
   m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout);
   m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
-  if (ctx.timestamp_period_ns() > 0) {
-    auto info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    info.queryCount = 2;
-    VkQueryPool pool = VK_NULL_HANDLE;
-    check(vkCreateQueryPool(ctx.device(), &info, nullptr, &pool), "vkCreateQueryPool");
-    m_queries = own(ctx.device(), pool, vkDestroyQueryPool);
-  }
 }
 
 inline void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
   check_trace_size(*m_ctx, width, height);
   m_bindings->check_ready(op);
-  m_outputs->resize(width, height, *m_bindings);
   if (m_image && m_image->width() == width && m_image->height() == height) return;
-  m_image = std::make_unique<StorageImage>(*m_ctx, width, height);
+  // New images, bound in the descriptor sets: no frame in flight may still use the old ones.
+  m_ring->wait_all();
+  m_outputs->resize(width, height, *m_bindings);
+  m_image = std::make_unique<StorageImage>(*m_ctx, width, height, VK_FORMAT_R8G8B8A8_UNORM, StorageImage::recorded);
   m_bindings->bind_image(m_image->view());
 }
 
-inline FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height,
-                                        const std::function<void(VkCommandBuffer, std::uint32_t)>& stamp) {
+inline FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, Stamp before,
+                                        Stamp after) {
+  // The frame before may still run: its trace and copies before this frame's builds, clears and writes.
+  auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                          VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                           VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                       0, 1, &barrier, 0, nullptr, 0, nullptr);
+  m_image->record_init(cmd);  // recorded once per image, in the first frame that uses it
+  m_outputs->record_init(cmd);
   const FrameWork work = m_structures->record(cmd);  // each structure build ends with a barrier for the trace
-  m_bindings->upload();
+  m_bindings->record_upload(cmd);
   m_outputs->record_clear(cmd);
-  record_trace(*m_ctx, cmd, *m_pipeline, m_bindings->sets(), *m_sbt, width, height, m_bindings->push(),
-               std::function<void(VkCommandBuffer)>([&](VkCommandBuffer c) { stamp(c, 0); }),
-               std::function<void(VkCommandBuffer)>([&](VkCommandBuffer c) { stamp(c, 1); }));
+  record_trace(*m_ctx, cmd, *m_pipeline, m_bindings->sets(), *m_sbt, width, height, m_bindings->push(), before, after);
   return work;
 }
 
 inline FrameWork Renderer::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) {
   prepare(width, height, "Renderer::record");
-  return record_frame(cmd, width, height, [](VkCommandBuffer, std::uint32_t) {});
+  return record_frame(cmd, width, height, {}, {});
+}
+
+inline FrameTicket Renderer::submit(std::uint32_t width, std::uint32_t height, Readback readback) {
+  return submit_as(width, height, readback, "Renderer::submit");
+}
+
+inline FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32_t height, Readback readback, std::string_view op) {
+  prepare(width, height, op);
+  FrameSlot& slot = m_ring->begin();
+  const auto host_start = Clock::now();
+  SlotFrame& info = m_slot_frames[slot.index];
+  info.readback = readback;
+  info.timed = false;
+  info.frame.width = width;
+  info.frame.height = height;
+  info.frame.trace_ms = 0;
+  info.frame.work = record_frame(slot.cmd, width, height, {m_ring.get(), &slot, 0}, {m_ring.get(), &slot, 1});
+  info.frame.tlas_refit = info.frame.work.tlas_builds + info.frame.work.tlas_updates > 0;
+  if (readback != Readback::none) {
+    const VkDeviceSize outputs = readback == Readback::all ? m_outputs->bytes() : 0;
+    Buffer& buffer = m_ring->readback(slot, m_image->bytes() + outputs);
+    m_image->record_copy(slot.cmd, buffer, 0);
+    if (outputs > 0) m_outputs->record_copy(slot.cmd, buffer, m_image->bytes());
+  }
+  info.frame.host_ms = ms_since(host_start);
+  info.submitted = Clock::now();
+  return {m_ring->submit(slot)};
+}
+
+inline std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(FrameTicket frame, std::string_view op) {
+  FrameSlot& slot = m_ring->slot_of(frame.number, op);
+  m_ring->wait(slot);
+  SlotFrame& info = m_slot_frames[slot.index];
+  if (!info.timed) {
+    info.frame.trace_ms = m_ctx->timestamp_period_ns() > 0 ? m_ring->trace_ms(slot) : ms_since(info.submitted);
+    info.timed = true;
+  }
+  return {&slot, &info};
+}
+
+inline Frame Renderer::wait(FrameTicket frame) { return finished(frame, "Renderer::wait").second->frame; }
+
+inline std::span<const std::uint8_t> Renderer::rgba(FrameTicket frame) {
+  auto [slot, info] = finished(frame, "Renderer::rgba");
+  if (info->readback == Readback::none) {
+    throw UsageError("Renderer::rgba: frame " + std::to_string(frame.number) +
+                     " was submitted with Readback::none; submit it with Readback::rgba (the default) to read it");
+  }
+  const std::size_t bytes = std::size_t{info->frame.width} * info->frame.height * 4;
+  return {static_cast<const std::uint8_t*>(slot->readback->data()), bytes};
+}
+
+inline void Renderer::read_rgba(FrameTicket frame, std::span<std::uint8_t> out) {
+  const std::span<const std::uint8_t> pixels = rgba(frame);
+  if (out.size() < pixels.size()) {
+    const Frame& f = m_slot_frames[m_ring->slot_of(frame.number, "Renderer::read_rgba").index].frame;
+    throw UsageError("Renderer::read_rgba: the span holds " + std::to_string(out.size()) + " bytes but frame " +
+                     std::to_string(frame.number) + " (" + std::to_string(f.width) + "x" + std::to_string(f.height) +
+                     ") needs " + std::to_string(pixels.size()) + " (width * height * 4); give a span of at least that");
+  }
+  std::memcpy(out.data(), pixels.data(), pixels.size());
+}
+
+inline std::span<const std::uint8_t> Renderer::output_bytes(FrameTicket frame, Output which, std::string_view op) {
+  auto [slot, info] = finished(frame, op);
+  if (info->readback != Readback::all) {
+    throw UsageError(std::string(op) + ": frame " + std::to_string(frame.number) +
+                     " was not submitted with Readback::all; submit it so to read its outputs");
+  }
+  // The outputs follow the image, in the plan's order, each width * height pixels of its format.
+  const std::size_t pixels = std::size_t{info->frame.width} * info->frame.height;
+  std::size_t at = pixels * 4;
+  for (const PlannedOutput& p : m_plan.outputs()) {
+    const std::size_t bytes = pixels * storage_pixel_bytes(output_format(p.output));
+    if (p.output == which) return {static_cast<const std::uint8_t*>(slot->readback->data()) + at, bytes};
+    at += bytes;
+  }
+  throw UsageError(std::string(op) + ": the scene does not ask for output '" + std::string(proceduray::name(which)) +
+                   "'; add it with Scene::set_outputs");
+}
+
+template <class T>
+std::span<const T> Renderer::output(FrameTicket frame, Output which) {
+  static_assert(std::is_same_v<T, float> || std::is_same_v<T, std::uint32_t>,
+                "Renderer::output: outputs are float (t, normal) or std::uint32_t (ids, steps, flags)");
+  const bool is_float = which == Output::t || which == Output::normal;
+  if (is_float != std::is_same_v<T, float>) {
+    throw UsageError(std::string("Renderer::output: output '") + std::string(proceduray::name(which)) + "' holds " +
+                     (is_float ? "float" : "std::uint32_t") + " values; ask for output<" +
+                     (is_float ? "float" : "std::uint32_t") + ">");
+  }
+  const std::span<const std::uint8_t> bytes = output_bytes(frame, which, "Renderer::output");
+  return {reinterpret_cast<const T*>(bytes.data()), bytes.size() / sizeof(T)};
 }
 
 inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool readback) {
-  prepare(width, height, "Renderer::render");
-  Frame frame{width, height, {}, 0, 0, false, {}, {}};
-  const VkQueryPool queries = m_queries.get();
-  const auto host_start = Clock::now();
-  const auto wall_start = host_start;
-  m_ctx->submit([&](VkCommandBuffer cmd) {
-    if (queries != VK_NULL_HANDLE) vkCmdResetQueryPool(cmd, queries, 0, 2);
-    frame.work = record_frame(cmd, width, height, [&](VkCommandBuffer c, std::uint32_t query) {
-      if (queries == VK_NULL_HANDLE) return;
-      vkCmdWriteTimestamp(c, query == 0 ? VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT : VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT,
-                          queries, query);
-    });
-    frame.host_ms = ms_since(host_start);
-  });
-  frame.tlas_refit = frame.work.tlas_builds + frame.work.tlas_updates > 0;
-  if (queries != VK_NULL_HANDLE) {
-    std::uint64_t stamps[2] = {};
-    check(vkGetQueryPoolResults(m_ctx->device(), queries, 0, 2, sizeof stamps, stamps, sizeof stamps[0],
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-          "vkGetQueryPoolResults", "trace timestamps");
-    frame.trace_ms = static_cast<double>(stamps[1] - stamps[0]) * m_ctx->timestamp_period_ns() * 1e-6;
-  } else {
-    frame.trace_ms = ms_since(wall_start);
-  }
+  const FrameTicket ticket = submit_as(width, height, readback ? Readback::all : Readback::none, "Renderer::render");
+  Frame frame = wait(ticket);
   if (readback) {
-    frame.rgba = m_image->read();
-    frame.outputs = m_outputs->read();
+    const std::span<const std::uint8_t> pixels = rgba(ticket);
+    frame.rgba.assign(pixels.begin(), pixels.end());
+    if (!m_outputs->empty()) {
+      frame.outputs = m_outputs->read(static_cast<const std::uint8_t*>(m_ring->slot_of(ticket.number, "Renderer::render")
+                                                                          .readback->data()) + pixels.size());
+    }
   }
   return frame;
 }

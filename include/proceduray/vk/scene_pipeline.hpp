@@ -18,9 +18,11 @@
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
+#include <proceduray/vk/spirv_cache.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -39,8 +41,17 @@ struct RendererOptions {
   std::function<std::string(ShaderStage, const std::string& name)> declarations;
   /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
   std::string extra_declarations;
-  std::filesystem::path pipeline_cache;  ///< cache file; empty (default): none
+  /// Keep compiled shaders and the driver's pipeline cache on disk (default on): a second start
+  /// skips glslang and most of the driver's compile. Off: neither is read nor written.
+  bool cache = true;
+  /// Where: default empty, default_cache_dir() ($XDG_CACHE_HOME/proceduray, else ~/.cache/proceduray).
+  std::filesystem::path cache_dir;
+  /// The pipeline cache file; empty (default): one per device in the cache folder (when `cache`).
+  std::filesystem::path pipeline_cache;
   BuildOptions blas{};                   ///< BLAS builds (SceneAcceleration); default compacted, fast trace
+  /// Frames a Renderer keeps in flight, 1..max_frames_in_flight (8); default 2: the host records
+  /// one frame while the device traces the one before.
+  std::uint32_t frames_in_flight = 2;
 };
 
 /// What making the pipeline cost, in milliseconds of wall time.
@@ -48,6 +59,8 @@ struct PipelineTimings {
   double compile_ms = 0;         ///< GLSL to SPIR-V (glslang)
   double pipeline_ms = 0;        ///< vkCreateRayTracingPipelinesKHR
   bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
+  std::uint32_t spirv_cached = 0;    ///< stages whose SPIR-V came from the cache
+  std::uint32_t spirv_compiled = 0;  ///< stages glslang compiled
 };
 
 /// The plan's groups as pipeline groups, indices into the plan's stages (in the plan's order,
@@ -155,29 +168,40 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
   PipelineTimings t;
   PipelineDesc desc;
   std::vector<StageTraces> traces;
+  const std::filesystem::path cache_dir =
+      !options.cache ? std::filesystem::path() : !options.cache_dir.empty() ? options.cache_dir : default_cache_dir();
+  SpirvCache spirv_cache(cache_dir.empty() ? cache_dir : cache_dir / "spirv");
   auto start = Clock::now();
   for (const PlannedStage& stage : planned.stages) {
     const std::string path = find_shader(options.shader_dirs, stage.shader);
     std::string preamble = (options.declarations ? options.declarations(stage.stage, stage.shader)
                                                  : stage.declarations) + options.extra_declarations;
-    std::vector<std::uint32_t> spirv = compile_glsl({.stage = stage.stage, .name = path, .code = read_text_file(path),
-                                                     .preamble = std::move(preamble)});
+    std::vector<std::uint32_t> spirv = spirv_cache.compile(
+        {.stage = stage.stage, .name = path, .code = read_text_file(path), .preamble = std::move(preamble)});
     traces.push_back(stage_traces(plan, static_cast<std::uint32_t>(traces.size()), trace_info(spirv)));
     desc.add_shader(stage.stage, std::move(spirv));
   }
   t.compile_ms = ms_since(start);
+  t.spirv_cached = spirv_cache.hits();
+  t.spirv_compiled = spirv_cache.misses();
   const std::uint32_t depth = pipeline_depth(ctx, plan, traces);  // throws
   desc.groups = shader_groups(planned);
   desc.set_layouts.assign(set_layouts.begin(), set_layouts.end());
   desc.push_constant_size = push_size;
   desc.max_recursion_depth = depth;
-  PipelineCache cache(ctx, options.pipeline_cache);
+  std::filesystem::path pipeline_file = options.pipeline_cache;
+  if (pipeline_file.empty() && !cache_dir.empty()) pipeline_file = cache_dir / default_pipeline_cache_name(ctx);
+  PipelineCache cache(ctx, pipeline_file);
   desc.cache = cache.get();
   start = Clock::now();
   auto pipeline = std::make_unique<Pipeline>(ctx, desc);
   t.pipeline_ms = ms_since(start);
   t.pipeline_cached = cache.loaded();
-  cache.save();
+  try {
+    cache.save();
+  } catch (const EnvironmentError& e) {  // a cache that cannot be written costs time, never the run
+    std::fprintf(stderr, "proceduray: warning: %s; running without a saved pipeline cache\n", e.what());
+  }
   if (timings != nullptr) *timings = t;
   return pipeline;
 }

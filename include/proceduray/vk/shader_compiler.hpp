@@ -47,6 +47,12 @@ struct ShaderSource {
   std::string preamble;  ///< text inserted after #version (defines, generated declarations); default empty
 };
 
+/// A file an #include resolved to, and the text read from it (what a SPIR-V cache checks).
+struct IncludedFile {
+  std::filesystem::path path;
+  std::string text;
+};
+
 /// A shader that did not compile: what() holds the name, the first error line and glslang's log.
 class ShaderCompileError : public UsageError {
  public:
@@ -183,7 +189,8 @@ inline void ensure_glslang() {
 /// Resolves #include "x" against the includer's folder, then the include folders.
 class Includer final : public glslang::TShader::Includer {
  public:
-  explicit Includer(std::vector<std::filesystem::path> dirs) : m_dirs(std::move(dirs)) {}
+  Includer(std::vector<std::filesystem::path> dirs, std::vector<IncludedFile>* included)
+      : m_dirs(std::move(dirs)), m_included(included) {}
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
     std::vector<std::filesystem::path> candidates;
@@ -195,6 +202,7 @@ class Includer final : public glslang::TShader::Includer {
       std::error_code ec;
       if (!std::filesystem::is_regular_file(path, ec)) continue;
       auto* text = new std::string(read_text_file(path));
+      if (m_included != nullptr) m_included->push_back({path, *text});
       return new IncludeResult(path.string(), text->data(), text->size(), text);
     }
     return nullptr;  // glslang reports "could not be found" with the line
@@ -210,6 +218,7 @@ class Includer final : public glslang::TShader::Includer {
 
  private:
   std::vector<std::filesystem::path> m_dirs;
+  std::vector<IncludedFile>* m_included;
 };
 
 inline int first_error_line(const std::string& log) {
@@ -223,7 +232,8 @@ inline int first_error_line(const std::string& log) {
 }  // namespace detail
 
 /// Compiles one shader to SPIR-V (entry point "main"); throws ShaderCompileError on failure.
-inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source) {
+/// `included`, when given, receives every file an #include read.
+inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source, std::vector<IncludedFile>* included = nullptr) {
   detail::ensure_glslang();
   const EShLanguage stage = detail::glslang_stage(source.stage);
   glslang::TShader shader(stage);
@@ -239,7 +249,7 @@ inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source) {
 
   std::vector<std::filesystem::path> dirs = source.include_dirs;
   if (auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
-  detail::Includer includer(dirs);
+  detail::Includer includer(dirs, included);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
     std::string log = shader.getInfoLog();

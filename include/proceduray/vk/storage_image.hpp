@@ -9,6 +9,10 @@
 //   ctx.submit([&](VkCommandBuffer cmd) { depth.record_clear(cmd, {.float32 = {-1.0f}}); });
 //   std::vector<float> t = depth.read_as<float>();        // width * height floats
 //
+//   proceduray::vk::StorageImage later(ctx, 640, 480, VK_FORMAT_R8G8B8A8_UNORM, proceduray::vk::StorageImage::recorded);
+//   later.record_init(frame_cmd);                          // its layout transition, in your frame (no wait)
+//   later.record_copy(frame_cmd, readback, 0);             // after a trace: into a buffer, no second submit
+//
 // A zero size throws proceduray::UsageError, one past maxImageDimension2D proceduray::DeviceLimitError,
 // a format other than those five UsageError.
 #pragma once
@@ -37,7 +41,11 @@ inline std::uint32_t storage_pixel_bytes(VkFormat format) {
 /// A 2D image in the general layout, with a view for storage writes (formats: storage_pixel_bytes).
 class StorageImage {
  public:
-  StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format = VK_FORMAT_R8G8B8A8_UNORM);
+  /// How the image reaches the general layout: `now` submits the transition and waits;
+  /// `recorded` leaves it to record_init() in the caller's command buffer (a renderer's frame).
+  enum Init { now, recorded };
+  StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format = VK_FORMAT_R8G8B8A8_UNORM,
+               Init init = now);
 
   VkImage get() const noexcept { return m_image.get(); }
   VkImageView view() const noexcept { return m_view.get(); }
@@ -58,6 +66,15 @@ class StorageImage {
   /// Records a clear of the whole image to `value` (float32 or uint32 as the format is), with
   /// barriers from and to ray-tracing shader writes; the image stays in the general layout.
   void record_clear(VkCommandBuffer cmd, const VkClearColorValue& value) const;
+  /// Records the transition from the undefined to the general layout (an image made `recorded`),
+  /// once: later calls record nothing. Whatever the image held is discarded.
+  void record_init(VkCommandBuffer cmd);
+  /// Bytes of the whole image, tightly packed (width * height * pixel bytes).
+  VkDeviceSize bytes() const noexcept { return VkDeviceSize{m_width} * m_height * storage_pixel_bytes(m_format); }
+  /// Records, after the trace that writes the image, a copy of it to `buffer` at `offset` and the
+  /// barrier that makes it visible to the host once the submit's fence signals. The image is back
+  /// in the general layout afterwards.
+  void record_copy(VkCommandBuffer cmd, const Buffer& buffer, VkDeviceSize offset) const;
 
  private:
   void transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
@@ -71,9 +88,11 @@ class StorageImage {
   DeviceHandle<VkImage> m_image;
   DeviceHandle<VkImageView> m_view;
   mutable std::unique_ptr<Buffer> m_staging;  // readback target, made at the first read()
+  bool m_initialised = false;
 };
 
-inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format)
+inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format,
+                                  Init init)
     : m_ctx(&ctx), m_width(width), m_height(height), m_format(format) {
   if (storage_pixel_bytes(format) == 0) {
     throw UsageError("StorageImage: format " + std::to_string(static_cast<int>(format)) +
@@ -122,10 +141,45 @@ inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::
   check(vkCreateImageView(ctx.device(), &view_info, nullptr, &view), "vkCreateImageView");
   m_view = own(ctx.device(), view, vkDestroyImageView);
 
-  ctx.submit([&](VkCommandBuffer cmd) {
-    transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
-               VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  });
+  if (init == now) ctx.submit([&](VkCommandBuffer cmd) { record_init(cmd); });
+}
+
+inline void StorageImage::record_init(VkCommandBuffer cmd) {
+  if (m_initialised) return;
+  transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
+             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_TRANSFER_BIT);
+  m_initialised = true;
+}
+
+inline void StorageImage::record_copy(VkCommandBuffer cmd, const Buffer& buffer, VkDeviceSize offset) const {
+  if (offset > buffer.size() || bytes() > buffer.size() - offset) {
+    throw UsageError("StorageImage::record_copy: " + std::to_string(bytes()) + " bytes at offset " +
+                     std::to_string(offset) + " overrun the buffer's " + std::to_string(buffer.size()) +
+                     " bytes; give a buffer of at least width * height * pixel bytes");
+  }
+  // GENERAL -> TRANSFER_SRC for the copy (the layout copies are fast from), then back for the next trace.
+  transition(cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  VkBufferImageCopy copy{};
+  copy.bufferOffset = offset;
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {m_width, m_height, 1};
+  vkCmdCopyImageToBuffer(cmd, m_image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.get(), 1, &copy);
+  transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
+             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_TRANSFER_BIT);
+  auto to_host = make<VkBufferMemoryBarrier>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER);
+  to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  to_host.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  to_host.buffer = buffer.get();
+  to_host.offset = offset;
+  to_host.size = bytes();
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &to_host, 0,
+                       nullptr);
 }
 
 inline void StorageImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
@@ -155,31 +209,16 @@ inline void StorageImage::record_clear(VkCommandBuffer cmd, const VkClearColorVa
 }
 
 inline std::vector<std::uint8_t> StorageImage::read() const {
-  const VkDeviceSize size = VkDeviceSize{m_width} * m_height * storage_pixel_bytes(m_format);
-  // Made once: a renderer reads its frames back every frame.
-  if (!m_staging) m_staging = std::make_unique<Buffer>(*m_ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  m_ctx->submit([&](VkCommandBuffer cmd) {
-    // GENERAL -> TRANSFER_SRC for the copy, then back so the next trace can write again.
-    transition(cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
-               VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT);
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {m_width, m_height, 1};
-    vkCmdCopyImageToBuffer(cmd, m_image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m_staging->get(), 1, &copy);
-    transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
-               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-    auto to_host = make<VkBufferMemoryBarrier>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER);
-    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    to_host.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    to_host.buffer = m_staging->get();
-    to_host.size = VK_WHOLE_SIZE;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &to_host,
-                         0, nullptr);
-  });
-  const auto* bytes = static_cast<const std::uint8_t*>(m_staging->data());
-  return std::vector<std::uint8_t>(bytes, bytes + size);
+  if (!m_initialised) {
+    throw UsageError("StorageImage::read: the image was made StorageImage::recorded and its record_init() was "
+                     "never submitted; record it before the first trace");
+  }
+  // Made once, host-cached: a renderer reads its frames back every frame.
+  if (!m_staging) m_staging = std::make_unique<Buffer>(*m_ctx, bytes(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, Buffer::host_cached);
+  m_ctx->submit([&](VkCommandBuffer cmd) { record_copy(cmd, *m_staging, 0); });
+  m_staging->invalidate();
+  const auto* data = static_cast<const std::uint8_t*>(m_staging->data());
+  return std::vector<std::uint8_t>(data, data + bytes());
 }
 
 }  // namespace proceduray::vk

@@ -2,6 +2,6 @@
 using namespace doc_vk;
 
 // @declarations
-void usage(const proceduray::vk::Context& ctx, std::span<const VkAabbPositionsKHR> boxes) {
+void usage(const proceduray::vk::Context& ctx, std::span<const VkAabbPositionsKHR> boxes, VkDeviceSize bytes) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_vk;
 
 // @declarations
-void usage(const proceduray::vk::Context& ctx, proceduray::vk::DescriptorSet& set) {
+void usage(const proceduray::vk::Context& ctx, proceduray::vk::DescriptorSet& set, VkCommandBuffer frame_cmd, const proceduray::vk::Buffer& readback) {
   // @statements
 }

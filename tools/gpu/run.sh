@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Runs on the GPU machine, from the repository root, after tools/gpu/pack.sh here: unpacks the
+# loader, then runs every Vulkan test binary (validation layer on) and the benchmarks, one log
+# per step in $OUT (else gpu-logs/), and a summary in run.log.
+#
+#   bash tools/gpu/run.sh              # everything
+#   bash tools/gpu/run.sh tests        # only the test binaries
+#   bash tools/gpu/run.sh bench        # only the benchmarks
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+what=${1:-all}
+out=${OUT:-gpu-logs}
+mkdir -p "$out" /tmp/proceduray-test-output
+for f in .gl/*.deb; do dpkg -x "$f" / ; done
+ldconfig
+# The ICD file when the loader does not find it by itself (seen on the H100/H200 machines).
+if [ -f /usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json ] && [ -z "${VK_DRIVER_FILES:-}" ]; then
+  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+fi
+export GLIBC_TUNABLES=glibc.rtld.optional_static_tls=65536
+export PROCEDURAY_SHADER_DIR=$PWD/shaders PROCEDURAY_EXAMPLES_DIR=$PWD/examples PROCEDURAY_TEST_SOURCE_DIR=$PWD/tests
+export PROCEDURAY_GLSL_DIR=$PWD/gpu/02_paper_scene_glsl PROCEDURAY_BENCH_SHADER_DIR=$PWD/tools/bench/shaders
+export PROCEDURAY_TEST_OUTPUT=/tmp/proceduray-test-output PROCEDURAY_DEVICE=gpu
+# NVIDIA's own shader cache is off until its folder exists.
+mkdir -p "${__GL_SHADER_DISK_CACHE_PATH:-$HOME/.cache/nvidia}"
+
+log=$out/run.log
+: > "$log"
+step() {  # step NAME COMMAND...: runs it, its output in NAME.txt, one summary line in run.log
+  local name=$1
+  shift
+  local start=$SECONDS
+  "$@" > "$out/$name.txt" 2>&1
+  local rc=$?
+  printf '%-28s rc=%d %4ds  %s\n' "$name" "$rc" $((SECONDS - start)) \
+    "$(grep -E 'test cases:|Status:' "$out/$name.txt" | tr '\n' ' ')" >> "$log"
+}
+(nvidia-smi --query-gpu=name,driver_version --format=csv,noheader || true) > "$out/gpu.txt" 2>&1
+if [ "$what" = all ] || [ "$what" = tests ]; then
+  for t in gpu/proceduray_*_tests; do step "$(basename "$t")" "$t"; done
+fi
+if [ "$what" = all ] || [ "$what" = bench ]; then
+  [ -x gpu/bench_frame_loop ] && step bench_frame_loop gpu/bench_frame_loop --device gpu --sizes 1024,4096 --frames 200
+  if [ -x gpu/02_paper_scene ]; then
+    # A cold start, then a second one with both caches warm (SPIR-V and pipeline, in XDG_CACHE_HOME).
+    export XDG_CACHE_HOME=/tmp/proceduray-cache
+    rm -rf "$XDG_CACHE_HOME"
+    step paper_cold_start gpu/02_paper_scene --device gpu --frames 1
+    step paper_warm_start gpu/02_paper_scene --device gpu --frames 1
+  fi
+  [ -x gpu/bench_soak ] && step bench_soak gpu/bench_soak --device gpu --frames 2000 --every 500
+fi
+cat "$out/gpu.txt" "$log"
