@@ -384,7 +384,7 @@ TEST_CASE("renderer frame loop allocates nothing in steady state") {
   const std::uint64_t made = allocations.load() - before;  // read before CHECK, which allocates itself
   CHECK(made == 0);
   CHECK(traced > 0.0);
-  CHECK(pixels[0] == 230);  // the last frame's sky: 0.9 red
+  CHECK(std::abs(int{pixels[0]} - 230) <= 1);  // the last frame's sky: 0.9 red (229.5, rounded either way)
 }
 
 TEST_CASE("renderer bad input: frames in flight 0 or over the limit, stale, unread and too-small reads are refused") {

@@ -8,7 +8,9 @@
 // The scene: a boxes x boxes grid of small boxes in one geometry, one instance, rays along +z
 // (tools/bench/shaders; PROCEDURAY_BENCH_SHADER_DIR overrides the built-in path). Both loops do
 // the same per iteration: submit frame i, then wait for frame i-1 and, with readback, copy its
-// RGBA8 pixels into a caller-owned vector. Prints per size and readback mode the medians of the
+// RGBA8 pixels into a caller-owned vector ("rgba8 copy") or only looks at them where they are
+// ("rgba8 view": Renderer::rgba's span, the raw side's mapped pointer; both read the first and
+// last byte). Prints per size and readback mode the medians of the
 // iteration's wall time and of the trace's GPU time (timestamps) for each side and their ratios
 // (library / raw), the raw side's GPU copy time, and the library's host time per frame.
 // Fails (exit 1) when the two sides' pixels differ.
@@ -131,7 +133,7 @@ int main(int argc, char** argv) {
 
   std::printf("device: %s; %ux%u boxes, %u frames in flight, %d frames per side in blocks of %d\n", ctx.name().c_str(),
               boxes_per_side, boxes_per_side, in_flight, frames, block);
-  std::printf("%6s %9s | %10s %10s %6s | %10s %10s %6s | %9s %9s\n", "size", "readback", "lib wall", "raw wall",
+  std::printf("%6s %10s | %10s %10s %6s | %10s %10s %6s | %9s %9s\n", "size", "readback", "lib wall", "raw wall",
               "ratio", "lib gpu", "raw gpu", "ratio", "raw copy", "lib host");
   int status = 0;
   for (const std::uint32_t size : sizes) {
@@ -143,18 +145,30 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bench_frame_loop: the library's and the raw reference's pixels differ at %ux%u\n", size, size);
       status = 1;
     }
-    for (const bool readback : {false, true}) {
+    enum Mode { none, copy, view };
+    for (const Mode mode : {none, view, copy}) {
+      const bool readback = mode != none;
       Side lib, ref;
+      unsigned touched = 0;  // what the view reads, printed so it is not optimised away
       for (int done = 0; done < frames; done += block) {
         const int n = std::min(block, frames - done);
-        // Library block: frame i submitted, frame i-1 waited for (and read); one extra frame primes the pipe.
-        pr::vk::FrameTicket prev = library.submit(size, size, readback ? pr::vk::Readback::rgba : pr::vk::Readback::none);
+        // Library block: frame i submitted, then frame i-1 waited for (and read), so the host
+        // records one frame while the device traces the one before; with one frame in flight
+        // there is no before: frame i is waited for itself.
+        const auto lib_submit = [&] {
+          return library.submit(size, size, readback ? pr::vk::Readback::rgba : pr::vk::Readback::none);
+        };
+        pr::vk::FrameTicket prev = in_flight > 1 ? lib_submit() : pr::vk::FrameTicket{};
         for (int i = 0; i < n; ++i) {
           const auto start = Clock::now();
-          const pr::vk::FrameTicket t =
-              library.submit(size, size, readback ? pr::vk::Readback::rgba : pr::vk::Readback::none);
-          if (readback) library.read_rgba(prev, lib_pixels);
-          const pr::vk::Frame f = library.wait(prev);
+          const pr::vk::FrameTicket t = lib_submit();
+          const pr::vk::FrameTicket done_frame = in_flight > 1 ? prev : t;
+          if (mode == copy) library.read_rgba(done_frame, lib_pixels);
+          if (mode == view) {
+            const std::span<const std::uint8_t> pixels = library.rgba(done_frame);
+            touched += pixels.front() + pixels.back();
+          }
+          const pr::vk::Frame f = library.wait(done_frame);
           lib.wall.push_back(ms(start, Clock::now()));
           lib.gpu.push_back(f.trace_ms);
           lib.host.push_back(f.host_ms);
@@ -162,22 +176,29 @@ int main(int argc, char** argv) {
         }
         library.wait(prev);
         // Raw block, the same loop.
-        raw::RawTracer::Ticket rprev = reference.submit(size, size, readback);
+        raw::RawTracer::Ticket rprev = in_flight > 1 ? reference.submit(size, size, readback) : raw::RawTracer::Ticket{};
         for (int i = 0; i < n; ++i) {
           const auto start = Clock::now();
           const raw::RawTracer::Ticket t = reference.submit(size, size, readback);
-          if (readback) reference.read(rprev, raw_pixels);
-          const auto [trace, copy] = reference.gpu_ms(rprev);
+          const raw::RawTracer::Ticket done_frame = in_flight > 1 ? rprev : t;
+          if (mode == copy) reference.read(done_frame, raw_pixels);
+          if (mode == view) {
+            const std::span<const std::uint8_t> pixels = reference.view(done_frame);
+            touched += pixels.front() + pixels.back();
+          }
+          const auto [trace, copy_ms] = reference.gpu_ms(done_frame);
           ref.wall.push_back(ms(start, Clock::now()));
           ref.gpu.push_back(trace);
-          ref.copy.push_back(copy);
+          ref.copy.push_back(copy_ms);
           rprev = t;
         }
         reference.gpu_ms(rprev);
       }
       const double lw = median(lib.wall), rw = median(ref.wall), lg = median(lib.gpu), rg = median(ref.gpu);
-      std::printf("%6u %9s | %10.3f %10.3f %6.3f | %10.3f %10.3f %6.3f | %9.3f %9.4f\n", size,
-                  readback ? "rgba8" : "none", lw, rw, lw / rw, lg, rg, lg / rg, median(ref.copy), median(lib.host));
+      const char* names[] = {"none", "rgba8 copy", "rgba8 view"};
+      std::printf("%6u %10s | %10.3f %10.3f %6.3f | %10.3f %10.3f %6.3f | %9.3f %9.4f   (%u)\n", size,
+                  names[mode == none ? 0 : mode == copy ? 1 : 2], lw, rw, lw / rw, lg, rg, lg / rg, median(ref.copy),
+                  median(lib.host), touched % 10);
       std::fflush(stdout);
     }
   }

@@ -60,6 +60,12 @@ class RawTracer {
   Ticket submit(std::uint32_t width, std::uint32_t height, bool readback);
   /// Waits for the frame and copies its pixels out (readback frames).
   void read(const Ticket& t, std::span<std::uint8_t> out);
+  /// Waits for the frame and views its pixels in the mapped readback memory (readback frames).
+  std::span<const std::uint8_t> view(const Ticket& t) {
+    Slot& s = m_slots[t.slot];
+    wait(s);
+    return {static_cast<const std::uint8_t*>(s.readback.mapped), std::size_t{t.width} * t.height * 4};
+  }
   /// Waits for the frame; GPU ms of its trace and of its copy (0 without readback).
   std::pair<double, double> gpu_ms(const Ticket& t);
   void wait_idle() { vkQueueWaitIdle(m_queue); }

@@ -45,8 +45,9 @@ if [ "$what" = all ] || [ "$what" = bench ]; then
     # A cold start, then a second one with both caches warm (SPIR-V and pipeline, in XDG_CACHE_HOME).
     export XDG_CACHE_HOME=/tmp/proceduray-cache
     rm -rf "$XDG_CACHE_HOME"
-    step paper_cold_start gpu/02_paper_scene --device gpu --frames 1
-    step paper_warm_start gpu/02_paper_scene --device gpu --frames 1
+    step paper_cold_start gpu/02_paper_scene --device gpu --frames 1 --out /tmp/paper.png
+    for i in 1 2 3 4 5; do step paper_warm_start_$i gpu/02_paper_scene --device gpu --frames 1 --out /tmp/paper.png; done
+    grep -h "shader and pipeline work" "$out"/paper_*_start*.txt >> "$log"
   fi
   [ -x gpu/bench_soak ] && step bench_soak gpu/bench_soak --device gpu --frames 2000 --every 500
 fi
