@@ -95,7 +95,6 @@ class RawTracer {
   void wait(Slot& s);
 
   VkDevice m_device;
-  VkPhysicalDevice m_physical;
   VkQueue m_queue;
   VkPhysicalDeviceMemoryProperties m_memory{};
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR m_rt{};
@@ -239,7 +238,7 @@ inline VkAccelerationStructureKHR RawTracer::build(const VkAccelerationStructure
 inline RawTracer::RawTracer(VkDevice device, VkPhysicalDevice physical, VkQueue queue, std::uint32_t family,
                             const std::array<Shader, 4>& shaders, std::span<const Box> boxes,
                             std::uint32_t frames_in_flight)
-    : m_device(device), m_physical(physical), m_queue(queue) {
+    : m_device(device), m_queue(queue) {
   vkGetPhysicalDeviceMemoryProperties(physical, &m_memory);
   m_rt = chain<VkPhysicalDeviceRayTracingPipelinePropertiesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR);
