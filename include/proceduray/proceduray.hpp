@@ -37,12 +37,14 @@
 #include <proceduray/vk/descriptors.hpp>
 #include <proceduray/vk/device_selection.hpp>
 #include <proceduray/vk/error.hpp>
+#include <proceduray/vk/frame_ring.hpp>
 #include <proceduray/vk/handle.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
 #include <proceduray/vk/renderer.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
+#include <proceduray/vk/spirv_cache.hpp>
 #include <proceduray/version.hpp>
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/structs.hpp>

@@ -3,6 +3,10 @@
 #include "renderer_scene.hpp"
 #include "test_context.hpp"
 
+#include <proceduray/image/png.hpp>
+
+#include <stb_image.h>
+
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
@@ -20,13 +24,25 @@
 namespace {
 std::atomic<std::uint64_t> allocations{0};
 }
+// Every non-aligned form is replaced, so every allocation and free here goes through malloc and
+// free (ASan would otherwise see a library's nothrow new freed by this delete).
 void* operator new(std::size_t bytes) {
   allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(bytes == 0 ? 1 : bytes)) return p;
   throw std::bad_alloc();
 }
+void* operator new[](std::size_t bytes) { return operator new(bytes); }
+void* operator new(std::size_t bytes, const std::nothrow_t&) noexcept {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return std::malloc(bytes == 0 ? 1 : bytes);
+}
+void* operator new[](std::size_t bytes, const std::nothrow_t& tag) noexcept { return operator new(bytes, tag); }
 void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 using namespace proceduray;
 using renderer_scene::RendererScene;
@@ -347,6 +363,15 @@ TEST_CASE("renderer frame loop: frames in flight give render()'s images, each wi
       std::vector<std::uint8_t> copy(rgba.size());
       renderer.read_rgba(tickets[i], copy);
       CHECK(copy == expected[i % 3]);
+      if (i == 5) {  // a PNG straight from the view, read back unchanged
+        const std::filesystem::path png = test_output_dir("renderer_frame_loop") / "view.png";
+        write_png(png, width, height, rgba);
+        int w = 0, h = 0, channels = 0;
+        unsigned char* back = stbi_load(png.string().c_str(), &w, &h, &channels, 4);
+        REQUIRE(back != nullptr);
+        CHECK(std::vector<std::uint8_t>(back, back + rgba.size()) == expected[i % 3]);
+        stbi_image_free(back);
+      }
       const vk::Frame f = renderer.wait(tickets[i]);
       CHECK(f.width == width);
       CHECK(f.trace_ms > 0.0);

@@ -151,3 +151,28 @@ TEST_CASE("spirv cache: a renderer's second start reads its SPIR-V and pipeline 
   CHECK(off.timings().spirv_cached == 0);
   CHECK_FALSE(std::filesystem::exists(dir / "off"));
 }
+
+TEST_CASE("spirv cache bad input: a renderer whose cache folder cannot be written warns and renders uncached") {
+  TestContext t;
+  RendererScene s;
+  const std::filesystem::path dir = test_output_dir("spirv_cache_renderer_unwritable");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  write(dir / "a_file", "x");  // the cache folder would be below a regular file: it cannot be made
+  vk::RendererOptions options = RendererScene::options();
+  std::vector<std::uint8_t> uncached;
+  {
+    options.cache = false;
+    vk::Renderer renderer(t.ctx, s.table(t.ctx), options);
+    renderer_scene::prepare(renderer, 32, 32);
+    uncached = renderer.render(32, 32).rgba;
+  }
+  options.cache = true;
+  options.cache_dir = dir / "a_file" / "cache";
+  vk::Renderer renderer(t.ctx, s.table(t.ctx), options);
+  CHECK(renderer.timings().spirv_compiled == 5);
+  CHECK_FALSE(renderer.timings().pipeline_cached);
+  renderer_scene::prepare(renderer, 32, 32);
+  CHECK(renderer.render(32, 32).rgba == uncached);
+  CHECK_FALSE(std::filesystem::exists(dir / "a_file" / "cache"));
+}

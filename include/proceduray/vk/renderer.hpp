@@ -298,21 +298,22 @@ inline FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32_t height
   prepare(width, height, op);
   FrameSlot& slot = m_ring->begin();
   const auto host_start = Clock::now();
-  SlotFrame& info = m_slot_frames[slot.index];
-  info.readback = readback;
-  info.timed = false;
-  info.frame.width = width;
-  info.frame.height = height;
-  info.frame.trace_ms = 0;
-  info.frame.work = record_frame(slot.cmd, width, height, {m_ring.get(), &slot, 0}, {m_ring.get(), &slot, 1});
-  info.frame.tlas_refit = info.frame.work.tlas_builds + info.frame.work.tlas_updates > 0;
+  // The slot's record is written only once the frame is recorded: a frame that fails to record
+  // leaves the slot's earlier frame as it was.
+  Frame frame{width, height, {}, 0, 0, false, {}, {}};
+  frame.work = record_frame(slot.cmd, width, height, {m_ring.get(), &slot, 0}, {m_ring.get(), &slot, 1});
+  frame.tlas_refit = frame.work.tlas_builds + frame.work.tlas_updates > 0;
   if (readback != Readback::none) {
     const VkDeviceSize outputs = readback == Readback::all ? m_outputs->bytes() : 0;
     Buffer& buffer = m_ring->readback(slot, m_image->bytes() + outputs);
     m_image->record_copy(slot.cmd, buffer, 0);
     if (outputs > 0) m_outputs->record_copy(slot.cmd, buffer, m_image->bytes());
   }
-  info.frame.host_ms = ms_since(host_start);
+  frame.host_ms = ms_since(host_start);
+  SlotFrame& info = m_slot_frames[slot.index];
+  info.frame = frame;
+  info.readback = readback;
+  info.timed = false;
   info.submitted = Clock::now();
   return {m_ring->submit(slot)};
 }
