@@ -33,8 +33,11 @@ struct PaperScene : pr::SceneOf<Interface> {
                            std::to_string(max_depth_supported) + " radiance segments (primary included)");
     }
     set_outputs(outputs);
-    const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
-    add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
+    const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss", .flags = pr::RayFlags::opaque});
+    // Shadow rays accept any hit and run no closest hit: the miss shader clears `occluded`.
+    add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss",
+                                      .flags = pr::RayFlags::terminate_on_first_hit | pr::RayFlags::skip_closest_hit |
+                                               pr::RayFlags::opaque});
     const auto material = add_local_signature<MaterialRecord>("material");
     set_global_signature(pr::default_global_signature({constants_slot}));
     add_raygen("raygen.rgen");
@@ -55,7 +58,7 @@ struct PaperScene : pr::SceneOf<Interface> {
 
   /// Shaders from this example's folder, compiled with the declarations the build wrote into
   /// PAPER_GLSL_DIR (glsl/generate.cpp, run with no device; defined by CMake and Meson for every
-  /// target that includes this header), then the flags and the AABBs. The build writes the
+  /// target that includes this header), then the flags. The build writes the
   /// scene without outputs; with outputs the renderer derives the declarations at run time.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
     pr::vk::RendererOptions o{.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
@@ -65,10 +68,10 @@ struct PaperScene : pr::SceneOf<Interface> {
     return o;
   }
 
-  /// What every shader gets after the generated declarations: the flags, the AABBs, this
-  /// scene's depth limit (max_depth_limit) and, when iterative, PAPER_ITERATIVE.
+  /// What every shader gets after the generated declarations (which hold the AABBs): the flags,
+  /// this scene's depth limit (max_depth_limit) and, when iterative, PAPER_ITERATIVE.
   std::string declarations() const {
-    return extra_declarations + pr::glsl_const("max_depth_limit", m_depth_limit) + pr::glsl_aabb_consts(*this) +
+    return extra_declarations + pr::glsl_const("max_depth_limit", m_depth_limit) +
            (m_tracing == Tracing::iterative ? "#define PAPER_ITERATIVE 1\n" : "");
   }
 

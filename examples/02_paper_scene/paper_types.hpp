@@ -2,14 +2,15 @@
 // scene's fixed numbers (AABBs, placements, materials, default knobs).
 //
 //   paper::SceneConstants constants = paper::default_constants(1024, 768, time);   // binding 2
-//   // each shader compiles with glsl_for(plan, stage, name) + paper::extra_declarations
-//   //                         + proceduray::glsl_aabb_consts(scene) (pacman_aabb_min, ...)
+//   // each shader compiles with glsl_for(plan, stage, name) (the AABBs too: pacman_aabb_min, ...)
+//   //                         + paper::extra_declarations
 //
 // Conventions the shaders in shaders/ (next to this file) rely on:
 //   set 0: binding 0 TLAS (raygen, closest hit); binding 1 rgba8 storage image (raygen);
 //          binding 2 uniform SceneConstants, scalar layout (raygen, miss, closest hit, intersection).
-//   Rays:  radiance = 0 (miss "radiance.rmiss"), shadow = 1 (miss "shadow.rmiss"); traceRayEXT
-//          uses sbtRecordOffset = missIndex = <ray>_ray and sbtRecordStride = ray_count (glsl_for).
+//   Rays:  radiance = 0 (miss "radiance.rmiss"), shadow = 1 (miss "shadow.rmiss"); shaders trace
+//          with the generated trace_radiance / trace_shadow (glsl_for), which fill the flags the
+//          scene declares, sbtRecordOffset = missIndex = <ray>_ray and sbtRecordStride = ray_count.
 //   Hit groups (radiance | shadow):
 //          Plane      triangles   closest hit plane.rchit         | no shaders
 //          Pacman     procedural  shade.rchit + pacman.rint        | pacman.rint
@@ -145,7 +146,7 @@ inline SceneConstants default_constants(std::uint32_t width, std::uint32_t heigh
   return c;
 }
 
-/// The C++ constants the shaders use beyond what the scene derives (glsl_for, glsl_aabb_consts);
+/// The C++ constants the shaders use beyond what the scene derives (glsl_for, with the AABBs);
 /// PaperScene::declarations adds its depth limit and tracing mode.
 inline const std::string extra_declarations = PROCEDURAY_GLSL_CONSTS(flag_shadows, flag_reflections, flag_object_ids);
 

@@ -40,8 +40,12 @@ class D3d12Scene : public pr::SceneOf<Interface> {
     for (const Primitive& p : primitives) validate(p);
     set_outputs(outputs);
     m_primitives.assign(primitives.begin(), primitives.end());
-    m_radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss"});
-    m_shadow = add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
+    m_radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss", .flags = pr::RayFlags::opaque});
+    // The sample's shadow flags: accept the first hit, skip closest hit, cull back faces.
+    m_shadow = add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss",
+                                                 .flags = pr::RayFlags::terminate_on_first_hit |
+                                                          pr::RayFlags::skip_closest_hit | pr::RayFlags::opaque |
+                                                          pr::RayFlags::cull_back_facing});
     m_record = add_local_signature<PrimitiveRecord>("primitive");
     add_raygen("raygen.rgen");
     if (tracing == Tracing::recursive) set_max_recursion_depth(d3d12::max_recursion_depth);

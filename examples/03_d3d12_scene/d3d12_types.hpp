@@ -6,8 +6,9 @@
 //
 // Conventions the shaders in shaders/ (next to this file) rely on:
 //   set 0: binding 0 TLAS; binding 1 rgba8 storage image; binding 2 uniform SceneConstants (scalar).
-//   Rays:  radiance = 0 (miss radiance.rmiss), shadow = 1 (miss shadow.rmiss); traceRayEXT uses
-//          sbtRecordOffset = missIndex = ray index and sbtRecordStride = ray_count = 2.
+//   Rays:  radiance = 0 (miss radiance.rmiss), shadow = 1 (miss shadow.rmiss); shaders trace with
+//          the generated trace_radiance / trace_shadow: the declared flags, sbtRecordOffset =
+//          missIndex = ray index and sbtRecordStride = ray_count = 2.
 //   Hit groups, as in the sample (radiance | shadow):
 //          plane            triangles   plane.rchit                     | no shaders
 //          analytic         procedural  shade.rchit + analytic.rint     | analytic.rint

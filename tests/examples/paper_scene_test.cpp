@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -246,4 +248,41 @@ TEST_CASE("paper scene declarations written at build time with no device equal t
   Paper p(t.ctx);
   const vk::Frame ids = p.render(0.0f, paper::flag_object_ids);
   CHECK(at(ids, pixel_of(paper::pacman_placements[0].translation)).r == paper::pacman0_id);
+}
+
+namespace {
+/// glsl_files_main's exit code and what it printed on stdout and stderr.
+struct MainRun {
+  int code;
+  std::string out, err;
+};
+MainRun generator(std::vector<std::string> args) {
+  args.insert(args.begin(), "generator");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  std::ostringstream out, err;
+  std::streambuf* old_out = std::cout.rdbuf(out.rdbuf());
+  std::streambuf* old_err = std::cerr.rdbuf(err.rdbuf());
+  const int code = glsl_files_main(paper::PaperScene{}, static_cast<int>(argv.size()), argv.data());
+  std::cout.rdbuf(old_out);
+  std::cerr.rdbuf(old_err);
+  return {code, out.str(), err.str()};
+}
+}  // namespace
+
+TEST_CASE("paper scene generator --names prints what a shader can call, and refuses an unknown shader") {
+  const MainRun names = generator({"--names", "closest_hit", "shade.rchit"});
+  CHECK(names.code == 0);
+  CHECK(names.out.find("RadiancePayload trace_radiance(vec3 origin, float tmin, vec3 direction, float tmax, "
+                       "RadiancePayload p)\n") != std::string::npos);
+  CHECK(names.out.find("void trace_shadow(vec3 origin, float tmin, vec3 direction, float tmax)\n") != std::string::npos);
+  CHECK(names.out.find("rayPayloadInEXT RadiancePayload payload;\n") != std::string::npos);
+  CHECK(names.out.find("const vec3 pacman_aabb_min = vec3(") != std::string::npos);  // derived, not appended
+  const MainRun list = generator({"--names"});
+  CHECK(list.code == 0);
+  CHECK(list.out.find("closest_hit shade.rchit\n") != std::string::npos);
+  const MainRun unknown = generator({"--names", "closest_hit", "nope.rchit"});
+  CHECK(unknown.code == 1);
+  CHECK(unknown.err.find("the scene has no closest_hit shader \"nope.rchit\"; its stages are:") != std::string::npos);
+  CHECK(unknown.err.find("raygen raygen.rgen") != std::string::npos);
 }

@@ -11,19 +11,23 @@ TEST_CASE("aabb glsl declares each procedural geometry's box under its id") {
   scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}));
   const Aabb pacman{glm::vec3(-1.0f, -0.25f, -1.0f), glm::vec3(1.0f, 0.75f, 1.0f)};
   scene.add_geometry("pac-man", GeometryDesc::procedural({pacman}));
-  CHECK(glsl_aabb_consts(scene) == "const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);\n"
+  CHECK(glsl_aabb_consts(scene) == "#ifndef PROCEDURAY_AABB_CONSTS\n#define PROCEDURAY_AABB_CONSTS\n"
+                                   "const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);\n"
                                    "const vec3 julia_aabb_max = vec3(1.5, 1.5, 1.5);\n"
                                    "const vec3 pac_man_aabb_min = vec3(-1.0, -0.25, -1.0);\n"
-                                   "const vec3 pac_man_aabb_max = vec3(1.0, 0.75, 1.0);\n");
+                                   "const vec3 pac_man_aabb_max = vec3(1.0, 0.75, 1.0);\n"
+                                   "#endif\n");
 }
 
 TEST_CASE("aabb glsl declares arrays for a geometry of several boxes") {
   Scene scene;
   const Aabb first{glm::vec3(0.0f), glm::vec3(1.0f)}, second{glm::vec3(2.0f), glm::vec3(3.5f)};
   scene.add_geometry("balls", GeometryDesc::procedural({first, second}));
-  CHECK(glsl_aabb_consts(scene) == "const uint balls_aabb_count = 2u;\n"
+  CHECK(glsl_aabb_consts(scene) == "#ifndef PROCEDURAY_AABB_CONSTS\n#define PROCEDURAY_AABB_CONSTS\n"
+                                   "const uint balls_aabb_count = 2u;\n"
                                    "const vec3 balls_aabb_min[2] = vec3[](vec3(0.0, 0.0, 0.0), vec3(2.0, 2.0, 2.0));\n"
-                                   "const vec3 balls_aabb_max[2] = vec3[](vec3(1.0, 1.0, 1.0), vec3(3.5, 3.5, 3.5));\n");
+                                   "const vec3 balls_aabb_max[2] = vec3[](vec3(1.0, 1.0, 1.0), vec3(3.5, 3.5, 3.5));\n"
+                                   "#endif\n");
 }
 
 TEST_CASE("aabb glsl prints floats that read back exactly") {
@@ -34,3 +38,4 @@ TEST_CASE("aabb glsl prints floats that read back exactly") {
   CHECK(glsl.find(glsl_const("odd_aabb_max", glm::vec3(odd))) != std::string::npos);
   CHECK(glsl_aabb_consts(Scene{}).empty());
 }
+

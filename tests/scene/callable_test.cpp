@@ -117,17 +117,21 @@ TEST_CASE("glsl_for declares callable data for callers and the callee") {
   CHECK(has(raygen, "struct TintCall {"));
   CHECK(has(raygen, "const uint tint_callable = 0u;"));
   CHECK(has(raygen, "const uint noise_callable = 1u;"));
-  CHECK(has(raygen, "layout(location = 0) callableDataEXT TintCall tint_call;"));
-  CHECK(has(raygen, "layout(location = 1) callableDataEXT NoiseCall noise_call;"));
-  CHECK(has(glsl_for(*f.sbt, ShaderStage::closest_hit, "tri.rchit"), "callableDataEXT NoiseCall noise_call;"));
-  CHECK(has(glsl_for(*f.sbt, ShaderStage::miss, "sky.rmiss"), "callableDataEXT TintCall tint_call;"));
+  CHECK(has(raygen, "layout(location = 0) callableDataEXT TintCall tint_data;"));
+  CHECK(has(raygen, "layout(location = 1) callableDataEXT NoiseCall noise_data;"));
+  // The call function fills the callable index and data location from the declaration.
+  CHECK(has(raygen, "TintCall tint_call(TintCall d) { tint_data = d; executeCallableEXT(tint_callable, 0); return tint_data; }"));
+  CHECK(has(raygen, "NoiseCall noise_call(NoiseCall d) { noise_data = d; executeCallableEXT(noise_callable, 1);"));
+  CHECK(has(glsl_for(*f.sbt, ShaderStage::closest_hit, "tri.rchit"), "callableDataEXT NoiseCall noise_data;"));
+  CHECK(has(glsl_for(*f.sbt, ShaderStage::miss, "sky.rmiss"), "callableDataEXT TintCall tint_data;"));
   const std::string tint = glsl_for(*f.sbt, ShaderStage::callable, "tint.rcall");
-  CHECK(has(tint, "layout(location = 0) callableDataInEXT TintCall call;"));
+  CHECK(has(tint, "layout(location = 2) callableDataInEXT TintCall call;"));  // past the outgoing ones
   CHECK(has(tint, "layout(shaderRecordEXT, scalar) buffer TintArgsRootArguments {"));
   CHECK_FALSE(has(tint, "callableDataEXT TintCall"));  // its own location is the incoming data
-  CHECK(has(tint, "layout(location = 1) callableDataEXT NoiseCall noise_call;"));
+  CHECK(has(tint, "layout(location = 1) callableDataEXT NoiseCall noise_data;"));
+  CHECK_FALSE(has(tint, "tint_call("));
   CHECK_FALSE(has(tint, "rayPayload"));  // callables do not trace rays
   const std::string noise = glsl_for(*f.sbt, ShaderStage::callable, "noise.rcall");
-  CHECK(has(noise, "layout(location = 1) callableDataInEXT NoiseCall call;"));
+  CHECK(has(noise, "layout(location = 2) callableDataInEXT NoiseCall call;"));
   CHECK_FALSE(has(noise, "shaderRecordEXT"));
 }

@@ -117,20 +117,86 @@ TEST_CASE("glsl_for declares payloads by stage") {
   CHECK(has(raygen, "layout(location = 0) rayPayloadEXT Light light;"));
   CHECK(has(raygen, "layout(location = 1) rayPayloadEXT Shadow shadow_ray;"));
   CHECK_FALSE(has(raygen, "rayPayloadInEXT"));
-  CHECK(has(f(ShaderStage::miss, "shadow.rmiss"), "layout(location = 1) rayPayloadInEXT Shadow payload;"));
-  CHECK(has(f(ShaderStage::miss, "sky.rmiss"), "layout(location = 0) rayPayloadInEXT Light payload;"));
+  // Incoming payloads sit at location ray_count, past every outgoing one.
+  CHECK(has(f(ShaderStage::miss, "shadow.rmiss"), "layout(location = 2) rayPayloadInEXT Shadow payload;"));
+  CHECK(has(f(ShaderStage::miss, "sky.rmiss"), "layout(location = 2) rayPayloadInEXT Light payload;"));
+  CHECK(has(f(ShaderStage::miss, "sky.rmiss"), "layout(location = 1) rayPayloadEXT Shadow shadow_ray;"));  // misses may trace
   const std::string hit = f(ShaderStage::closest_hit, "ball.rchit");
-  CHECK(has(hit, "layout(location = 0) rayPayloadInEXT Light payload;"));
+  CHECK(has(hit, "layout(location = 2) rayPayloadInEXT Light payload;"));
   CHECK(has(hit, "layout(location = 1) rayPayloadEXT Shadow shadow_ray;"));  // to trace shadow rays
-  CHECK_FALSE(has(hit, "rayPayloadEXT Light"));  // location 0 is the incoming payload
+  CHECK(has(hit, "layout(location = 0) rayPayloadEXT Light light;"));  // its own ray type too: reflections
   CHECK(has(hit, "hitAttributeEXT Hit hit;"));
   CHECK(has(hit, "layout(shaderRecordEXT, scalar) buffer MaterialRootArguments {"));
   const std::string isect = f(ShaderStage::intersection, "ball.rint");
   CHECK(has(isect, "hitAttributeEXT Hit hit;"));
   CHECK_FALSE(has(isect, "rayPayload"));
+  CHECK_FALSE(has(isect, "trace_"));  // intersection and any-hit shaders cannot trace
   const std::string floor = f(ShaderStage::closest_hit, "floor.rchit");
   CHECK(has(floor, "OtherRootArguments"));
   CHECK_FALSE(has(floor, "hitAttributeEXT"));  // triangles use the built-in barycentrics
+}
+
+TEST_CASE("glsl_for gives tracing stages a trace function per ray type") {
+  const Fixture f;
+  for (const auto& [stage, shader] : {std::pair{ShaderStage::raygen, "main.rgen"}, std::pair{ShaderStage::miss, "sky.rmiss"},
+                                      std::pair{ShaderStage::closest_hit, "ball.rchit"}}) {
+    CAPTURE(shader);
+    const std::string glsl = f(stage, shader);
+    // flags, mask, SBT offset = ray index, stride = ray count, miss index = ray index, location = ray index
+    CHECK(has(glsl, "void trace_light(vec3 origin, float tmin, vec3 direction, float tmax) { traceRayEXT(tlas, "
+                    "light_flags, light_mask, light_ray, ray_count, light_ray, origin, tmin, direction, tmax, 0); }"));
+    CHECK(has(glsl, "void trace_shadow_ray(vec3 origin, float tmin, vec3 direction, float tmax) { traceRayEXT(tlas, "
+                    "shadow_ray_flags, shadow_ray_mask, shadow_ray_ray, ray_count, shadow_ray_ray, origin, tmin, "
+                    "direction, tmax, 1); }"));
+    // The explicit-payload form copies p in and returns what the shaders left.
+    CHECK(has(glsl, "Shadow trace_shadow_ray(vec3 origin, float tmin, vec3 direction, float tmax, Shadow p) { "
+                    "shadow_ray = p; trace_shadow_ray(origin, tmin, direction, tmax); return shadow_ray; }"));
+  }
+  for (const auto& [stage, shader] : {std::pair{ShaderStage::any_hit, "cut.rahit"}, std::pair{ShaderStage::intersection, "ball.rint"}}) {
+    if (stage == ShaderStage::any_hit) continue;  // the fixture has no any-hit shader
+    CHECK_FALSE(has(f(stage, shader), "traceRayEXT"));
+  }
+}
+
+TEST_CASE("glsl_for declares no trace functions without a named acceleration structure") {
+  Scene scene;
+  auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
+  auto group = scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
+  scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 1, 2}}));
+  auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, ""}}});
+  scene.add_raygen("main.rgen");
+  scene.set_global_signature(global);
+  scene.set_default_hit(light, group);
+  const Plan plan = compile(scene);
+  const std::string raygen = glsl_for(plan, ShaderStage::raygen, "main.rgen");
+  CHECK(has(raygen, "rayPayloadEXT Light light;"));
+  CHECK_FALSE(has(raygen, "trace_light"));
+}
+
+TEST_CASE("glsl_for puts the scene's procedural boxes in every stage, once however often appended") {
+  const Fixture f;
+  for (const auto& [stage, shader] : {std::pair{ShaderStage::raygen, "main.rgen"}, std::pair{ShaderStage::intersection, "ball.rint"},
+                                      std::pair{ShaderStage::closest_hit, "floor.rchit"}}) {
+    const std::string glsl = f(stage, shader);
+    CHECK(has(glsl, "const vec3 ball_aabb_min = vec3("));
+    CHECK(has(glsl, "#ifndef PROCEDURAY_AABB_CONSTS"));  // a hand-appended copy is skipped
+    CHECK_FALSE(has(glsl, "floor_aabb"));  // triangles have no boxes
+  }
+}
+
+TEST_CASE("glsl_summary lists a shader's generated names without struct bodies or function bodies") {
+  const Fixture f;
+  const std::string names = glsl_summary(f(ShaderStage::closest_hit, "ball.rchit"));
+  CHECK(has(names, "struct Light\n"));
+  CHECK_FALSE(has(names, "vec3 colour;"));  // members stay in the declarations
+  CHECK(has(names, "const uint light_ray = 0u;\n"));
+  CHECK(has(names, "void trace_light(vec3 origin, float tmin, vec3 direction, float tmax)\n"));
+  CHECK(has(names, "Shadow trace_shadow_ray(vec3 origin, float tmin, vec3 direction, float tmax, Shadow p)\n"));
+  CHECK(has(names, "layout(location = 2) rayPayloadInEXT Light payload;\n"));
+  CHECK(has(names, "hitAttributeEXT Hit hit;\n"));
+  CHECK(has(names, "buffer MaterialRootArguments arguments\n"));
+  CHECK(has(names, "uniform GlobalsUniform globals\n"));
+  CHECK_FALSE(has(names, "traceRayEXT"));
 }
 
 TEST_CASE("glsl_for names a shader used with two payload types") {

@@ -154,6 +154,13 @@ TEST_CASE("add_object rejects a bad object before changing the scene or its entr
   CHECK_THROWS_WITH_AS(add_object<Hit>(r.scene, "floor", floor, r.material, {m}),
                        doctest::Contains("call add_object<void>"), HitGroupKindError);
   unchanged();
+  // Boxes without an attribute type: the shaders would read an undeclared `hit`.
+  CHECK_THROWS_WITH_AS(add_object(r.scene, "bare", spheres_desc(r), r.material, {m}),
+                       doctest::Contains("object \"bare\" is procedural (AABBs) but declares no attribute type"),
+                       HitGroupKindError);
+  CHECK_THROWS_WITH_AS(add_object(r.scene, "bare", spheres_desc(r), r.material, {m}),
+                       doctest::Contains("call add_object<YourAttributes>(...)"), HitGroupKindError);
+  unchanged();
   // An intersection shader on triangles.
   ObjectDesc clipped = floor;
   clipped.intersection = "clip.rint";

@@ -12,9 +12,12 @@
 #include <cstring>
 #include <fstream>
 #include <new>
+#include <filesystem>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 // Counts C++ allocations, so a test can show that the frame loop makes none in steady state.
 // GCC sees the inlined malloc behind every `new` of this file freed by free() and warns.
@@ -255,6 +258,60 @@ TEST_CASE("renderer names a missing shader and the folders it searched") {
   options.shader_dirs = {test_output_dir("no_shaders_here")};
   CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, s.table(t.ctx), options), doctest::Contains("shader 'scene.rgen'"),
                        UsageError);
+}
+
+namespace {
+/// A copy of the test shaders with `file` replaced by `text` (and `extra` files beside it).
+std::filesystem::path shaders_with(const char* folder, const char* file, const std::string& text,
+                                   const std::vector<std::pair<const char*, std::string>>& extra = {}) {
+  const std::filesystem::path dir = test_output_dir(folder);
+  std::filesystem::copy(test_source_dir() / "vk" / "shaders", dir,
+                        std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / file, std::ios::trunc) << text;
+  for (const auto& [name, body] : extra) std::ofstream(dir / name, std::ios::trunc) << body;
+  return dir;
+}
+std::string build_error(vk::Context& ctx, RendererScene& s, const std::filesystem::path& dir) {
+  auto options = RendererScene::options();
+  options.shader_dirs = {dir};
+  options.cache = false;
+  try {
+    vk::Renderer renderer(ctx, s.table(ctx), options);
+  } catch (const vk::ShaderCompileError& e) {
+    return e.what();
+  }
+  return "built";
+}
+}  // namespace
+
+TEST_CASE("renderer shader errors name the stage, the hit groups, and the included file and line") {
+  TestContext t;
+  RendererScene s;
+  const auto dir = shaders_with("error_in_include", "ball.rchit", "#version 460\n#include \"colour.glsl\"\n"
+                                "void main() { payload.rgb = ball_colour(); }\n",
+                                {{"colour.glsl", "// line 1\nvec3 ball_colour() {\n  return nothing_here;\n}\n"}});
+  const std::string what = build_error(t.ctx, s, dir);
+  CAPTURE(what);
+  CHECK(what.find("make_scene_pipeline: closest_hit shader '" + (dir / "ball.rchit").string() +
+                  "' (hit groups \"ball\" (ray \"primary\")) failed to compile at " + (dir / "colour.glsl").string() +
+                  ":3: 'nothing_here' : undeclared identifier") != std::string::npos);
+}
+
+TEST_CASE("renderer bad input: a trace function of an undeclared ray, or in a stage that cannot trace") {
+  TestContext t;
+  RendererScene s;
+  const std::string glow = build_error(
+      t.ctx, s, shaders_with("trace_undeclared", "ball.rchit", "#version 460\nvoid main() {\n"
+                             "  payload = trace_glow(vec3(0.0), 0.0, vec3(1.0, 0.0, 0.0), 1.0, payload);\n}\n"));
+  CAPTURE(glow);
+  CHECK(glow.find("trace_glow is not generated: the scene declares no ray \"glow\" (its rays: \"primary\")") !=
+        std::string::npos);
+  const std::string isect = build_error(
+      t.ctx, s, shaders_with("trace_in_intersection", "ball.rint", "#version 460\nvoid main() {\n"
+                             "  trace_primary(vec3(0.0), 0.0, vec3(1.0, 0.0, 0.0), 1.0);\n}\n"));
+  CAPTURE(isect);
+  CHECK(isect.find("trace_primary is not generated for intersection shaders") != std::string::npos);
+  // The generated function itself works: the unchanged shaders trace with it elsewhere (features test).
 }
 
 TEST_CASE("renderer pipeline cache is reused and a corrupt one is rebuilt") {

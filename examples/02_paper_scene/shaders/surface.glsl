@@ -10,9 +10,8 @@
 // local (1 - f) + f reflected, level by level.
 //
 // Needs the generated `constants`, `arguments` (MaterialRecord), `payload` (incoming radiance)
-// and `shadow` (outgoing shadow payload). The reflection is traced with the incoming payload
-// itself (Vulkan allows a rayPayloadInEXT as traceRayEXT's payload; glslang rejects a second
-// payload at location 0), saving and restoring it around the call.
+// and trace_shadow / trace_radiance, which trace with the flags the scene declares for each ray
+// (paper_scene.hpp). The reflection goes out in its own payload: `payload` is never touched.
 #ifndef PAPER_SURFACE_GLSL
 #define PAPER_SURFACE_GLSL
 
@@ -23,28 +22,23 @@
 #ifndef PAPER_ITERATIVE
 /// 1 when nothing lies between origin and origin + dist * dir, else 0.
 float light_visibility(vec3 origin, vec3 dir, float dist) {
-  shadow.occluded = 1u;  // stays 1 unless the shadow miss shader runs
   // Started gl_HitTEXT behind the surface (tmin skips that stretch), so t, and the marching
   // threshold that grows with it, counts the whole path from the eye: the pixel's true footprint.
   float path = gl_HitTEXT;
-  traceRayEXT(tlas, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT,
-              0xFF, shadow_ray, ray_count, shadow_ray, origin - path * dir, path, dir, path + dist, 1);
-  return shadow.occluded != 0u ? 0.0 : 1.0;
+  // occluded stays 1 unless the shadow miss shader runs
+  ShadowPayload seen = trace_shadow(origin - path * dir, path, dir, path + dist, ShadowPayload(1u));
+  return seen.occluded != 0u ? 0.0 : 1.0;
 }
 
 /// The colour a radiance ray from origin along dir brings back, one level deeper, counting
 /// `weight` in the pixel.
 vec3 reflected_colour(vec3 origin, vec3 dir, float weight) {
-  RadiancePayload saved = payload;
-  payload.colour = vec3(0.0);
-  payload.depth = saved.depth + 1u;
-  payload.weight = weight;
+  RadiancePayload next = payload;
+  next.colour = vec3(0.0);
+  next.depth = payload.depth + 1u;
+  next.weight = weight;
   float path = gl_HitTEXT;  // as in light_visibility: t counts the path from the eye
-  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, radiance_ray, ray_count, radiance_ray, origin - path * dir, path, dir,
-              path + ray_far, 0);
-  vec3 colour = payload.colour;
-  payload = saved;
-  return colour;
+  return trace_radiance(origin - path * dir, path, dir, path + ray_far, next).colour;
 }
 #endif
 

@@ -1,7 +1,7 @@
 // Lighting shared by plane.rchit and shade.rchit: Phong, a shadow ray towards the point light
-// (the sample's flags: accept the first hit, skip closest hit, cull back faces), and one
-// Schlick-weighted reflection. The reflection reuses the incoming payload (glslang rejects a
-// second payload at location 0), saved and restored around the call. With D3D12_ITERATIVE
+// (the sample's flags, declared with the ray in d3d12_scene.hpp: accept the first hit, skip
+// closest hit, cull back faces), and one Schlick-weighted reflection in its own payload
+// (trace_radiance's explicit-payload form), so `payload` is never touched. With D3D12_ITERATIVE
 // (Tracing::iterative) nothing here traces: the terms go back in the payload for raygen's loop.
 #ifndef D3D12_SURFACE_GLSL
 #define D3D12_SURFACE_GLSL
@@ -12,22 +12,16 @@
 
 #ifndef D3D12_ITERATIVE
 float light_visibility(vec3 origin, vec3 dir, float dist) {
-  shadow.occluded = 1u;
-  traceRayEXT(tlas, gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT |
-              gl_RayFlagsCullBackFacingTrianglesEXT, 0xFF, shadow_ray, ray_count, shadow_ray, origin, 0.0, dir, dist, 1);
-  return shadow.occluded != 0u ? 0.0 : 1.0;
+  return trace_shadow(origin, 0.0, dir, dist, ShadowPayload(1u)).occluded != 0u ? 0.0 : 1.0;
 }
 
 vec3 reflected_colour(vec3 origin, vec3 dir) {
-  RadiancePayload saved = payload;
-  payload.colour = vec3(0.0);
-  payload.depth = saved.depth + 1u;
-  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, radiance_ray, ray_count, radiance_ray, origin, 0.0, dir, ray_far, 0);
-  vec3 colour = payload.colour;
-  uint nonfinite = payload.nonfinite;
-  payload = saved;
-  payload.nonfinite |= nonfinite;
-  return colour;
+  RadiancePayload next = payload;
+  next.colour = vec3(0.0);
+  next.depth = payload.depth + 1u;
+  next = trace_radiance(origin, 0.0, dir, ray_far, next);
+  payload.nonfinite |= next.nonfinite;
+  return next.colour;
 }
 #endif
 

@@ -10,7 +10,9 @@
 // Why: the boxes are already in the scene; writing them again as GLSL constants by hand is a second
 // copy that drifts (a shader clipping to a smaller box than the BLAS's cuts the object, a larger one
 // wastes steps). Names are the geometry id made a GLSL identifier; values print as glsl_const does,
-// so they read back as the same floats. Append the result to RendererOptions::extra_declarations.
+// so they read back as the same floats. compile() puts them in every stage's declarations
+// (glsl_for.hpp); the text is guarded by PROCEDURAY_AABB_CONSTS, so a second copy appended by
+// hand (RendererOptions::extra_declarations, as before they were derived) declares nothing twice.
 #pragma once
 
 #include <string>
@@ -18,7 +20,7 @@
 #include <vector>
 
 #include "proceduray/scene/geometry.hpp"
-#include "proceduray/scene/glsl_for.hpp"
+#include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/scene/scene.hpp"
 #include "proceduray/shader/glsl_codegen.hpp"
 
@@ -41,18 +43,20 @@ inline std::string glsl_corners(const std::string& name, const std::vector<Aabb>
 }  // namespace detail
 
 /// `<id>_aabb_min` and `<id>_aabb_max` of every procedural geometry (arrays and `<id>_aabb_count`
-/// for a geometry of several boxes), in registration order; "" when there is none.
+/// for a geometry of several boxes), in registration order, inside an #ifndef guard; "" when
+/// there is none.
 inline std::string glsl_aabb_consts(const Scene& scene) {
   std::string out;
   for (std::uint32_t g = 0; g < scene.geometries().size(); ++g) {
     const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;
     if (desc.kind != GeometryKind::procedural) continue;
-    const std::string name = detail::glsl_identifier(scene.geometries().name(g));
+    const std::string name = glsl_identifier(scene.geometries().name(g));
     if (desc.aabbs.size() > 1) out += glsl_const(name + "_aabb_count", static_cast<std::uint32_t>(desc.aabbs.size()));
     out += detail::glsl_corners(name + "_aabb_min", desc.aabbs, false);
     out += detail::glsl_corners(name + "_aabb_max", desc.aabbs, true);
   }
-  return out;
+  if (out.empty()) return out;
+  return "#ifndef PROCEDURAY_AABB_CONSTS\n#define PROCEDURAY_AABB_CONSTS\n" + out + "#endif\n";
 }
 
 }  // namespace proceduray

@@ -10,6 +10,9 @@
 // The generator is one line (examples/02_paper_scene/glsl/generate.cpp), built and run by
 // proceduray_generate_scene_glsl() (cmake/ProcedurayGlsl.cmake) or a Meson custom_target:
 //   int main(int argc, char** argv) { return proceduray::glsl_files_main(paper::PaperScene{}, argc, argv); }
+// The same program answers "what can this shader use?": `generator --names closest_hit shade.rchit`
+// prints glsl_summary of that stage's declarations (trace_<ray>, <callable>_call, payload, hit,
+// arguments, the bindings and constants), and `generator --names` lists the stages.
 #pragma once
 
 #include <exception>
@@ -24,6 +27,7 @@
 
 #include "proceduray/error.hpp"
 #include "proceduray/scene/compile.hpp"
+#include "proceduray/scene/glsl_for.hpp"
 
 namespace proceduray {
 
@@ -74,6 +78,32 @@ inline std::function<std::string(ShaderStage, const std::string&)> glsl_files(st
 /// folder argv[1], then the list of files into argv[1]/files.txt and, when given, argv[2] (a file
 /// a build system tracks as the output, e.g. Meson's custom_target). Returns 0, or 1 with a message.
 inline int glsl_files_main(const Scene& scene, int argc, char** argv) {
+  if (argc >= 2 && std::string_view(argv[1]) == "--names") {
+    try {
+      const Plan plan = compile(scene);
+      if (argc == 4) {
+        for (const PlannedStage& stage : plan.pipeline().stages) {
+          if (std::string_view(to_string(stage.stage)) == argv[2] && stage.shader == argv[3]) {
+            std::cout << glsl_summary(stage.declarations);
+            return 0;
+          }
+        }
+        std::cerr << "glsl_files_main --names: the scene has no " << argv[2] << " shader \"" << argv[3]
+                  << "\"; its stages are:\n";
+      } else if (argc != 2) {
+        std::cerr << "glsl_files_main --names: expected a stage and a shader (or nothing, for the list); got "
+                  << (argc - 2) << " arguments\n";
+        return 1;
+      }
+      for (const PlannedStage& stage : plan.pipeline().stages) {
+        (argc == 2 ? std::cout : std::cerr) << to_string(stage.stage) << " " << stage.shader << "\n";
+      }
+      return argc == 2 ? 0 : 1;
+    } catch (const std::exception& e) {
+      std::cerr << e.what() << "\n";
+      return 1;
+    }
+  }
   if (argc != 2 && argc != 3) {
     std::cerr << "glsl_files_main: expected the output folder and optionally the list file; got " << (argc - 1)
               << " arguments\n";

@@ -4,33 +4,46 @@
 //
 //   const proceduray::Plan plan = proceduray::compile(scene);
 //   std::string preamble = proceduray::glsl_for(plan, proceduray::ShaderStage::closest_hit, "shade.rchit");
+//   std::string names = proceduray::glsl_summary(preamble);   // one line per name, no struct bodies
 //
 // What a shader gets (names are the convention the shaders use):
 //   every stage   the structs of every registered type the scene uses; per ray type
 //                 `const uint <ray>_ray`, `<ray>_flags` and `<ray>_mask` (its RayDesc), and
-//                 `ray_count`; `layer_<name>` per layer; `<id>_callable` per callable; each
+//                 `ray_count`; `layer_<name>` per layer; `<id>_callable` per callable; the
+//                 `<geometry>_aabb_min`/`_max` of every procedural geometry (aabb_glsl.hpp); each
 //                 named binding of the global signature (acceleration structure, rgba8 storage
 //                 image, typed uniform, or a readonly storage buffer of T[] read as `<name>.data[i]`),
 //                 and its named push constant block (`<name>.member`); the per-pixel output
 //                 helpers output_t/normal/ids/steps/flags (outputs_glsl.hpp: empty macros for
 //                 outputs not asked for), and output_hit(n) in closest-hit and any-hit stages
-//   raygen        `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index,
-//                 and `callableDataEXT <Data> <id>_call` per callable, at location = its index
-//   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of,
-//                 and the callables' data
+//   tracing stages (raygen, miss, closest hit: the ones Vulkan lets trace)
+//                 `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index,
+//                 and per ray type (when the global signature names an acceleration structure)
+//                   void      trace_<ray>(vec3 origin, float tmin, vec3 direction, float tmax)
+//                   <Payload> trace_<ray>(vec3 origin, float tmin, vec3 direction, float tmax, <Payload> p)
+//                 which fill flags, mask, SBT offset and stride, miss index and payload location
+//                 from the ray's declaration; the second copies p in and returns what the shaders
+//                 left. A closest-hit shader has an outgoing payload of its own ray type too, so a
+//                 reflection needs no save and restore of `payload`.
+//   calling stages (raygen, miss, closest hit, callable)
+//                 `callableDataEXT <Data> <id>_data` per callable, at location = its index, and
+//                   <Data> <id>_call(<Data> d)   (copies d in, executeCallableEXT, returns the data)
+//   miss          `rayPayloadInEXT <Payload> payload` of the ray types it is the miss shader of
 //   closest hit   `rayPayloadInEXT <Payload> payload` of the rays whose records use it, the
-//                 group's `hitAttributeEXT <Attributes> hit`, the entries' `arguments` block (root arguments),
-//                 `rayPayloadEXT` for the other ray types (to trace shadow rays, say), and the
-//                 callables' data
-//   any hit       as closest hit, without outgoing payloads or callable data
+//                 group's `hitAttributeEXT <Attributes> hit`, the entries' `arguments` block (root arguments)
+//   any hit       payload, hit and arguments as closest hit; no tracing, no callables
 //   intersection  `hitAttributeEXT <Attributes> hit` and the entries' `arguments` block (root arguments)
-//   callable      `callableDataInEXT <Data> call` of the callables it implements, their
-//                 `arguments` block (root arguments), and the other callables' data
+//   callable      `callableDataInEXT <Data> call` of the callables it implements and their
+//                 `arguments` block (root arguments); the other callables as above
+// Incoming payloads and callable data sit at location ray_count (callable_count): past every
+// outgoing one, so the two never overlap. A shader calling trace_<ray> for a ray the scene does
+// not declare fails to compile, and the renderer's message names the ray and the declared ones.
 // compile() throws SceneError when one shader is used in ways that need two different types
 // (two payloads, attributes or record types), naming them: split the shader or unify the types.
 // Every block comes from shader/glsl_codegen.hpp, the one GLSL emitter.
 #pragma once
 
+#include "proceduray/scene/aabb_glsl.hpp"
 #include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/scene/outputs_glsl.hpp"
 #include "proceduray/scene/plan.hpp"
@@ -124,7 +137,7 @@ inline std::string common_declarations(const Scene& scene, const Plan& plan) {
     const PushConstantBlock& push = global->push_constants;
     if (push.type != nullptr && !push.name.empty()) out += glsl_push_constant(*push.type, glsl_identifier(push.name));
   }
-  return out + glsl_outputs(plan.outputs());
+  return out + glsl_aabb_consts(scene) + glsl_outputs(plan.outputs());
 }
 
 /// The record block of a shader whose records carry `types` (one type, or none).
@@ -133,15 +146,51 @@ inline std::string record_block(const std::vector<const TypeOps*>& types, std::s
   return t == nullptr ? std::string() : glsl_root_arguments(*t, "arguments");
 }
 
-/// Outgoing callable data of every callable but `skip` (the one a callable shader receives).
+/// Outgoing callable data of every callable but `skip` (the one a callable shader receives), and
+/// `<id>_call(d)` for each.
 inline std::string callable_data(const Scene& scene, std::uint32_t skip) {
   std::string text;
   for (std::uint32_t c = 0; c < scene.callables().size(); ++c) {
     if (c == skip) continue;
-    text += glsl_callable_data(c, *scene.callable(CallableId<>(c)).data_glsl,
-                               glsl_identifier(scene.callables().name(c)) + "_call");
+    const std::string name = glsl_identifier(scene.callables().name(c));
+    const std::string type(scene.callable(CallableId<>(c)).data_glsl->glsl_name);
+    text += glsl_callable_data(c, *scene.callable(CallableId<>(c)).data_glsl, name + "_data");
+    text += type + " " + name + "_call(" + type + " d) { " + name + "_data = d; executeCallableEXT(" + name +
+            "_callable, " + std::to_string(c) + "); return " + name + "_data; }\n";
   }
   return text;
+}
+
+/// The name of the acceleration structure the trace functions trace: the global signature's
+/// first named one, or "" (then there are no trace functions).
+inline std::string trace_target(const Plan& plan) {
+  const GlobalSignatureDesc* global = plan.global_signature();
+  if (global == nullptr) return {};
+  for (const Binding& b : global->bindings) {
+    if (b.kind == BindingKind::acceleration_structure && !b.name.empty()) return glsl_identifier(b.name);
+  }
+  return {};
+}
+
+/// What a tracing stage (raygen, miss, closest hit) gets: every ray's outgoing payload, at
+/// location = ray index, and its two trace functions.
+inline std::string tracing_declarations(const Scene& scene, const Plan& plan) {
+  std::string out;
+  const std::string tlas = trace_target(plan);
+  for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
+    const std::string name = glsl_identifier(scene.rays().name(r));
+    const TypeOps& payload = *scene.ray(RayId<>(r)).payload_glsl;
+    out += glsl_ray_payload(r, payload, name);
+    if (tlas.empty()) continue;
+    const std::string type(payload.glsl_name), params = "vec3 origin, float tmin, vec3 direction, float tmax";
+    // traceRayEXT(tlas, flags, mask, sbt offset, sbt stride, miss index, ..., payload location)
+    out += "void trace_" + name + "(" + params + ") { traceRayEXT(" + tlas + ", " + name + "_flags, " + name +
+           "_mask, " + name + "_ray, ray_count, " + name + "_ray, origin, tmin, direction, tmax, " +
+           std::to_string(r) + "); }\n";
+    out += type + " trace_" + name + "(" + params + ", " + type + " p) { " + name + " = p; trace_" + name +
+           "(origin, tmin, direction, tmax); return " + name + "; }\n";
+  }
+  return out;
 }
 
 /// The root arguments type of a record, or nullptr.
@@ -154,7 +203,6 @@ inline const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const
 /// Payload, attributes, record and outgoing payloads of a hit-group stage.
 inline std::string hit_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
   std::vector<const TypeOps*> payloads, attributes, records;
-  std::uint32_t location = no_index;
   for (const SbtRecord& rec : plan.records(SbtRegionKind::hit)) {
     if (rec.group == no_index) continue;
     const HitGroup& group = scene.hit_group(plan.pipeline().groups[rec.group].hit_group);
@@ -165,24 +213,18 @@ inline std::string hit_declarations(const Scene& scene, const Plan& plan, Shader
     attributes.push_back(group.attribute_glsl);
     records.push_back(arguments_type(scene, plan, rec));
     payloads.push_back(scene.ray(RayId<>(rec.ray)).payload_glsl);
-    location = std::min(location, rec.ray);
   }
   std::string out;
   // An intersection shader sees no payload, so its uses may differ in payload type.
   if (stage != ShaderStage::intersection) {
     if (const TypeOps* p = one_type(payloads, shader, "payload"); p != nullptr) {
-      out += glsl_ray_payload(location, *p, "payload", true);
+      out += glsl_ray_payload(scene.rays().size(), *p, "payload", true);
     }
   }
   if (const TypeOps* a = one_type(attributes, shader, "hit attribute"); a != nullptr) out += glsl_hit_attribute(*a, "hit");
   out += record_block(records, shader);
   if (stage != ShaderStage::intersection) out += glsl_output_hit(plan.outputs());
-  if (stage == ShaderStage::closest_hit) {
-    for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
-      if (r != location) out += glsl_ray_payload(r, *scene.ray(RayId<>(r)).payload_glsl, glsl_identifier(scene.rays().name(r)));
-    }
-    out += callable_data(scene, no_index);
-  }
+  if (stage == ShaderStage::closest_hit) out += tracing_declarations(scene, plan) + callable_data(scene, no_index);
   return out;
 }
 
@@ -195,9 +237,7 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
   std::uint32_t location = no_index;
   switch (stage) {
     case ShaderStage::raygen:
-      for (std::uint32_t r = 0; r < rays; ++r) {
-        out += glsl_ray_payload(r, *scene.ray(RayId<>(r)).payload_glsl, glsl_identifier(scene.rays().name(r)));
-      }
+      out += tracing_declarations(scene, plan);
       for (const SbtRecord& rec : plan.records(SbtRegionKind::raygen)) {
         if (plan.pipeline().groups[rec.group].name == shader) records.push_back(arguments_type(scene, plan, rec));
       }
@@ -207,12 +247,11 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
         if (scene.ray(RayId<>(rec.ray)).desc.miss != shader) continue;
         payloads.push_back(scene.ray(RayId<>(rec.ray)).payload_glsl);
         records.push_back(arguments_type(scene, plan, rec));
-        location = std::min(location, rec.ray);
       }
       if (const TypeOps* p = one_type(payloads, shader, "payload"); p != nullptr) {
-        out += glsl_ray_payload(location, *p, "payload", true);
+        out += glsl_ray_payload(rays, *p, "payload", true);
       }
-      return out + record_block(records, shader) + callable_data(scene, no_index);
+      return out + record_block(records, shader) + tracing_declarations(scene, plan) + callable_data(scene, no_index);
     case ShaderStage::closest_hit:
     case ShaderStage::any_hit:
     case ShaderStage::intersection: return out + hit_declarations(scene, plan, stage, shader);
@@ -225,7 +264,7 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
         location = std::min(location, c);
       }
       if (const TypeOps* d = one_type(payloads, shader, "callable data"); d != nullptr) {
-        out += glsl_callable_data(location, *d, "call", true);
+        out += glsl_callable_data(static_cast<std::uint32_t>(list.size()), *d, "call", true);
       }
       return out + record_block(records, shader) + callable_data(scene, location);
     }
@@ -239,6 +278,46 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
 /// plan has no such stage (a shader no entry uses, or the wrong stage).
 inline const std::string& glsl_for(const Plan& plan, ShaderStage stage, std::string_view shader) {
   return plan.declarations(stage, shader);
+}
+
+/// The names a shader's declarations give it, one line each: a struct as `struct T`, a block as
+/// its header and instance name, a function as its signature, constants, variables and macros as
+/// written. What `glsl_for` tools print (glsl_files_main --names), for a newcomer asking "what
+/// can this shader call?".
+inline std::string glsl_summary(std::string_view declarations) {
+  std::string out, block;  // block: the header of the struct or block being skipped
+  std::size_t at = 0;
+  while (at < declarations.size()) {
+    std::size_t end = declarations.find('\n', at);
+    if (end == std::string_view::npos) end = declarations.size();
+    std::string_view line = declarations.substr(at, end - at);
+    at = end + 1;
+    if (!block.empty()) {  // inside a struct or block: only its closing line matters
+      if (!line.starts_with("}")) continue;
+      std::string_view instance = line.substr(1);
+      while (!instance.empty() && (instance.front() == ' ')) instance.remove_prefix(1);
+      if (instance.ends_with(";")) instance.remove_suffix(1);
+      out += block + (instance.empty() ? "" : " " + std::string(instance)) + "\n";
+      block.clear();
+      continue;
+    }
+    if (line.empty() || line.starts_with("#if") || line.starts_with("#endif") || line.starts_with("#extension") ||
+        line.starts_with("#define PROCEDURAY_")) {
+      continue;
+    }
+    if (line.ends_with("{")) {  // a struct or block header
+      std::string_view head = line.substr(0, line.size() - 1);
+      while (head.ends_with(" ")) head.remove_suffix(1);
+      block = head;
+      continue;
+    }
+    if (const std::size_t body = line.find(") { "); body != std::string_view::npos) {  // a one-line function
+      out += std::string(line.substr(0, body + 1)) + "\n";
+      continue;
+    }
+    out += std::string(line) + "\n";
+  }
+  return out;
 }
 
 }  // namespace proceduray

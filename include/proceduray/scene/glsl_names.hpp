@@ -1,11 +1,11 @@
 // The GLSL names a scene's ids become, and the checks that keep them valid and distinct.
 //
 //   proceduray::glsl_identifier("primary-2");     // "primary_2": ids become GLSL names
-//   auto names = proceduray::ray_glsl_names("shadow");   // shadow, shadow_ray, shadow_flags, shadow_mask
+//   auto names = proceduray::ray_glsl_names("shadow");   // shadow, shadow_ray, _flags, _mask, trace_shadow
 //   proceduray::check_glsl_names("Scene::add_ray", scene.glsl_names(), names);   // throws on a clash or a reserved word
 //
-// glsl_for declares a ray's payload under the ray's id, `<ray>_ray`/`_flags`/`_mask`,
-// `layer_<layer>`, `<callable>_callable`/`_call`, and each named binding and push constant block.
+// glsl_for declares a ray's payload under the ray's id, `<ray>_ray`/`_flags`/`_mask`, `trace_<ray>`,
+// `layer_<layer>`, `<callable>_callable`/`_data`/`_call`, and each named binding and push constant block.
 // Two ids that differ only in characters GLSL does not allow ("primary-2", "primary_2") would
 // declare one name twice, and a ray called "sample" or "payload" would collide with GLSL or with
 // the library's own names: glslang then blames a line of generated code the user never wrote.
@@ -50,17 +50,17 @@ inline constexpr std::array<std::string_view, 5> library_glsl_names = {"argument
 inline std::string quote_origin(std::string_view kind, std::string_view id) {
   return std::string(kind) + " \"" + std::string(id) + "\"";
 }
-/// What a ray declares: its outgoing payload under its own name, and its three constants.
+/// What a ray declares: its outgoing payload under its own name, its three constants and its trace function.
 inline std::vector<GlslName> ray_glsl_names(std::string_view id) {
   const std::string m = glsl_identifier(id), origin = quote_origin("ray", id);
-  return {{m, origin}, {m + "_ray", origin}, {m + "_flags", origin}, {m + "_mask", origin}};
+  return {{m, origin}, {m + "_ray", origin}, {m + "_flags", origin}, {m + "_mask", origin}, {"trace_" + m, origin}};
 }
 inline std::vector<GlslName> layer_glsl_names(std::string_view id) {
   return {{"layer_" + glsl_identifier(id), quote_origin("layer", id)}};
 }
 inline std::vector<GlslName> callable_glsl_names(std::string_view id) {
   const std::string m = glsl_identifier(id), origin = quote_origin("callable", id);
-  return {{m + "_callable", origin}, {m + "_call", origin}};
+  return {{m + "_callable", origin}, {m + "_data", origin}, {m + "_call", origin}};
 }
 /// A named binding or push constant block of a global signature (unnamed ones are not declared).
 inline std::vector<GlslName> binding_glsl_names(std::string_view name, std::string_view kind) {
@@ -88,7 +88,8 @@ inline void check_glsl_names(std::string_view op, const std::vector<GlslName>& e
       throw DuplicateIdError(std::string(op) + ": " + c.origin + " and " + other.origin +
                              " would both be declared in GLSL as \"" + c.name +
                              "\" (an id becomes a GLSL name with every character other than a letter, digit or _ "
-                             "made _, and a ray also declares <name>_ray, _flags and _mask); rename one");
+                             "made _, a ray also declares <name>_ray, _flags, _mask and trace_<name>, and a callable "
+                             "<name>_callable, _data and _call); rename one");
     };
     for (const GlslName& e : existing) clash(e);
     for (std::size_t j = 0; j < i; ++j) clash(candidates[j]);

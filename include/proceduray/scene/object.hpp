@@ -102,6 +102,11 @@ std::pair<GeometryId, std::vector<HitGroupId>> register_object(AnyScene& scene, 
                               std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
                               "barycentrics: call add_object<void>");
     }
+  } else if (procedural) {
+    // Without a type, glsl_for declares no `hit` and the shaders fail in GLSL ("'hit' : undeclared identifier").
+    throw HitGroupKindError(where + " is procedural (AABBs) but declares no attribute type; its intersection "
+                            "shader reports the hit attributes its closest-hit shader reads as `hit`: call "
+                            "add_object<YourAttributes>(...) with a struct registered by PROCEDURAY_STRUCT");
   }
   const std::size_t instances = object_instances(scene, desc.geometry);
   if (records > 1 && records != instances) {

@@ -15,6 +15,7 @@
 #include <proceduray/scene/plan.hpp>
 #include <proceduray/scene/glsl_names.hpp>
 #include <proceduray/scene/recursion.hpp>
+#include <proceduray/scene/shader_context.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/pipeline.hpp>
 #include <proceduray/vk/pipeline_cache.hpp>
@@ -154,7 +155,7 @@ inline std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& 
 /// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push
 /// constants, at the recursion depth pipeline_depth() gives. Throws UsageError for a missing shader
 /// or a depth the shaders exceed, DeviceLimitError past the device's depth, ShaderCompileError
-/// naming the file and line.
+/// naming the stage, the scene entities that use it, and the file (includes resolved) and line.
 inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
                                                      std::span<const VkDescriptorSetLayout> set_layouts,
                                                      std::uint32_t push_size, RendererOptions options,
@@ -176,8 +177,18 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
     const std::string path = find_shader(options.shader_dirs, stage.shader);
     std::string preamble = (options.declarations ? options.declarations(stage.stage, stage.shader)
                                                  : stage.declarations) + options.extra_declarations;
-    std::vector<std::uint32_t> spirv = spirv_cache.compile(
-        {.stage = stage.stage, .name = path, .code = read_text_file(path), .preamble = std::move(preamble)});
+    std::vector<std::uint32_t> spirv;
+    try {
+      spirv = spirv_cache.compile(
+          {.stage = stage.stage, .name = path, .code = read_text_file(path), .preamble = std::move(preamble)});
+    } catch (const ShaderCompileError& e) {
+      // glslang knows the file; the scene knows who runs it and which generated names exist.
+      const auto index = static_cast<std::uint32_t>(&stage - planned.stages.data());
+      const std::string users = stage_users(plan, index);
+      throw e.with_context("make_scene_pipeline: " + std::string(to_string(stage.stage)) + " shader '" + path + "'" +
+                               (users.empty() ? std::string() : " (" + users + ")"),
+                           generated_name_hint(plan, stage.stage, e.log()));
+    }
     traces.push_back(stage_traces(plan, static_cast<std::uint32_t>(traces.size()), trace_info(spirv)));
     desc.add_shader(stage.stage, std::move(spirv));
   }

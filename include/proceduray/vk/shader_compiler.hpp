@@ -7,7 +7,8 @@
 // `#include "primitives/sphere.glsl"` resolves against the including file's folder, then the
 // include folders, then the library's shaders/ folder (PROCEDURAY_SHADER_DIR, at build time
 // or in the environment). The target is Vulkan 1.2 / SPIR-V 1.4, which ray tracing needs.
-// A failed compile throws ShaderCompileError with glslang's log, the shader's name and line.
+// A failed compile throws ShaderCompileError with glslang's log, the shader's name, and the file
+// (an #include resolved) and line of the first error.
 //
 //   proceduray::vk::traces_rays(spirv);   // true when the shader calls traceRayEXT (OpTraceRayKHR)
 //   proceduray::vk::trace_info(spirv);    // the payload variables it traces with, whether it calls callables
@@ -53,24 +54,60 @@ struct IncludedFile {
   std::string text;
 };
 
-/// A shader that did not compile: what() holds the name, the first error line and glslang's log.
+/// A shader that did not compile: what() holds the shader, where the first error is (the file
+/// an #include resolved to, and its line), glslang's message there, and glslang's whole log.
 class ShaderCompileError : public UsageError {
  public:
   /// `preamble`: where in the preamble the error is, when it is there (line is then 0).
-  ShaderCompileError(std::string name, int line, std::string log, std::string preamble = {})
-      : UsageError("compile_glsl: shader '" + name + "' failed to compile" +
-                   (line > 0 ? " at line " + std::to_string(line) : std::string()) +
-                   (preamble.empty() ? std::string() : " in its preamble (" + preamble + ")") + ":\n" + log),
-        m_name(std::move(name)), m_line(line), m_log(std::move(log)) {}
+  /// `context`: who uses the shader (the renderer adds stage and scene entities), put first.
+  /// `hint`: what the library knows about the cause (a generated name that does not exist), put after it.
+  ShaderCompileError(std::string name, const std::string& log, std::string preamble = {}, std::string context = {},
+                     std::string hint = {})
+      : ShaderCompileError(std::move(name), log, std::move(preamble), std::move(context), std::move(hint), locate(log)) {}
+
   const std::string& name() const noexcept { return m_name; }
-  /// First line glslang reported an error on; 0 when it named none.
+  /// The file the first error is in: the shader, or a file it #includes ("" when glslang named none).
+  const std::string& file() const noexcept { return m_file; }
+  /// Line of file() the first error is on; 0 when glslang named none, or it is in the preamble.
   int line() const noexcept { return m_line; }
+  /// glslang's message for the first error, e.g. "'x' : undeclared identifier".
+  const std::string& message() const noexcept { return m_message; }
   const std::string& log() const noexcept { return m_log; }
+  const std::string& context() const noexcept { return m_context; }
+  const std::string& hint() const noexcept { return m_hint; }
+  /// The same error with `context` (and a hint, when there is one) in what().
+  ShaderCompileError with_context(std::string context, std::string hint = {}) const {
+    return ShaderCompileError(m_name, m_log, m_preamble, std::move(context), std::move(hint));
+  }
 
  private:
-  std::string m_name;
+  struct Where {
+    std::string file, message;
+    int line = 0;
+  };
+  /// The first "ERROR: file:line: message" of a log; glslang names the preamble "-1".
+  static Where locate(const std::string& log) {
+    static const std::regex pattern(R"(ERROR: ([^\n]*?):(\d+): *([^\n]*))");
+    std::smatch m;
+    if (!std::regex_search(log, m, pattern)) return {};
+    if (m[1].str() == "-1") return {"", m[3].str(), 0};
+    return {m[1].str(), m[3].str(), std::stoi(m[2].str())};
+  }
+  ShaderCompileError(std::string name, std::string log, std::string preamble, std::string context, std::string hint,
+                     Where where)
+      : UsageError(
+            (context.empty() ? std::string("compile_glsl: shader '") + name + "'" : context) + " failed to compile" +
+            (where.line > 0 ? (where.file == name ? " at line " : " at " + where.file + ":") + std::to_string(where.line)
+                            : std::string()) +
+            (preamble.empty() ? std::string() : " in its preamble (" + preamble + ")") +
+            (where.message.empty() ? std::string() : ": " + where.message) + (hint.empty() ? "" : "\n" + hint) +
+            "\nglslang's log:\n" + log),
+        m_name(std::move(name)), m_file(std::move(where.file)), m_line(where.line), m_message(std::move(where.message)),
+        m_log(std::move(log)), m_preamble(std::move(preamble)), m_context(std::move(context)), m_hint(std::move(hint)) {}
+
+  std::string m_name, m_file;
   int m_line;
-  std::string m_log;
+  std::string m_message, m_log, m_preamble, m_context, m_hint;
 };
 
 namespace detail {
@@ -221,14 +258,6 @@ class Includer final : public glslang::TShader::Includer {
   std::vector<IncludedFile>* m_included;
 };
 
-inline int first_error_line(const std::string& log) {
-  // glslang writes "ERROR: name:LINE: message".
-  std::smatch m;
-  static const std::regex pattern(R"(ERROR: [^\n]*?:(\d+):)");
-  if (std::regex_search(log, m, pattern)) return std::stoi(m[1].str());
-  return 0;
-}
-
 }  // namespace detail
 
 /// Compiles one shader to SPIR-V (entry point "main"); throws ShaderCompileError on failure.
@@ -263,17 +292,17 @@ inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source, std::
       std::string text;
       for (int i = 0; i < line && std::getline(lines, text); ++i) {
       }
-      throw ShaderCompileError(source.name, 0, log,
+      throw ShaderCompileError(source.name, log,
                                "the generated declarations, then the extra ones; its line " + std::to_string(line - 1) +
                                    ": `" + text + "`");
     }
-    throw ShaderCompileError(source.name, detail::first_error_line(log), log);
+    throw ShaderCompileError(source.name, log);
   }
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(messages)) {
     std::string log = program.getInfoLog();
-    throw ShaderCompileError(source.name, detail::first_error_line(log), log);
+    throw ShaderCompileError(source.name, log);
   }
   std::vector<std::uint32_t> spirv;
   glslang::SpvOptions options;

@@ -2,12 +2,11 @@
 // The floor asks the "tint" callable for its colour, then darkens it when a shadow ray toward
 // the light hits something on the "casts_shadow" layer: to 0.35 when the hit was opaque, to
 // 0.5 when a cut-out's shadow any-hit accepted it (occluded = 2).
+// The generated tint_call and trace_shadow fill the callable index, SBT offsets and payload
+// locations from the scene's declarations.
 void main() {
-  tint_call.colour = arguments.rgb.rgb;
-  executeCallableEXT(tint_callable, int(tint_callable));
+  TintCall tint = tint_call(TintCall(arguments.rgb.rgb));
   vec3 p = gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT;
-  shadow.occluded = 1u;
-  traceRayEXT(tlas, shadow_flags, shadow_mask, shadow_ray, ray_count, shadow_ray, p + vec3(0.0, 1e-3, 0.0), 0.0,
-              normalize(constants.light.xyz), 1e30, int(shadow_ray));
-  payload.rgb = tint_call.colour * (shadow.occluded == 2u ? 0.5 : shadow.occluded != 0u ? 0.35 : 1.0);
+  Shadow seen = trace_shadow(p + vec3(0.0, 1e-3, 0.0), 0.0, normalize(constants.light.xyz), 1e30, Shadow(1u));
+  payload.rgb = tint.colour * (seen.occluded == 2u ? 0.5 : seen.occluded != 0u ? 0.35 : 1.0);
 }

@@ -1,0 +1,101 @@
+// What a shader compile error needs to be read by a person: which scene entities use the failing
+// stage, and, when the shader called a generated function that does not exist, what does.
+//
+//   const proceduray::Plan plan = proceduray::compile(scene);
+//   proceduray::stage_users(plan, 3);   // `hit groups "ball" (ray "radiance"), "ball_shadow" (ray "shadow")`
+//   proceduray::generated_name_hint(plan, proceduray::ShaderStage::closest_hit, log);
+//   // "trace_glow is not generated: the scene declares no ray \"glow\" (its rays: \"radiance\", \"shadow\")"
+//
+// Why: glslang knows neither the scene nor the names it generates. A call to `trace_glow` for a
+// ray never declared reads "'trace_glow' : no matching overloaded function found", and the file
+// name alone does not say which hit group runs the shader. The backend (vk/scene_pipeline.hpp)
+// adds both to ShaderCompileError.
+#pragma once
+
+#include "proceduray/scene/glsl_names.hpp"
+#include "proceduray/scene/plan.hpp"
+
+#include <cstdint>
+#include <regex>
+#include <string>
+#include <string_view>
+
+namespace proceduray {
+
+/// The entities whose groups use planned stage `stage` (an index into plan.pipeline().stages),
+/// for messages: `raygen "main.rgen"`, `miss of ray "shadow"`, `hit groups "ball" (ray "radiance")`,
+/// `callable group "tint.rcall"`.
+inline std::string stage_users(const Plan& plan, std::uint32_t stage) {
+  const PipelinePlan& p = plan.pipeline();
+  if (stage >= p.stages.size()) return {};
+  const ShaderStage kind = p.stages[stage].stage;
+  std::string list;
+  const auto add = [&](const std::string& item) { list += (list.empty() ? "" : ", ") + item; };
+  if (kind == ShaderStage::miss) {
+    for (const SbtRecord& rec : plan.records(SbtRegionKind::miss)) {
+      if (rec.group != no_index && p.groups[rec.group].general == stage) add("\"" + plan.ray_name(rec.ray) + "\"");
+    }
+    return list.empty() ? std::string() : "the miss shader of rays " + list;
+  }
+  for (std::uint32_t g = 0; g < p.groups.size(); ++g) {
+    const PlannedGroup& group = p.groups[g];
+    const bool uses = group.general == stage || group.closest_hit == stage || group.any_hit == stage ||
+                      group.intersection == stage;
+    if (!uses) continue;
+    if (group.type == GroupType::general) {
+      add("\"" + group.name + "\"");
+      continue;
+    }
+    std::string rays;  // the rays whose hit records use the group
+    for (const SbtRecord& rec : plan.records(SbtRegionKind::hit)) {
+      if (rec.group != g) continue;
+      const std::string ray = "\"" + plan.ray_name(rec.ray) + "\"";
+      if (rays.find(ray) == std::string::npos) rays += (rays.empty() ? "" : ", ") + ray;
+    }
+    add("\"" + group.name + "\"" + (rays.empty() ? "" : " (ray " + rays + ")"));
+  }
+  if (list.empty()) return {};
+  switch (kind) {
+    case ShaderStage::raygen: return "raygen " + list;
+    case ShaderStage::callable: return "callable " + list;
+    default: return "hit groups " + list;
+  }
+}
+
+/// Why a generated function a failing shader calls does not exist, from glslang's log, or "":
+/// `trace_<ray>` for a ray the scene does not declare, in a stage that cannot trace, or in a
+/// scene whose global signature names no acceleration structure.
+inline std::string generated_name_hint(const Plan& plan, ShaderStage stage, std::string_view log) {
+  static const std::regex call(R"('trace_([A-Za-z0-9_]+)' : (no matching overloaded function found|undeclared identifier))");
+  const std::string text(log);
+  std::smatch m;
+  if (!std::regex_search(text, m, call)) return {};
+  const std::string name = m[1].str();
+  std::string rays;
+  bool declared = false;
+  for (std::uint32_t r = 0; r < plan.ray_count(); ++r) {
+    rays += (rays.empty() ? "\"" : ", \"") + plan.ray_name(r) + "\"";
+    declared |= glsl_identifier(plan.ray_name(r)) == name;
+  }
+  const std::string fn = "trace_" + name;
+  if (!declared) {
+    return fn + " is not generated: the scene declares no ray \"" + name + "\" (its rays: " +
+           (rays.empty() ? std::string("none") : rays) + "); call the trace function of one of them, or add the ray "
+           "with Scene::add_ray";
+  }
+  if (stage != ShaderStage::raygen && stage != ShaderStage::miss && stage != ShaderStage::closest_hit) {
+    return fn + " is not generated for " + std::string(to_string(stage)) + " shaders: Vulkan lets only raygen, miss "
+           "and closest-hit shaders trace rays; trace from the closest-hit shader instead";
+  }
+  bool tlas = false;
+  if (const GlobalSignatureDesc* g = plan.global_signature(); g != nullptr) {
+    for (const Binding& b : g->bindings) tlas |= b.kind == BindingKind::acceleration_structure && !b.name.empty();
+  }
+  if (!tlas) {
+    return fn + " is not generated: the global signature names no acceleration structure binding to trace; give "
+           "one a name (the default global signature calls it \"tlas\")";
+  }
+  return {};
+}
+
+}  // namespace proceduray
