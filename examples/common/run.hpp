@@ -17,6 +17,7 @@
 #include <proceduray/scene/sbt_printer.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/renderer.hpp>
+#include <proceduray/vk/timing.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -26,11 +27,8 @@
 
 namespace examples {
 
-/// The median of a non-empty list.
-inline double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
+/// The median of a non-empty list (proceduray::vk::stats, the installed timing helper).
+inline double median(const std::vector<double>& v) { return proceduray::vk::stats(v).median; }
 
 /// Prints the device, the acceleration-structure, compile and pipeline times, and the warm-up.
 inline void print_build(const proceduray::vk::Context& ctx, proceduray::vk::Renderer& renderer) {
@@ -42,35 +40,23 @@ inline void print_build(const proceduray::vk::Context& ctx, proceduray::vk::Rend
   std::printf("warm-up: %.1f ms\n", renderer.warm_up());
 }
 
-/// The frames of one run: their GPU and host times, whether any refit the TLAS, the last frame.
-struct Run {
-  std::vector<double> trace_ms;
-  std::vector<double> host_ms;
-  bool refit = false;
-  proceduray::vk::Frame last;
-};
+/// The frames of one run: medians of their GPU and host times, whether any refit the TLAS, the last frame.
+using Run = proceduray::vk::FrameTimes;
 
 /// Traces o.frames frames, calling update(frame index) before each; reads back the last one only.
+/// The warm-up is print_build's (Renderer::warm_up), so none here.
 template <class Update>
 Run run_frames(proceduray::vk::Renderer& renderer, const Options& o, Update update) {
-  Run run;
-  for (std::uint32_t f = 0; f < o.frames; ++f) {
-    update(f);
-    run.last = renderer.render(o.width, o.height, f + 1 == o.frames);
-    run.trace_ms.push_back(run.last.trace_ms);
-    run.host_ms.push_back(run.last.host_ms);
-    run.refit = run.refit || run.last.tlas_refit;
-  }
-  return run;
+  return proceduray::vk::time_frames(renderer, o.width, o.height, {.frames = o.frames, .warm_up = 0, .read_last = true},
+                                     update);
 }
 
 /// Prints the median trace and host times, primary rays per second, and whether the TLAS was refit.
 inline void print_run(const Run& run, const Options& o) {
-  const double trace = median(run.trace_ms);
   std::printf("trace: %.2f ms median of %u frames at %ux%u (%.1f Mrays/s primary); TLAS refit: %s\n"
               "host per frame: %.3f ms\n",
-              trace, o.frames, o.width, o.height, o.width * o.height / (trace * 1e3), run.refit ? "yes" : "no",
-              median(run.host_ms));
+              run.trace_ms.median, o.frames, o.width, o.height, run.mrays_per_s(1.0), run.tlas_refit ? "yes" : "no",
+              run.host_ms.median);
 }
 
 /// Writes the run's last frame to o.out and prints the file's path.

@@ -16,6 +16,7 @@
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/march/calibration.hpp>
+#include <proceduray/march/metaballs.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>
 #include <proceduray/scene/glsl_files.hpp>
@@ -28,6 +29,7 @@
 #include <proceduray/scene/scene_of.hpp>
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
+#include <proceduray/scene/shader_context.hpp>
 #include <proceduray/scene/world_origin.hpp>
 #include <proceduray/shader/shader.hpp>
 #include <proceduray/vk/acceleration.hpp>
@@ -48,6 +50,7 @@
 #include <proceduray/version.hpp>
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/structs.hpp>
+#include <proceduray/vk/timing.hpp>
 #include <proceduray/vk/tlas.hpp>
 #include <proceduray/vk/trace.hpp>
 #include <proceduray/vk/vulkan_instance.hpp>

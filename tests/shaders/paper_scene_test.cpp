@@ -101,13 +101,14 @@ TEST_CASE("generated declarations carry the uniform block and no hand copies") {
   CHECK(decl.find("layout(set = 0, binding = 2, scalar) uniform SceneConstantsUniform {") != std::string::npos);
   CHECK(decl.find("layout(shaderRecordEXT, scalar) buffer MaterialRecordRootArguments {") != std::string::npos);
   CHECK(decl.find("hitAttributeEXT ProceduralHit hit;") != std::string::npos);
-  CHECK(decl.find("layout(location = 0) rayPayloadInEXT RadiancePayload payload;") != std::string::npos);
+  CHECK(decl.find("layout(location = 2) rayPayloadInEXT RadiancePayload payload;") != std::string::npos);  // past the outgoing
+  CHECK(decl.find("layout(location = 0) rayPayloadEXT RadiancePayload radiance;") != std::string::npos);  // reflections
   CHECK(decl.find("layout(location = 1) rayPayloadEXT ShadowPayload shadow;") != std::string::npos);
   CHECK(decl.find("const vec3 julia_aabb_min = vec3(-1.5, -1.5, -1.5);") != std::string::npos);
   CHECK(decl.find("layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;") != std::string::npos);
   CHECK(declarations("raygen.rgen").find("layout(location = 0) rayPayloadEXT RadiancePayload radiance;") !=
         std::string::npos);
-  CHECK(declarations("shadow.rmiss").find("layout(location = 1) rayPayloadInEXT ShadowPayload payload;") !=
+  CHECK(declarations("shadow.rmiss").find("layout(location = 2) rayPayloadInEXT ShadowPayload payload;") !=
         std::string::npos);
   CHECK(declarations("julia.rint").find("rayPayload") == std::string::npos);  // intersection shaders have none
   // The shaders declare no struct of their own: every struct comes from the C++ types.

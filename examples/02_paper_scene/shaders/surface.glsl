@@ -1,5 +1,6 @@
-// Lighting shared by plane.rchit and shade.rchit: Phong plus Schlick-Fresnel reflection, a
-// shadow ray towards the point light, and the recursive reflection ray.
+// Lighting shared by plane.rchit and shade.rchit: the library's Whitted shading (shading/
+// whitted.glsl: Phong, a shadow ray towards the point light, the Schlick-weighted reflection),
+// with this scene's shadow and reflection rays.
 //
 //   payload.colour = shade_surface(p, n, albedo, offset);
 //
@@ -17,11 +18,11 @@
 
 #include "paper.glsl"
 #include "common/ray.glsl"
-#include "shading/phong.glsl"
+#include "shading/whitted.glsl"
 
 #ifndef PAPER_ITERATIVE
-/// 1 when nothing lies between origin and origin + dist * dir, else 0.
-float light_visibility(vec3 origin, vec3 dir, float dist) {
+/// whitted.glsl's shadow ray: 1 when nothing lies between origin and origin + dist * dir, else 0.
+float whitted_visibility(vec3 origin, vec3 dir, float dist) {
   // Started gl_HitTEXT behind the surface (tmin skips that stretch), so t, and the marching
   // threshold that grows with it, counts the whole path from the eye: the pixel's true footprint.
   float path = gl_HitTEXT;
@@ -30,14 +31,14 @@ float light_visibility(vec3 origin, vec3 dir, float dist) {
   return seen.occluded != 0u ? 0.0 : 1.0;
 }
 
-/// The colour a radiance ray from origin along dir brings back, one level deeper, counting
-/// `weight` in the pixel.
-vec3 reflected_colour(vec3 origin, vec3 dir, float weight) {
+/// whitted.glsl's reflection: the colour a radiance ray from origin along dir brings back, one
+/// level deeper, counting `weight` in the pixel.
+vec3 whitted_reflection(vec3 origin, vec3 dir, float weight) {
   RadiancePayload next = payload;
   next.colour = vec3(0.0);
   next.depth = payload.depth + 1u;
   next.weight = weight;
-  float path = gl_HitTEXT;  // as in light_visibility: t counts the path from the eye
+  float path = gl_HitTEXT;  // as in whitted_visibility: t counts the path from the eye
   return trace_radiance(origin - path * dir, path, dir, path + ray_far, next).colour;
 }
 #endif
@@ -46,38 +47,30 @@ vec3 reflected_colour(vec3 origin, vec3 dir, float weight) {
 /// off the surface (the hit threshold for marched surfaces; 0 for exact ones) plus a few ulps.
 vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, float offset) {
   vec3 v = -safe_normalize(gl_WorldRayDirectionEXT, n);
-  if (dot(n, v) < 0.0) n = -n;  // the side the ray came from
+  n = whitted_facing(n, v);
   vec3 to_light = constants.light_position - p;
   float dist = length(to_light);
   vec3 l = safe_normalize(to_light, n);
   vec3 origin = offset_ray_origin(p + offset * n, n);
+  WhittedMaterial m = WhittedMaterial(albedo, arguments.diffuse, arguments.specular, arguments.shininess,
+                                      (constants.flags & flag_reflections) != 0u ? arguments.reflectance : 0.0);
 #ifdef PAPER_ITERATIVE
   payload.direct = dot(n, l) > 0.0 || (constants.flags & flag_shadows) == 0u
-                       ? phong(albedo, n, l, v, constants.light_colour, arguments.diffuse, arguments.specular,
-                               arguments.shininess)
+                       ? whitted_phong(n, v, l, constants.light_colour, m)
                        : vec3(0.0);
   payload.light_distance = dot(n, l) > 0.0 ? dist : 0.0;
   payload.light_direction = l;
   payload.next_origin = origin;
   payload.hit_t = gl_HitTEXT;
   payload.next_direction = reflect(-v, n);
-  payload.fresnel = (constants.flags & flag_reflections) != 0u && arguments.reflectance > 0.0
-                        ? schlick_fresnel(arguments.reflectance, dot(n, v))
-                        : 0.0;
+  payload.fresnel = whitted_fresnel(m, n, v);
   return constants.ambient * albedo;
 #else
-  float visible = 1.0;
-  if ((constants.flags & flag_shadows) != 0u) visible = dot(n, l) > 0.0 ? light_visibility(origin, l, dist) : 0.0;
-  vec3 colour = constants.ambient * albedo +
-                visible * phong(albedo, n, l, v, constants.light_colour, arguments.diffuse, arguments.specular, arguments.shininess);
+  vec3 colour = constants.ambient * albedo + whitted_direct(origin, n, v, l, dist, constants.light_colour, m,
+                                                            (constants.flags & flag_shadows) != 0u);
   uint depth_max = min(constants.max_depth, max_depth_limit);
-  if ((constants.flags & flag_reflections) != 0u && arguments.reflectance > 0.0 && payload.depth + 1u < depth_max) {
-    // Model no more than the pixel shows: a reflection adding under min_weight is not traced.
-    float f = schlick_fresnel(arguments.reflectance, dot(n, v));
-    float weight = payload.weight * f;
-    if (weight >= constants.min_weight) colour = mix(colour, reflected_colour(origin, reflect(-v, n), weight), f);
-  }
-  return colour;
+  float f = payload.depth + 1u < depth_max ? whitted_fresnel(m, n, v) : 0.0;
+  return whitted_reflect(colour, origin, n, v, f, payload.weight, constants.min_weight);
 #endif
 }
 

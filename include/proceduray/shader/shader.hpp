@@ -21,3 +21,4 @@
 #include <proceduray/shader/glsl_type.hpp>
 #include <proceduray/shader/layout.hpp>
 #include <proceduray/shader/layout_rule.hpp>
+#include <proceduray/shader/lights.hpp>
