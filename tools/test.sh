@@ -20,6 +20,12 @@ want() { [[ " $steps " == *" $1 "* ]]; }
 # No debug info in these builds: it is a third of the compile time and CI reads no core files.
 release=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG")
 
+# README's first scene, built against the installed package, run where its shaders folder is.
+first_scene() {
+  rm -rf "$1/run" && mkdir -p "$1/run" && cp -r "$root/tests/consumer/shaders" "$1/run/"
+  (cd "$1/run" && "$1/first_scene") || { echo "first_scene ($1) failed: the README's first scene does not run" >&2; return 1; }
+}
+
 if want cmake; then
   step "CMake build (GCC)"
   cmake -S "$root" -B "$out/cmake" -G Ninja "${release[@]}"
@@ -31,11 +37,13 @@ if want cmake; then
   cmake -S "$root/tests/consumer" -B "$out/consumer-cmake" -G Ninja -DCMAKE_PREFIX_PATH="$out/prefix"
   cmake --build "$out/consumer-cmake"
   "$out/consumer-cmake/consumer" "$out/consumer-cmake.png"
+  first_scene "$out/consumer-cmake"
   export PKG_CONFIG_PATH="$out/prefix/share/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
   rm -rf "$out/consumer-meson"  # tiny; a fresh setup re-reads the installed .pc
   meson setup "$out/consumer-meson" "$root/tests/consumer" >/dev/null
   meson compile -C "$out/consumer-meson"
   "$out/consumer-meson/consumer" "$out/consumer-meson.png"
+  first_scene "$out/consumer-meson"
 fi
 
 if want meson; then

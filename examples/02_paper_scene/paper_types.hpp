@@ -24,6 +24,7 @@
 
 #include "../common/tracing.hpp"
 
+#include <proceduray/march/cut_planes.hpp>
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/proceduray.hpp>
 
@@ -60,7 +61,8 @@ PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (std::uint32_t, max_depth),          ///< radiance segments, primary included (3: two reflections), <= max_depth_limit
     (std::uint32_t, flags),              ///< flag_* bits; default shadows | reflections
     (float, min_weight),                 ///< reflections adding less than this to the pixel are not traced; default 0.05
-    (pr::MarchKnobs[object_id_count], knobs));  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
+    (pr::MarchKnobs[object_id_count], knobs),  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
+    (pr::CutPlanes, julia_cuts));        ///< the planes cutting the Julia set (julia.rint); default julia_cut
 
 /// The radiance ray's payload (location 0). The fields after `weight` carry a hit back to
 /// raygen when tracing is iterative (Tracing::iterative); recursive tracing leaves them unread.
@@ -137,12 +139,18 @@ inline void validate_knobs(const SceneConstants& c) {
   for (const auto& [id, name] : marched_objects) pr::validate(c.knobs[id], capabilities(id), name);
 }
 
+/// The plane cutting the Julia set (object space; keeps dot(xyz, p) <= w): normalize(0.3, 0.3, 1)
+/// to five digits, removing the front so the camera looks at the slice through the set. Data:
+/// julia.rint reads SceneConstants::julia_cuts, and the reference (reference_objects.hpp) this.
+inline const glm::vec4 julia_cut{0.27617f, 0.27617f, 0.92057f, 0.1f};
+
 /// Camera framing all four objects, default light and knobs, at `time` seconds.
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
   SceneConstants c{pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
                    {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-                   3, flag_shadows | flag_reflections, 0.05f, {}};
+                   3, flag_shadows | flag_reflections, 0.05f, {}, {}};
   for (std::uint32_t id = 0; id < object_id_count; ++id) c.knobs[id] = capabilities(static_cast<ObjectId>(id)).defaults;
+  c.julia_cuts = pr::make_cut_planes({julia_cut});
   return c;
 }
 

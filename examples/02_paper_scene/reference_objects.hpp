@@ -80,9 +80,9 @@ namespace acc = proceduray::accuracy;
 
 /// pacman.rint's mouth_half_angle (radians), the float the GPU holds. tests/accuracy checks the text.
 inline constexpr double pacman_mouth_half_angle = static_cast<double>(0.6f);
-/// julia.rint's cut_plane (keeps dot(xyz, p) <= w, object space), the floats the GPU holds.
-inline constexpr glm::dvec4 julia_cut_plane{static_cast<double>(0.27617f), static_cast<double>(0.27617f),
-                                            static_cast<double>(0.92057f), static_cast<double>(0.1f)};
+/// The plane cutting the Julia set (keeps dot(xyz, p) <= w, object space): paper::julia_cut, the
+/// floats the GPU holds (default_constants puts them in SceneConstants::julia_cuts).
+inline const glm::dvec4 julia_cut_plane{julia_cut};
 
 /// Knobs of the reference; lengths are in pixel footprints (pixel_angle * t) so one setting fits every size.
 struct ReferenceOptions {

@@ -16,6 +16,7 @@
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/march/calibration.hpp>
+#include <proceduray/march/cut_planes.hpp>
 #include <proceduray/march/metaballs.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>

@@ -3,6 +3,8 @@
 //
 //   float d = julia_distance(p, c, 10u);                      // > 0 outside, 0 inside
 //   float d_cut = julia_cut_distance(p, c, 10u, plane);       // keeps dot(plane.xyz, p) <= plane.w
+//   float d_cuts = julia_cuts_distance(p, c, 10u, cuts.plane[0], cuts.plane[1], cuts.count);   // proceduray::CutPlanes
+//   uint face = julia_cut_face(p, c, 10u, cuts.plane[0], cuts.plane[1], cuts.count);   // the plane p lies on, or 2
 //   vec4 c = julia_animated_c(time);                          // the constant at a given time
 //
 // The estimate is Hart, Sandin and Kauffman's (1989): d = 0.5 |z| ln|z| / |z'|, with the
@@ -54,6 +56,31 @@ PROCEDURAY_INLINE real julia_distance(real3 p, real4 c, uint iterations) {
 PROCEDURAY_INLINE real julia_cut_distance(real3 p, real4 c, uint iterations, real4 plane) {
   real d_plane = dot(real3(plane.x, plane.y, plane.z), p) - plane.w;
   return max(julia_distance(p, c, iterations), d_plane);
+}
+
+/// Signed distance to the half-space dot(plane.xyz, p) <= plane.w (plane.xyz unit).
+PROCEDURAY_INLINE real julia_plane_distance(real3 p, real4 plane) {
+  return dot(real3(plane.x, plane.y, plane.z), p) - plane.w;
+}
+
+/// The Julia set cut by the first `count` (0 to 2) of two planes (proceduray::CutPlanes): data
+/// from a uniform or record, so a cut moves without a shader edit.
+PROCEDURAY_INLINE real julia_cuts_distance(real3 p, real4 c, uint iterations, real4 cut0, real4 cut1, uint count) {
+  real d = julia_distance(p, c, iterations);
+  if (count >= 1u) d = max(d, julia_plane_distance(p, cut0));
+  if (count >= 2u) d = max(d, julia_plane_distance(p, cut1));
+  return d;
+}
+
+/// Which cut face p lies on (0 or 1: its plane's distance is the largest term of
+/// julia_cuts_distance, so the normal there is the plane's, exactly), or 2 when none.
+PROCEDURAY_INLINE uint julia_cut_face(real3 p, real4 c, uint iterations, real4 cut0, real4 cut1, uint count) {
+  real d = julia_distance(p, c, iterations);
+  real d0 = count >= 1u ? julia_plane_distance(p, cut0) : d - R(1.0);
+  real d1 = count >= 2u ? julia_plane_distance(p, cut1) : d - R(1.0);
+  if (d0 >= d && d0 >= d1) return 0u;
+  if (d1 >= d && d1 > d0) return 1u;
+  return 2u;
 }
 
 /// The animated constant: c(0) = (-0.2, 0.6, 0.2, 0.2), moving on a small loop around it.

@@ -23,8 +23,7 @@ struct march {
     if constexpr (kind == 0) {
       return paper::glsl::bulb<float>::mandelbulb_distance(p, count);
     } else {
-      const real4 cut(0.27617f, 0.27617f, 0.92057f, 0.1f);  // julia.rint's cut_plane
-      return paper::glsl::julia<float>::julia_cut_distance(p, c, count, cut);
+      return paper::glsl::julia<float>::julia_cut_distance(p, c, count, paper::julia_cut);  // julia.rint's cut
     }
   }
   using MarchKnobs = proceduray::MarchKnobs;
@@ -124,7 +123,12 @@ std::string read(const std::string& path) {
 
 TEST_CASE("paper reference: copied shader constants match the shader files") {
   const std::string dir = std::string(PROCEDURAY_EXAMPLES_DIR) + "/02_paper_scene/shaders/";
-  CHECK(read(dir + "julia.rint").find("vec4 cut_plane = vec4(0.27617, 0.27617, 0.92057, 0.1);") != std::string::npos);
+  // The cut is data: julia.rint reads it from the uniform, and the reference from the same C++ value.
+  CHECK(read(dir + "julia.rint").find("constants.julia_cuts") != std::string::npos);
+  CHECK(read(dir + "julia.rint").find("0.27617") == std::string::npos);
+  const paper::SceneConstants defaults = paper::default_constants(64, 48, 0.0f);
+  CHECK(defaults.julia_cuts.count == 1u);
+  CHECK(glm::dvec4(defaults.julia_cuts.plane[0]) == paper::julia_cut_plane);
   CHECK(read(dir + "pacman.rint").find("const float mouth_half_angle = 0.6;") != std::string::npos);
   CHECK(paper::julia_cut_plane == glm::dvec4(0.27617f, 0.27617f, 0.92057f, 0.1f));
   CHECK(paper::pacman_mouth_half_angle == double(0.6f));

@@ -1,11 +1,9 @@
-// README.md's third ```cpp block (layers, update policies, any-hit and callable shaders).
+// README.md's third ```cpp block (the frame loop).
 #include "tests/docs/vk/vk_names.hpp"
 namespace pr = proceduray;
 using namespace doc_vk;
 // @declarations
-void usage(pr::Scene& scene, pr::vk::Renderer& renderer, const pr::Aabb& box,
-           const std::vector<pr::InstanceTransform>& transforms, pr::LocalSignatureId<TintArgs> tint_signature,
-           pr::GeometryId ball_id, pr::GeometryId blob_id, const glm::mat4& moved, const std::vector<pr::Aabb>& boxes,
-           std::uint32_t w, std::uint32_t h) {
+SceneConstants constants_at(int frame);
+void usage(pr::vk::Renderer& renderer) {
   // @statements
 }

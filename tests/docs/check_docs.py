@@ -19,7 +19,7 @@ more spaces after `//` (`//   code`), with blank `//` lines allowed inside; the 
   - `#include` lines are moved to the top of the batch; a prelude line `// @skip-include "x.hpp"`
     drops the block's include of a file that exists only in the example (the prelude declares it).
   - lines at the block's own indentation that start a declaration (struct, class, enum, using,
-    namespace, template, inline, int main, PROCEDURAY_*) go at namespace scope with the lines
+    namespace, template, inline, constexpr, int main, PROCEDURAY_*) go at namespace scope with the lines
     indented under them; every other line is a statement and goes into the prelude's function.
 The prelude, tests/docs/<path of the file under include/proceduray or the repository>.hpp (README.md:
 tests/docs/README.md.<n>.hpp for its n-th ```cpp block), is C++ with two marker lines:
@@ -27,6 +27,9 @@ tests/docs/README.md.<n>.hpp for its n-th ```cpp block), is C++ with two marker 
 objects the block uses, e.g. `void usage(proceduray::Scene& scene) { // @statements }`). Without a
 prelude a block gets `#include <the header>` and `void usage() {}`. Each block lives in its own
 namespace, so blocks of one batch may reuse names.
+A README block right after a line `<!-- same as PATH -->` must equal the file PATH (any fence
+language): the readme batch fails, naming both, when they differ. That is how the README's first
+scene stays the program tests/consumer builds against the installed package and runs.
 """
 import glob
 import os
@@ -52,7 +55,7 @@ BATCHES = {
 }
 # Batches whose headers must not pull in Vulkan (scene/, shader/ and accuracy/ stay pure): checked in the same compile.
 PURE = {'shader', 'scene', 'accuracy', 'march'}
-DECLARATION = re.compile(r'(struct|class|enum|union|using|namespace|template|inline|int main'
+DECLARATION = re.compile(r'(struct|class|enum|union|using|namespace|template|inline|constexpr|int main'
                          r'|PROCEDURAY_STRUCT|PROCEDURAY_DEFINE_STRUCT)\b')
 
 
@@ -101,6 +104,34 @@ def readme_blocks(path):
             elif current is not None:
                 current.append((number, line))
     return blocks
+
+
+def copy_mismatches(path):
+    """Messages for README blocks marked `<!-- same as PATH -->` that differ from PATH."""
+    with open(path, encoding='utf-8') as f:
+        lines = f.read().split('\n')
+    problems = []
+    for i, line in enumerate(lines):
+        m = re.match(r'\s*<!-- same as (\S+) -->\s*$', line)
+        if not m:
+            continue
+        start = i + 1
+        if start >= len(lines) or not lines[start].startswith('```'):
+            problems.append(f'README.md:{i + 1}: the marker for {m.group(1)} is not followed by a ``` block')
+            continue
+        end = start + 1
+        while end < len(lines) and lines[end].strip() != '```':
+            end += 1
+        shown = '\n'.join(lines[start + 1:end]) + '\n'
+        try:
+            with open(os.path.join(ROOT, m.group(1)), encoding='utf-8') as f:
+                actual = f.read()
+        except OSError:
+            problems.append(f'README.md:{i + 1}: {m.group(1)} cannot be read')
+            continue
+        if shown != actual:
+            problems.append(f'README.md:{start + 2}: the block differs from {m.group(1)}; copy the file into it')
+    return problems
 
 
 def blocks_of(path):
@@ -199,6 +230,11 @@ def main(argv):
         print(__doc__, file=sys.stderr)
         return 2
     batch, compiler = argv[1], argv[3:]
+    if batch == 'readme':
+        problems = copy_mismatches(os.path.join(ROOT, 'README.md'))
+        if problems:
+            print('docs readme: blocks that must equal a file do not:\n' + '\n'.join(problems))
+            return 1
     with tempfile.TemporaryDirectory() as tmp:
         source = os.path.join(tmp, f'docs_{batch}.cpp')
         with open(source, 'w', encoding='utf-8') as f:

@@ -16,7 +16,6 @@
 #include "proceduray/scene/plan.hpp"
 
 #include <cstdint>
-#include <regex>
 #include <string>
 #include <string_view>
 
@@ -66,11 +65,19 @@ inline std::string stage_users(const Plan& plan, std::uint32_t stage) {
 /// `trace_<ray>` for a ray the scene does not declare, in a stage that cannot trace, or in a
 /// scene whose global signature names no acceleration structure.
 inline std::string generated_name_hint(const Plan& plan, ShaderStage stage, std::string_view log) {
-  static const std::regex call(R"('trace_([A-Za-z0-9_]+)' : (no matching overloaded function found|undeclared identifier))");
-  const std::string text(log);
-  std::smatch m;
-  if (!std::regex_search(text, m, call)) return {};
-  const std::string name = m[1].str();
+  // glslang writes "'trace_glow' : no matching overloaded function found" (or "undeclared identifier").
+  // Read by hand: <regex> costs every includer seconds of compile time.
+  std::string name;
+  for (std::size_t at = log.find("'trace_"); at != std::string_view::npos; at = log.find("'trace_", at + 1)) {
+    const std::size_t begin = at + 7, end = log.find('\'', begin);
+    if (end == std::string_view::npos || end == begin) break;
+    const std::string_view rest = log.substr(end + 1);
+    if (rest.starts_with(" : no matching overloaded function found") || rest.starts_with(" : undeclared identifier")) {
+      name = std::string(log.substr(begin, end - begin));
+      break;
+    }
+  }
+  if (name.empty()) return {};
   std::string rays;
   bool declared = false;
   for (std::uint32_t r = 0; r < plan.ray_count(); ++r) {
