@@ -49,6 +49,11 @@ if [ "$what" = all ] || [ "$what" = bench ]; then
     for i in 1 2 3 4 5; do step paper_warm_start_$i gpu/02_paper_scene --device gpu --frames 1 --out /tmp/paper.png; done
     grep -h "shader and pipeline work" "$out"/paper_*_start*.txt >> "$log"
   fi
+  # Frame time against reflection depth (examples/04_cis565_scene), with validation off.
+  if [ -x gpu/04_cis565_scene ]; then
+    step cis565_depth_sweep gpu/04_cis565_scene --device gpu --size 1920x1080 --frames 100 --depth-sweep --out /tmp/cis565.png
+    grep -A6 "^depth" "$out/cis565_depth_sweep.txt" >> "$log"
+  fi
   [ -x gpu/bench_soak ] && step bench_soak gpu/bench_soak --device gpu --frames 2000 --every 500
 fi
 cat "$out/gpu.txt" "$log"
