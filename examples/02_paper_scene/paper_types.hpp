@@ -62,7 +62,8 @@ PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (std::uint32_t, flags),              ///< flag_* bits; default shadows | reflections
     (float, min_weight),                 ///< reflections adding less than this to the pixel are not traced; default 0.05
     (pr::MarchKnobs[object_id_count], knobs),  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
-    (pr::CutPlanes, julia_cuts));        ///< the planes cutting the Julia set (julia.rint); default julia_cut
+    (pr::CutPlanes, julia_cuts),         ///< the planes cutting the Julia set (julia.rint); default julia_cut
+    (float, pacman_mouth));              ///< the Pac-men's mouth half angle, radians (pacman.rint); default pacman_mouth
 
 /// The radiance ray's payload (location 0). The fields after `weight` carry a hit back to
 /// raygen when tracing is iterative (Tracing::iterative); recursive tracing leaves them unread.
@@ -143,12 +144,15 @@ inline void validate_knobs(const SceneConstants& c) {
 /// to five digits, removing the front so the camera looks at the slice through the set. Data:
 /// julia.rint reads SceneConstants::julia_cuts, and the reference (reference_objects.hpp) this.
 inline const glm::vec4 julia_cut{0.27617f, 0.27617f, 0.92057f, 0.1f};
+/// The Pac-men's mouth half angle (radians, about 34 degrees): data as well (pacman.rint reads
+/// SceneConstants::pacman_mouth).
+inline constexpr float pacman_mouth = 0.6f;
 
 /// Camera framing all four objects, default light and knobs, at `time` seconds.
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
   SceneConstants c{pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
                    {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-                   3, flag_shadows | flag_reflections, 0.05f, {}, {}};
+                   3, flag_shadows | flag_reflections, 0.05f, {}, {}, pacman_mouth};
   for (std::uint32_t id = 0; id < object_id_count; ++id) c.knobs[id] = capabilities(static_cast<ObjectId>(id)).defaults;
   c.julia_cuts = pr::make_cut_planes({julia_cut});
   return c;

@@ -78,8 +78,9 @@ namespace paper {
 
 namespace acc = proceduray::accuracy;
 
-/// pacman.rint's mouth_half_angle (radians), the float the GPU holds. tests/accuracy checks the text.
-inline constexpr double pacman_mouth_half_angle = static_cast<double>(0.6f);
+/// The Pac-men's mouth half angle (radians): paper::pacman_mouth, the float the GPU holds
+/// (default_constants puts it in SceneConstants::pacman_mouth).
+inline constexpr double pacman_mouth_half_angle = static_cast<double>(pacman_mouth);
 /// The plane cutting the Julia set (keeps dot(xyz, p) <= w, object space): paper::julia_cut, the
 /// floats the GPU holds (default_constants puts them in SceneConstants::julia_cuts).
 inline const glm::dvec4 julia_cut_plane{julia_cut};

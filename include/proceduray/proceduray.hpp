@@ -15,6 +15,7 @@
 #include <proceduray/image/png.hpp>
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/march/primitives.hpp>
+#include <proceduray/march/sphere_set.hpp>
 #include <proceduray/march/calibration.hpp>
 #include <proceduray/march/cut_planes.hpp>
 #include <proceduray/march/metaballs.hpp>

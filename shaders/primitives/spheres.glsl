@@ -2,10 +2,13 @@
 // sample's "multiple spheres"), each by ray_sphere (stable roots, Haines et al. discriminant).
 //
 //   float t; vec3 n;
-//   if (ray_spheres(o, d, 1.0f, t_lo, t_hi, cull, t, n)) reportIntersectionEXT(t, 0u);
+//   if (ray_spheres(o, d, 1.0f, t_lo, t_hi, cull, t, n)) reportIntersectionEXT(t, 0u);   // the sample's three
+//   SphereList mine = sphere_list(constants.balls);     // any up to spheres_max: proceduray::SphereSet (sphere_set.glsl)
+//   if (ray_spheres(o, d, mine, 1.0f, t_lo, t_hi, cull, t, n)) ...
 //
-// The set is spheres_centre_radius(i), i < spheres_count, inside the box [-1, 1]^3 for
-// radius_scale <= 1. Normals are outward and unit. `d` need not be unit length.
+// The sample's set is spheres_centre_radius(i), i < spheres_count, inside the box [-1, 1]^3 for
+// radius_scale <= 1; a SphereList is any set, as data (its box: proceduray::sphere_set_bounds).
+// Normals are outward and unit. `d` need not be unit length.
 #ifndef PROCEDURAY_PRIMITIVES_SPHERES_GLSL
 #define PROCEDURAY_PRIMITIVES_SPHERES_GLSL
 
@@ -14,7 +17,15 @@
 #include "../common/ray.glsl"
 #include "sphere.glsl"
 
-PROCEDURAY_CONST uint spheres_count = 3u;
+PROCEDURAY_CONST uint spheres_count = 3u;  // the D3D12 sample's
+/// Spheres a SphereList holds (proceduray::max_sphere_set).
+PROCEDURAY_CONST uint spheres_max = 8u;
+
+/// Spheres as data: sphere[i].xyz the centre, sphere[i].w the radius; the first `count` count.
+struct SphereList {
+  real4 sphere[spheres_max];
+  uint count;
+};
 
 /// Sphere i: xyz centre, w radius (before radius_scale).
 PROCEDURAY_INLINE real4 spheres_centre_radius(uint i) {
@@ -42,14 +53,22 @@ PROCEDURAY_INLINE bool ray_sphere_first(real3 o, real3 d, real3 centre, real rad
   return false;
 }
 
-/// The nearest valid hit over the spheres, radii times radius_scale.
-PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, real radius_scale, real t_lo, real t_hi, uint cull,
-                                   PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
+/// The D3D12 sample's three spheres as a list.
+PROCEDURAY_INLINE SphereList spheres_sample() {
+  SphereList list;
+  for (uint i = 0u; i < spheres_max; ++i) list.sphere[i] = i < spheres_count ? spheres_centre_radius(i) : real4(R(0.0));
+  list.count = spheres_count;
+  return list;
+}
+
+/// The nearest valid hit over the list's spheres (at most spheres_max), radii times radius_scale.
+PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, SphereList spheres, real radius_scale, real t_lo, real t_hi,
+                                   uint cull, PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
   bool found = false;
   t_hit = t_hi;
   normal = real3(R(0.0), R(1.0), R(0.0));
-  for (uint i = 0u; i < spheres_count; ++i) {
-    real4 s = spheres_centre_radius(i);
+  for (uint i = 0u; i < min(spheres.count, spheres_max); ++i) {
+    real4 s = spheres.sphere[i];
     real t;
     real3 n;
     if (ray_sphere_first(o, d, real3(s.x, s.y, s.z), s.w * radius_scale, t_lo, t_hit, cull, t, n)) {
@@ -60,6 +79,12 @@ PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, real radius_scale, real t_l
   }
   if (!found) t_hit = R(0.0);
   return found;
+}
+
+/// The D3D12 sample's three spheres, radii times radius_scale.
+PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, real radius_scale, real t_lo, real t_hi, uint cull,
+                                   PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
+  return ray_spheres(o, d, spheres_sample(), radius_scale, t_lo, t_hi, cull, t_hit, normal);
 }
 
 #endif

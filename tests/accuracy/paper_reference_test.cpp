@@ -121,7 +121,7 @@ std::string read(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("paper reference: copied shader constants match the shader files") {
+TEST_CASE("paper reference: the cut plane and the mouth are data the shaders and the reference share") {
   const std::string dir = std::string(PROCEDURAY_EXAMPLES_DIR) + "/02_paper_scene/shaders/";
   // The cut is data: julia.rint reads it from the uniform, and the reference from the same C++ value.
   CHECK(read(dir + "julia.rint").find("constants.julia_cuts") != std::string::npos);
@@ -129,7 +129,9 @@ TEST_CASE("paper reference: copied shader constants match the shader files") {
   const paper::SceneConstants defaults = paper::default_constants(64, 48, 0.0f);
   CHECK(defaults.julia_cuts.count == 1u);
   CHECK(glm::dvec4(defaults.julia_cuts.plane[0]) == paper::julia_cut_plane);
-  CHECK(read(dir + "pacman.rint").find("const float mouth_half_angle = 0.6;") != std::string::npos);
+  CHECK(read(dir + "pacman.rint").find("constants.pacman_mouth") != std::string::npos);
+  CHECK(read(dir + "pacman.rint").find("0.6") == std::string::npos);
+  CHECK(double(defaults.pacman_mouth) == paper::pacman_mouth_half_angle);
   CHECK(paper::julia_cut_plane == glm::dvec4(0.27617f, 0.27617f, 0.92057f, 0.1f));
   CHECK(paper::pacman_mouth_half_angle == double(0.6f));
 }

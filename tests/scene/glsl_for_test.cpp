@@ -138,10 +138,11 @@ TEST_CASE("glsl_for declares payloads by stage") {
 
 TEST_CASE("glsl_for gives tracing stages a trace function per ray type") {
   const Fixture f;
-  for (const auto& [stage, shader] : {std::pair{ShaderStage::raygen, "main.rgen"}, std::pair{ShaderStage::miss, "sky.rmiss"},
-                                      std::pair{ShaderStage::closest_hit, "ball.rchit"}}) {
+  for (const auto& use : {std::pair{ShaderStage::raygen, "main.rgen"}, std::pair{ShaderStage::miss, "sky.rmiss"},
+                          std::pair{ShaderStage::closest_hit, "ball.rchit"}}) {
+    const char* shader = use.second;  // no structured binding: clang 14 cannot capture one (CAPTURE)
     CAPTURE(shader);
-    const std::string glsl = f(stage, shader);
+    const std::string glsl = f(use.first, shader);
     // flags, mask, SBT offset = ray index, stride = ray count, miss index = ray index, location = ray index
     CHECK(has(glsl, "void trace_light(vec3 origin, float tmin, vec3 direction, float tmax) { traceRayEXT(tlas, "
                     "light_flags, light_mask, light_ray, ray_count, light_ray, origin, tmin, direction, tmax, 0); }"));
