@@ -12,7 +12,7 @@
 using namespace proceduray;
 using renderer_scene::RendererScene;
 
-TEST_CASE("timing stats give min, median and max; an even count's median is the mean of the middle two") {
+TEST_CASE("timing stats give min, median and max, and an even count's median is the mean of the middle two") {
   const std::vector<double> odd{3.0, 1.0, 9.0, 2.0, 5.0};
   const vk::Stats a = vk::stats(odd);
   CHECK(a.min == 1.0);
