@@ -1,5 +1,5 @@
 // What a traced frame reports: its pixels, its times and the acceleration-structure work done
-// before its trace.
+// before its trace; what a submitted frame copies back (Readback) and its ticket.
 //
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba;          // width * height RGBA8 pixels (empty without readback)
@@ -12,6 +12,19 @@
 #include <vector>
 
 namespace proceduray::vk {
+
+/// What a submitted frame copies back for the host, in the frame's own command buffer.
+enum class Readback {
+  none,  ///< nothing: the frame stays on the device (Renderer::image() holds the last one)
+  rgba,  ///< the RGBA8 image
+  all,   ///< the image and every per-pixel output the scene asked for
+};
+
+/// A submitted frame: its number, 1, 2, ...; what Renderer::wait, rgba and output take.
+struct FrameTicket {
+  std::uint64_t number = 0;
+  friend bool operator==(const FrameTicket&, const FrameTicket&) = default;
+};
 
 /// Acceleration-structure work a frame did before its trace, as the update policies allowed.
 struct FrameWork {

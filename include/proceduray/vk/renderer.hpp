@@ -64,19 +64,6 @@ struct BuildTimings {
   std::uint32_t spirv_compiled = 0;  ///< stages glslang compiled
 };
 
-/// What a submitted frame copies back for the host, in the frame's own command buffer.
-enum class Readback {
-  none,  ///< nothing: the frame stays on the device (Renderer::image() holds the last one)
-  rgba,  ///< the RGBA8 image
-  all,   ///< the image and every per-pixel output the scene asked for
-};
-
-/// A submitted frame: its number, 1, 2, ...; what Renderer::wait, rgba and output take.
-struct FrameTicket {
-  std::uint64_t number = 0;
-  friend bool operator==(const FrameTicket&, const FrameTicket&) = default;
-};
-
 /// Builds the device objects of a scene and traces frames of it.
 class Renderer {
  public:
