@@ -9,6 +9,8 @@
 #include "../common/run.hpp"
 #include "d3d12_scene.hpp"
 
+#include <CLI/CLI.hpp>  // this example adds options of its own
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

@@ -7,6 +7,8 @@
 #include "../common/run.hpp"
 #include "cis565_scene.hpp"
 
+#include <CLI/CLI.hpp>  // this example adds options of its own
+
 #include <cstdio>
 #include <exception>
 

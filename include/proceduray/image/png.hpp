@@ -6,14 +6,11 @@
 // A path that cannot be written throws proceduray::EnvironmentError, a wrong pixel count UsageError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 
-#include <stb_image_write.h>
-
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <span>
 #include <stdexcept>
@@ -22,7 +19,24 @@
 namespace proceduray {
 
 /// Throws EnvironmentError unless `path` can be written (creates no file that was not there).
-inline void check_writable(const std::filesystem::path& path) {
+PROCEDURAY_DECL void check_writable(const std::filesystem::path& path);
+
+/// Writes width x height RGBA8 pixels (rows top to bottom) as a PNG; throws when it cannot.
+PROCEDURAY_DECL void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                               std::span<const std::uint8_t> rgba);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+#include <stb_image_write.h>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+namespace proceduray {
+
+PROCEDURAY_DECL void check_writable(const std::filesystem::path& path) {
   std::error_code ec;
   const bool existed = std::filesystem::exists(path, ec);
   if (existed && std::filesystem::is_directory(path, ec)) {
@@ -39,9 +53,8 @@ inline void check_writable(const std::filesystem::path& path) {
   if (!existed) std::filesystem::remove(path, ec);
 }
 
-/// Writes width x height RGBA8 pixels (rows top to bottom) as a PNG; throws when it cannot.
-inline void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-                      std::span<const std::uint8_t> rgba) {
+PROCEDURAY_DECL void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                               std::span<const std::uint8_t> rgba) {
   if (rgba.size() != std::size_t{width} * height * 4) {
     throw UsageError("write_png: " + std::to_string(rgba.size()) + " bytes given for a " +
                      std::to_string(width) + "x" + std::to_string(height) + " RGBA8 image, which needs " +
@@ -55,3 +68,4 @@ inline void write_png(const std::filesystem::path& path, std::uint32_t width, st
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

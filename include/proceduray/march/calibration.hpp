@@ -22,6 +22,8 @@
 // another library version is refused (its marches may differ), as is a foreign or damaged file.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/version.hpp>
@@ -80,30 +82,11 @@ inline constexpr std::string_view calibration_format = "# proceduray-calibration
 
 /// Whether `a` is at least as good as `b` in cost and every error, and better in one: then `b`
 /// is off the front (no one would choose it).
-inline bool dominates(const CalibrationRow& a, const CalibrationRow& b) {
-  const double av[] = {a.evals, a.depth_median, a.depth_p99, a.silhouette_false_hits, a.false_misses, a.normal_p95};
-  const double bv[] = {b.evals, b.depth_median, b.depth_p99, b.silhouette_false_hits, b.false_misses, b.normal_p95};
-  bool better = false;
-  for (std::size_t i = 0; i < 6; ++i) {
-    if (av[i] > bv[i]) return false;
-    better = better || av[i] < bv[i];
-  }
-  return better;
-}
+PROCEDURAY_DECL bool dominates(const CalibrationRow& a, const CalibrationRow& b);
 
 /// The table shipped with the library: $PROCEDURAY_SHADER_DIR/calibration/primitives.csv, else
 /// the shader directory the build or install defines (PROCEDURAY_SHADER_DIR), else ./shaders.
-inline std::filesystem::path shipped_calibration() {
-  std::filesystem::path dir = "shaders";
-  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') {
-    dir = env;
-  } else {
-#ifdef PROCEDURAY_SHADER_DIR
-    dir = PROCEDURAY_SHADER_DIR;
-#endif
-  }
-  return dir / "calibration" / "primitives.csv";
-}
+PROCEDURAY_DECL std::filesystem::path shipped_calibration();
 
 /// Measured settings per geometry, and the cheapest that meets a budget.
 class Calibration {
@@ -249,3 +232,33 @@ class Calibration {
 };
 
 }  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL bool dominates(const CalibrationRow& a, const CalibrationRow& b) {
+  const double av[] = {a.evals, a.depth_median, a.depth_p99, a.silhouette_false_hits, a.false_misses, a.normal_p95};
+  const double bv[] = {b.evals, b.depth_median, b.depth_p99, b.silhouette_false_hits, b.false_misses, b.normal_p95};
+  bool better = false;
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (av[i] > bv[i]) return false;
+    better = better || av[i] < bv[i];
+  }
+  return better;
+}
+
+PROCEDURAY_DECL std::filesystem::path shipped_calibration() {
+  std::filesystem::path dir = "shaders";
+  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') {
+    dir = env;
+  } else {
+#ifdef PROCEDURAY_SHADER_DIR
+    dir = PROCEDURAY_SHADER_DIR;
+#endif
+  }
+  return dir / "calibration" / "primitives.csv";
+}
+
+}  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -10,6 +10,8 @@
 // is a distance and max() with a distance estimate stays one (the cut face is then exact).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -36,7 +38,20 @@ PROCEDURAY_STRUCT(CutPlanes, scalar, plane, count, pad0, pad1, pad2);
 
 /// The plane through the points p with dot(normalize(normal), p) = offset, keeping the side
 /// `normal` points away from; throws UsageError for a zero or non-finite normal.
-inline glm::vec4 cut_plane(glm::vec3 normal, float offset) {
+PROCEDURAY_DECL glm::vec4 cut_plane(glm::vec3 normal, float offset);
+
+/// The block; throws UsageError naming the plane and the fix for more than max_cut_planes, a
+/// non-finite value, or a normal that is not unit length (to 1e-3: build planes with cut_plane).
+PROCEDURAY_DECL CutPlanes make_cut_planes(std::span<const glm::vec4> planes);
+PROCEDURAY_DECL CutPlanes make_cut_planes(std::initializer_list<glm::vec4> planes);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL glm::vec4 cut_plane(glm::vec3 normal, float offset) {
   const float len = glm::length(normal);
   if (!(len > 0.0f) || !std::isfinite(len) || !std::isfinite(offset)) {
     throw UsageError("cut_plane: normal (" + std::to_string(normal.x) + ", " + std::to_string(normal.y) + ", " +
@@ -46,9 +61,7 @@ inline glm::vec4 cut_plane(glm::vec3 normal, float offset) {
   return glm::vec4(normal / len, offset);
 }
 
-/// The block; throws UsageError naming the plane and the fix for more than max_cut_planes, a
-/// non-finite value, or a normal that is not unit length (to 1e-3: build planes with cut_plane).
-inline CutPlanes make_cut_planes(std::span<const glm::vec4> planes) {
+PROCEDURAY_DECL CutPlanes make_cut_planes(std::span<const glm::vec4> planes) {
   if (planes.size() > max_cut_planes) {
     throw UsageError("make_cut_planes: " + std::to_string(planes.size()) + " planes, over the limit of " +
                      std::to_string(max_cut_planes) + " (proceduray::max_cut_planes); intersect fewer");
@@ -70,8 +83,10 @@ inline CutPlanes make_cut_planes(std::span<const glm::vec4> planes) {
   }
   return out;
 }
-inline CutPlanes make_cut_planes(std::initializer_list<glm::vec4> planes) {
+
+PROCEDURAY_DECL CutPlanes make_cut_planes(std::initializer_list<glm::vec4> planes) {
   return make_cut_planes(std::span<const glm::vec4>(planes.begin(), planes.size()));
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

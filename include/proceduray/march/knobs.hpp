@@ -18,6 +18,8 @@
 // compiles that file as C++ and compares).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -112,11 +114,7 @@ std::string joined_of(const std::vector<Enum>& values, const std::array<std::str
   return out;
 }
 
-inline std::string number(float v) {
-  char text[32];
-  const auto r = std::to_chars(text, text + sizeof text, v);
-  return std::string(text, r.ptr);
-}
+PROCEDURAY_DECL std::string number(float v);
 
 template <class Enum, std::size_t N>
 Enum parse_name(std::string_view value, const std::array<std::string_view, N>& names, std::string_view knob) {
@@ -149,7 +147,35 @@ inline constexpr std::array<std::string_view, 14> march_knob_names{
 
 /// Sets one knob from text (enum names, numbers; refine takes on/off too). Throws UsageError for
 /// an unknown knob or value, listing the valid ones; ranges are validate()'s business.
-inline void set_knob(MarchKnobs& k, std::string_view name, std::string_view value) {
+PROCEDURAY_DECL void set_knob(MarchKnobs& k, std::string_view name, std::string_view value);
+
+/// Each knob as (name, text): the columns of a sweep's CSV and a calibration table.
+PROCEDURAY_DECL std::vector<std::pair<std::string, std::string>> knob_values(const MarchKnobs& k);
+
+/// "name=value ..." of every knob.
+PROCEDURAY_DECL std::string describe(const MarchKnobs& k);
+
+/// Throws UsageError unless `k` is a setting `caps` accepts: names the geometry, the knob, its
+/// value, and the valid range or names.
+PROCEDURAY_DECL void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::string_view geometry);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::string number(float v) {
+  char text[32];
+  const auto r = std::to_chars(text, text + sizeof text, v);
+  return std::string(text, r.ptr);
+}
+
+}  // namespace proceduray::detail
+
+namespace proceduray {
+
+PROCEDURAY_DECL void set_knob(MarchKnobs& k, std::string_view name, std::string_view value) {
   using detail::parse_number;
   if (name == "method") k.method = static_cast<std::uint32_t>(detail::parse_name<MarchMethod>(value, march_method_names, name));
   else if (name == "max_steps") k.max_steps = parse_number<std::uint32_t>(name, value);
@@ -171,8 +197,7 @@ inline void set_knob(MarchKnobs& k, std::string_view name, std::string_view valu
   else throw UsageError("march knobs: unknown knob '" + std::string(name) + "'; valid: " + detail::joined(march_knob_names));
 }
 
-/// Each knob as (name, text): the columns of a sweep's CSV and a calibration table.
-inline std::vector<std::pair<std::string, std::string>> knob_values(const MarchKnobs& k) {
+PROCEDURAY_DECL std::vector<std::pair<std::string, std::string>> knob_values(const MarchKnobs& k) {
   auto name_of = [](const auto& names, std::uint32_t v) {
     return v < names.size() ? std::string(names[v]) : "invalid(" + std::to_string(v) + ")";
   };
@@ -192,16 +217,13 @@ inline std::vector<std::pair<std::string, std::string>> knob_values(const MarchK
           {"iteration_detail", detail::number(k.iteration_detail)}};
 }
 
-/// "name=value ..." of every knob.
-inline std::string describe(const MarchKnobs& k) {
+PROCEDURAY_DECL std::string describe(const MarchKnobs& k) {
   std::string out;
   for (const auto& [name, value] : knob_values(k)) out += (out.empty() ? "" : " ") + name + "=" + value;
   return out;
 }
 
-/// Throws UsageError unless `k` is a setting `caps` accepts: names the geometry, the knob, its
-/// value, and the valid range or names.
-inline void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::string_view geometry) {
+PROCEDURAY_DECL void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::string_view geometry) {
   const std::string where = "march knobs of '" + std::string(geometry) + "' (" + std::string(caps.kind) + "): ";
   auto fail = [&](const std::string& what) { throw UsageError(where + what); };
   auto finite = [](float v) { return std::isfinite(v); };
@@ -262,3 +284,4 @@ inline void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::st
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

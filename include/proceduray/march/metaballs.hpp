@@ -16,6 +16,8 @@
 // the balls' spheres: metaballs_bounds is that union's box over every time (|sin| <= 1).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/field_list.hpp>
@@ -56,21 +58,39 @@ struct Metaballs {
 PROCEDURAY_STRUCT(Metaballs, scalar, ball, count, threshold, pad0, pad1);
 
 /// A source at `centre` of radius `radius`, swinging by `amplitude` at `frequency` (radians per second).
-inline Metaball metaball(glm::vec3 centre, float radius, glm::vec3 amplitude = glm::vec3(0.0f),
-                         glm::vec3 frequency = glm::vec3(0.0f), glm::vec3 phase = glm::vec3(0.0f)) {
-  return {centre, radius, amplitude, 0.0f, frequency, 0.0f, phase, 0.0f};
-}
+PROCEDURAY_DECL Metaball metaball(glm::vec3 centre, float radius, glm::vec3 amplitude = glm::vec3(0.0f),
+                                  glm::vec3 frequency = glm::vec3(0.0f), glm::vec3 phase = glm::vec3(0.0f));
 
 /// Where source b is at `time` (metaball_motion.glsl's formula, on the host).
-inline glm::vec3 metaball_centre_at(const Metaball& b, float time) {
-  return b.centre + b.amplitude * glm::sin(b.frequency * time + b.phase);
-}
+PROCEDURAY_DECL glm::vec3 metaball_centre_at(const Metaball& b, float time);
 
 /// The block for the shaders; throws UsageError naming the source and the fix for no source,
 /// more than max_metaballs, a radius <= 0, a non-finite number, or a threshold outside (0, 1)
 /// (the falloff peaks at 1: a threshold of 1 or more has no surface away from a centre, 0 or
 /// less fills all space).
-inline Metaballs make_metaballs(std::span<const Metaball> balls, float threshold) {
+PROCEDURAY_DECL Metaballs make_metaballs(std::span<const Metaball> balls, float threshold);
+PROCEDURAY_DECL Metaballs make_metaballs(std::initializer_list<Metaball> balls, float threshold);
+
+/// The box holding the surface at every time: each source's centre +- (|amplitude| + radius).
+/// Throws UsageError for a block with no source.
+PROCEDURAY_DECL Aabb metaballs_bounds(const Metaballs& blob);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL Metaball metaball(glm::vec3 centre, float radius, glm::vec3 amplitude,
+                                  glm::vec3 frequency, glm::vec3 phase) {
+  return {centre, radius, amplitude, 0.0f, frequency, 0.0f, phase, 0.0f};
+}
+
+PROCEDURAY_DECL glm::vec3 metaball_centre_at(const Metaball& b, float time) {
+  return b.centre + b.amplitude * glm::sin(b.frequency * time + b.phase);
+}
+
+PROCEDURAY_DECL Metaballs make_metaballs(std::span<const Metaball> balls, float threshold) {
   if (balls.empty()) {
     throw UsageError("make_metaballs: 0 metaballs; give at least one source (proceduray::metaball(centre, radius))");
   }
@@ -101,13 +121,12 @@ inline Metaballs make_metaballs(std::span<const Metaball> balls, float threshold
   }
   return out;
 }
-inline Metaballs make_metaballs(std::initializer_list<Metaball> balls, float threshold) {
+
+PROCEDURAY_DECL Metaballs make_metaballs(std::initializer_list<Metaball> balls, float threshold) {
   return make_metaballs(std::span<const Metaball>(balls.begin(), balls.size()), threshold);
 }
 
-/// The box holding the surface at every time: each source's centre +- (|amplitude| + radius).
-/// Throws UsageError for a block with no source.
-inline Aabb metaballs_bounds(const Metaballs& blob) {
+PROCEDURAY_DECL Aabb metaballs_bounds(const Metaballs& blob) {
   if (blob.count == 0 || blob.count > max_metaballs) {
     throw UsageError("metaballs_bounds: the block has " + std::to_string(blob.count) + " sources; build it with "
                      "make_metaballs (1 to " + std::to_string(max_metaballs) + " sources)");
@@ -123,3 +142,4 @@ inline Aabb metaballs_bounds(const Metaballs& blob) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

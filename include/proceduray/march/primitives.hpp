@@ -14,6 +14,8 @@
 // sphere again), and its normal is a difference at a scale.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/march/knobs.hpp>
 
 #include <cstdint>
@@ -22,7 +24,25 @@ namespace proceduray {
 
 /// SDFs: Lipschitz-scaled sphere tracing by default (the D3D12 sample's 512 steps), half a
 /// footprint, central normals at the threshold.
-inline const MarchCapabilities& sdf_capabilities() {
+PROCEDURAY_DECL const MarchCapabilities& sdf_capabilities();
+
+/// Metaballs: segment tracing by default (on the measured front: at half a footprint 22.5
+/// evaluations per ray where the sample's fixed 128 steps take 59, with a third of their depth
+/// error; README, "Defaults from the front"), analytic normals. Fixed steps keep 128.
+PROCEDURAY_DECL const MarchCapabilities& metaball_capabilities();
+
+/// Escape-time fractals with `iterations` by default (at most 16): sphere tracing of the
+/// estimate, 256 steps, half a footprint, central normals at a quarter of the threshold (near
+/// the reference's own 0.1-footprint scale: 12 degrees median error where 1 threshold gave 34).
+PROCEDURAY_DECL MarchCapabilities fractal_capabilities(std::uint32_t iterations);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const MarchCapabilities& sdf_capabilities() {
   static const MarchCapabilities caps{
       "sdf",
       {MarchMethod::lipschitz, MarchMethod::sphere, MarchMethod::relaxed, MarchMethod::fixed},
@@ -32,10 +52,7 @@ inline const MarchCapabilities& sdf_capabilities() {
   return caps;
 }
 
-/// Metaballs: segment tracing by default (on the measured front: at half a footprint 22.5
-/// evaluations per ray where the sample's fixed 128 steps take 59, with a third of their depth
-/// error; README, "Defaults from the front"), analytic normals. Fixed steps keep 128.
-inline const MarchCapabilities& metaball_capabilities() {
+PROCEDURAY_DECL const MarchCapabilities& metaball_capabilities() {
   static const MarchCapabilities caps = [] {
     MarchCapabilities c{"metaballs",
                         {MarchMethod::segment, MarchMethod::fixed, MarchMethod::lipschitz},
@@ -50,10 +67,7 @@ inline const MarchCapabilities& metaball_capabilities() {
   return caps;
 }
 
-/// Escape-time fractals with `iterations` by default (at most 16): sphere tracing of the
-/// estimate, 256 steps, half a footprint, central normals at a quarter of the threshold (near
-/// the reference's own 0.1-footprint scale: 12 degrees median error where 1 threshold gave 34).
-inline MarchCapabilities fractal_capabilities(std::uint32_t iterations) {
+PROCEDURAY_DECL MarchCapabilities fractal_capabilities(std::uint32_t iterations) {
   MarchCapabilities c{"fractal",
                       {MarchMethod::sphere, MarchMethod::relaxed, MarchMethod::fixed},
                       {MarchNormal::central, MarchNormal::tetrahedral},
@@ -67,3 +81,4 @@ inline MarchCapabilities fractal_capabilities(std::uint32_t iterations) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -8,6 +8,8 @@
 //   //       ray_spheres(o, d, sphere_list(constants.balls), 1.0, t_lo, t_hi, 0u, t, n)
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/field_list.hpp>
@@ -35,7 +37,20 @@ PROCEDURAY_STRUCT(SphereSet, scalar, sphere, count, pad0, pad1, pad2);
 
 /// The block; throws UsageError naming the sphere and the fix for none, more than
 /// max_sphere_set, a radius <= 0 or a non-finite value.
-inline SphereSet make_sphere_set(std::span<const glm::vec4> spheres) {
+PROCEDURAY_DECL SphereSet make_sphere_set(std::span<const glm::vec4> spheres);
+PROCEDURAY_DECL SphereSet make_sphere_set(std::initializer_list<glm::vec4> spheres);
+
+/// The box holding every sphere of the set (radii times radius_scale); throws UsageError for
+/// a set with no sphere.
+PROCEDURAY_DECL Aabb sphere_set_bounds(const SphereSet& set, float radius_scale = 1.0f);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL SphereSet make_sphere_set(std::span<const glm::vec4> spheres) {
   if (spheres.empty()) throw UsageError("make_sphere_set: 0 spheres; give at least one (centre xyz, radius w)");
   if (spheres.size() > max_sphere_set) {
     throw UsageError("make_sphere_set: " + std::to_string(spheres.size()) + " spheres, over the limit of " +
@@ -54,13 +69,12 @@ inline SphereSet make_sphere_set(std::span<const glm::vec4> spheres) {
   }
   return out;
 }
-inline SphereSet make_sphere_set(std::initializer_list<glm::vec4> spheres) {
+
+PROCEDURAY_DECL SphereSet make_sphere_set(std::initializer_list<glm::vec4> spheres) {
   return make_sphere_set(std::span<const glm::vec4>(spheres.begin(), spheres.size()));
 }
 
-/// The box holding every sphere of the set (radii times radius_scale); throws UsageError for
-/// a set with no sphere.
-inline Aabb sphere_set_bounds(const SphereSet& set, float radius_scale = 1.0f) {
+PROCEDURAY_DECL Aabb sphere_set_bounds(const SphereSet& set, float radius_scale) {
   if (set.count == 0 || set.count > max_sphere_set) {
     throw UsageError("sphere_set_bounds: the set has " + std::to_string(set.count) + " spheres; build it with "
                      "make_sphere_set (1 to " + std::to_string(max_sphere_set) + " spheres)");
@@ -76,3 +90,4 @@ inline Aabb sphere_set_bounds(const SphereSet& set, float radius_scale = 1.0f) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

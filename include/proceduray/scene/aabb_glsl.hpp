@@ -15,6 +15,8 @@
 // hand (RendererOptions::extra_declarations, as before they were derived) declares nothing twice.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,24 +30,40 @@ namespace proceduray {
 
 namespace detail {
 /// `vec3(x, y, z)` as glsl_const prints it.
-inline std::string glsl_vec3(glm::vec3 v) {
-  const std::string line = glsl_const("v", v);
-  const std::size_t begin = line.find("= ") + 2;
-  return line.substr(begin, line.rfind(';') - begin);
-}
+PROCEDURAY_DECL std::string glsl_vec3(glm::vec3 v);
 /// One corner of every box: a constant for one box, an array for several.
-inline std::string glsl_corners(const std::string& name, const std::vector<Aabb>& boxes, bool max) {
-  if (boxes.size() == 1) return glsl_const(name, max ? boxes[0].max : boxes[0].min);
-  std::string list;
-  for (const Aabb& b : boxes) list += (list.empty() ? "" : ", ") + glsl_vec3(max ? b.max : b.min);
-  return "const vec3 " + name + "[" + std::to_string(boxes.size()) + "] = vec3[](" + list + ");\n";
-}
+PROCEDURAY_DECL std::string glsl_corners(const std::string& name, const std::vector<Aabb>& boxes, bool max);
 }  // namespace detail
 
 /// `<id>_aabb_min` and `<id>_aabb_max` of every procedural geometry (arrays and `<id>_aabb_count`
 /// for a geometry of several boxes), in registration order, inside an #ifndef guard; "" when
 /// there is none.
-inline std::string glsl_aabb_consts(const Scene& scene) {
+PROCEDURAY_DECL std::string glsl_aabb_consts(const Scene& scene);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::string glsl_vec3(glm::vec3 v) {
+  const std::string line = glsl_const("v", v);
+  const std::size_t begin = line.find("= ") + 2;
+  return line.substr(begin, line.rfind(';') - begin);
+}
+
+PROCEDURAY_DECL std::string glsl_corners(const std::string& name, const std::vector<Aabb>& boxes, bool max) {
+  if (boxes.size() == 1) return glsl_const(name, max ? boxes[0].max : boxes[0].min);
+  std::string list;
+  for (const Aabb& b : boxes) list += (list.empty() ? "" : ", ") + glsl_vec3(max ? b.max : b.min);
+  return "const vec3 " + name + "[" + std::to_string(boxes.size()) + "] = vec3[](" + list + ");\n";
+}
+
+}  // namespace proceduray::detail
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::string glsl_aabb_consts(const Scene& scene) {
   std::string out;
   for (std::uint32_t g = 0; g < scene.geometries().size(); ++g) {
     const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;
@@ -60,3 +78,4 @@ inline std::string glsl_aabb_consts(const Scene& scene) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -12,6 +12,8 @@
 // maximum sizes over what the records use, and each stage's GLSL declarations.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -198,7 +200,20 @@ struct PlanBuilder {
 
 /// The outputs' image bindings: set 0, after the highest binding the global signature uses
 /// there (a signature is made when the scene has none).
-inline void PlanBuilder::outputs() {
+
+/// Stages and groups that records use, the record groups, and the maxima over used entities.
+
+/// The scene's Plan: records, instances, pipeline plan and GLSL declarations. Throws
+/// MissingEntryError, DuplicateIdError, SceneError (no raygen), DeviceLimitError (24-bit fields).
+PROCEDURAY_DECL Plan compile(const Scene& scene);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL void PlanBuilder::outputs() {
   if (s.outputs().empty()) return;
   if (!out.m_global) out.m_global = GlobalSignatureDesc{};
   std::uint32_t next = 0;
@@ -212,8 +227,7 @@ inline void PlanBuilder::outputs() {
   });
 }
 
-/// Stages and groups that records use, the record groups, and the maxima over used entities.
-inline void PlanBuilder::pipeline() {
+PROCEDURAY_DECL void PlanBuilder::pipeline() {
   PipelinePlan& plan = out.m_pipeline;
   plan.max_recursion_depth = s.max_recursion_depth().value_or(1);
   plan.recursion_depth_declared = s.max_recursion_depth().has_value();
@@ -289,7 +303,7 @@ inline void PlanBuilder::pipeline() {
   out.m_data.assign(data.begin(), data.end());
 }
 
-inline void PlanBuilder::declarations() {
+PROCEDURAY_DECL void PlanBuilder::declarations() {
   // Every name the declarations will hold, checked once more with the pipeline's global signature
   // and the struct type names (registration saw neither): a clash here would surface as a glslang
   // error on a line of generated code.
@@ -318,9 +332,7 @@ inline void PlanBuilder::declarations() {
   }
 }
 
-/// The scene's Plan: records, instances, pipeline plan and GLSL declarations. Throws
-/// MissingEntryError, DuplicateIdError, SceneError (no raygen), DeviceLimitError (24-bit fields).
-inline Plan compile(const Scene& scene) {
+PROCEDURAY_DECL Plan compile(const Scene& scene) {
   PlanBuilder b(scene);
   b.instances();
   b.sort_entries();
@@ -331,3 +343,4 @@ inline Plan compile(const Scene& scene) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -11,6 +11,8 @@
 // numbers than 0 and 1 in set 0 (Scene::add_global_signature throws DuplicateIdError otherwise).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -25,8 +27,17 @@ inline constexpr std::uint32_t default_tlas_binding = 0;
 inline constexpr std::uint32_t default_image_binding = 1;
 
 /// The TLAS at binding 0 ("tlas"), the output image at binding 1 ("image"), then `extra` as given.
-inline GlobalSignatureDesc default_global_signature(std::vector<Binding> extra = {},
-                                                    std::uint32_t push_constant_size = 0) {
+PROCEDURAY_DECL GlobalSignatureDesc default_global_signature(std::vector<Binding> extra = {},
+                                                             std::uint32_t push_constant_size = 0);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL GlobalSignatureDesc default_global_signature(std::vector<Binding> extra,
+                                                             std::uint32_t push_constant_size) {
   GlobalSignatureDesc desc;
   desc.bindings.push_back({BindingKind::acceleration_structure, default_tlas_binding, 0, 1, "tlas", nullptr});
   desc.bindings.push_back({BindingKind::storage_image, default_image_binding, 0, 1, "image", nullptr});
@@ -36,3 +47,4 @@ inline GlobalSignatureDesc default_global_signature(std::vector<Binding> extra =
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

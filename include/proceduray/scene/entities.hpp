@@ -18,6 +18,8 @@
 // Geometry goes into BLASes (Scene::blases()): its own, or the one named by GeometryDesc::blas.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -56,10 +58,7 @@ namespace proceduray {
 inline constexpr std::uint32_t max_payload_size = 4096;
 
 namespace detail {
-inline std::uint32_t next_scene_serial() {
-  static std::atomic<std::uint32_t> serial{0};
-  return ++serial;
-}
+PROCEDURAY_DECL std::uint32_t next_scene_serial();
 
 template <class A>
 constexpr const TypeOps* attribute_glsl_of() {
@@ -353,3 +352,15 @@ class Entities {
 };
 
 }  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::uint32_t next_scene_serial() {
+  static std::atomic<std::uint32_t> serial{0};
+  return ++serial;
+}
+
+}  // namespace proceduray::detail
+#endif  // PROCEDURAY_BODIES

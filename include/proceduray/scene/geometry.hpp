@@ -17,6 +17,8 @@
 //                     and indices, BLAS rebuild when the topology changes, then a TLAS update
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -35,15 +37,12 @@ namespace proceduray {
 /// Triangles or AABBs; a BLAS holds one kind.
 enum class GeometryKind : std::uint32_t { triangles = 0, procedural = 1 };
 
-inline const char* to_string(GeometryKind kind) { return kind == GeometryKind::triangles ? "triangles" : "procedural"; }
+PROCEDURAY_DECL const char* to_string(GeometryKind kind);
 
 /// How a geometry changes after it is built. CamelCase as engines name them (`static` is a keyword).
 enum class UpdatePolicy : std::uint32_t { Static = 0, DynamicTransform = 1, DynamicGeometry = 2 };
 
-inline const char* to_string(UpdatePolicy policy) {
-  constexpr const char* names[] = {"Static", "DynamicTransform", "DynamicGeometry"};
-  return names[static_cast<std::uint32_t>(policy)];
-}
+PROCEDURAY_DECL const char* to_string(UpdatePolicy policy);
 
 /// An axis-aligned box in BLAS space.
 struct Aabb {
@@ -80,22 +79,13 @@ struct InstanceTransform {
 static_assert(sizeof(InstanceTransform) == 12 * sizeof(float), "InstanceTransform must be VkTransformMatrixKHR's 48 bytes");
 
 /// Converts a column-major glm::mat4 (affine: its last row is dropped) to an InstanceTransform.
-inline InstanceTransform instance_transform(const glm::mat4& m) {
-  InstanceTransform t;
-  for (int r = 0; r < 3; ++r) t[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
-  return t;
-}
+PROCEDURAY_DECL InstanceTransform instance_transform(const glm::mat4& m);
 
 /// The identity instance transform.
-inline InstanceTransform identity_transform() { return instance_transform(glm::mat4(1.0f)); }
+PROCEDURAY_DECL InstanceTransform identity_transform();
 
 /// The affine glm::mat4 of an InstanceTransform (last row (0, 0, 0, 1)), e.g. to transform points.
-inline glm::mat4 matrix_of(const InstanceTransform& t) {
-  glm::mat4 m(1.0f);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];
-  return m;
-}
+PROCEDURAY_DECL glm::mat4 matrix_of(const InstanceTransform& t);
 
 /// What the user declares for a geometry.
 struct GeometryDesc {
@@ -135,30 +125,15 @@ struct Geometry {
 };
 
 namespace detail {
-inline std::string vec_string(const glm::vec3& v) {
-  return std::string("(") + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
-}
-inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+PROCEDURAY_DECL std::string vec_string(const glm::vec3& v);
+PROCEDURAY_DECL bool finite(const glm::vec3& v);
 
 /// Finite bounds with min <= max on every axis (what validate(Aabb) checks).
-inline bool valid_box(const Aabb& box) {
-  return finite(box.min) && finite(box.max) && box.min.x <= box.max.x && box.min.y <= box.max.y &&
-         box.min.z <= box.max.z;
-}
+PROCEDURAY_DECL bool valid_box(const Aabb& box);
 }  // namespace detail
 
 /// Throws InvalidGeometryError for an AABB with min > max or non-finite bounds.
-inline void validate(const Aabb& box, std::string_view where) {
-  if (!detail::finite(box.min) || !detail::finite(box.max)) {
-    throw InvalidGeometryError(std::string(where) + " has non-finite bounds min " + detail::vec_string(box.min) +
-                               " max " + detail::vec_string(box.max) + "; give finite bounds (NaN or inf "
-                               "breaks BVH builds)");
-  }
-  if (box.min.x > box.max.x || box.min.y > box.max.y || box.min.z > box.max.z) {
-    throw InvalidGeometryError(std::string(where) + " has min " + detail::vec_string(box.min) + " > max " +
-                               detail::vec_string(box.max) + "; swap the corners so min <= max on every axis");
-  }
-}
+PROCEDURAY_DECL void validate(const Aabb& box, std::string_view where);
 
 namespace detail {
 /// What validate(InstanceTransform) finds: the first non-finite element (row -1: none) and the determinant.
@@ -202,18 +177,94 @@ TransformCheck check_transform_at(At at) {
   out.singular = !(magnitude > min_relative_determinant * scale) || !(magnitude >= min_transform_determinant);
   return out;
 }
-inline TransformCheck check_transform(const InstanceTransform& t) {
-  return check_transform_at([&t](int r, int c) { return t[r][c]; });
-}
+PROCEDURAY_DECL TransformCheck check_transform(const InstanceTransform& t);
 /// Finite and invertible: validate(InstanceTransform) would not throw.
-inline bool valid_transform(const InstanceTransform& t) {
-  const TransformCheck c = check_transform(t);
-  return c.row < 0 && !c.singular;
-}
+PROCEDURAY_DECL bool valid_transform(const InstanceTransform& t);
 }  // namespace detail
 
 /// Throws InvalidGeometryError for a non-finite or singular transform (detail::check_transform_at's rule).
-inline void validate(const InstanceTransform& t, std::string_view where) {
+PROCEDURAY_DECL void validate(const InstanceTransform& t, std::string_view where);
+
+/// Throws InvalidGeometryError for an empty or out-of-range mesh, no AABBs, a bad AABB or transform.
+PROCEDURAY_DECL void validate(const GeometryDesc& desc, std::string_view id, std::string_view operation);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const char* to_string(GeometryKind kind) { return kind == GeometryKind::triangles ? "triangles" : "procedural"; }
+
+PROCEDURAY_DECL const char* to_string(UpdatePolicy policy) {
+  constexpr const char* names[] = {"Static", "DynamicTransform", "DynamicGeometry"};
+  return names[static_cast<std::uint32_t>(policy)];
+}
+
+PROCEDURAY_DECL InstanceTransform instance_transform(const glm::mat4& m) {
+  InstanceTransform t;
+  for (int r = 0; r < 3; ++r) t[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
+  return t;
+}
+
+PROCEDURAY_DECL InstanceTransform identity_transform() { return instance_transform(glm::mat4(1.0f)); }
+
+PROCEDURAY_DECL glm::mat4 matrix_of(const InstanceTransform& t) {
+  glm::mat4 m(1.0f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) m[c][r] = t[r][c];
+  return m;
+}
+
+}  // namespace proceduray
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::string vec_string(const glm::vec3& v) {
+  return std::string("(") + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+
+PROCEDURAY_DECL bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+PROCEDURAY_DECL bool valid_box(const Aabb& box) {
+  return finite(box.min) && finite(box.max) && box.min.x <= box.max.x && box.min.y <= box.max.y &&
+         box.min.z <= box.max.z;
+}
+
+}  // namespace proceduray::detail
+
+namespace proceduray {
+
+PROCEDURAY_DECL void validate(const Aabb& box, std::string_view where) {
+  if (!detail::finite(box.min) || !detail::finite(box.max)) {
+    throw InvalidGeometryError(std::string(where) + " has non-finite bounds min " + detail::vec_string(box.min) +
+                               " max " + detail::vec_string(box.max) + "; give finite bounds (NaN or inf "
+                               "breaks BVH builds)");
+  }
+  if (box.min.x > box.max.x || box.min.y > box.max.y || box.min.z > box.max.z) {
+    throw InvalidGeometryError(std::string(where) + " has min " + detail::vec_string(box.min) + " > max " +
+                               detail::vec_string(box.max) + "; swap the corners so min <= max on every axis");
+  }
+}
+
+}  // namespace proceduray
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL TransformCheck check_transform(const InstanceTransform& t) {
+  return check_transform_at([&t](int r, int c) { return t[r][c]; });
+}
+
+PROCEDURAY_DECL bool valid_transform(const InstanceTransform& t) {
+  const TransformCheck c = check_transform(t);
+  return c.row < 0 && !c.singular;
+}
+
+}  // namespace proceduray::detail
+
+namespace proceduray {
+
+PROCEDURAY_DECL void validate(const InstanceTransform& t, std::string_view where) {
   const detail::TransformCheck c = detail::check_transform(t);
   if (c.row >= 0) {
     throw InvalidGeometryError(std::string(where) + " has a non-finite element at row " + std::to_string(c.row) +
@@ -229,8 +280,7 @@ inline void validate(const InstanceTransform& t, std::string_view where) {
   }
 }
 
-/// Throws InvalidGeometryError for an empty or out-of-range mesh, no AABBs, a bad AABB or transform.
-inline void validate(const GeometryDesc& desc, std::string_view id, std::string_view operation) {
+PROCEDURAY_DECL void validate(const GeometryDesc& desc, std::string_view id, std::string_view operation) {
   // Messages are built only on failure: registering a million geometries must not format a million strings.
   auto place = [&] { return std::string(operation) + ": geometry \"" + std::string(id) + "\""; };
   if (desc.kind == GeometryKind::procedural) {
@@ -282,3 +332,4 @@ inline void validate(const GeometryDesc& desc, std::string_view id, std::string_
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -12,6 +12,8 @@
 //   scene.add_global_signature("Global", {.bindings = {...}, .push_constants = frame});
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -28,11 +30,7 @@ namespace proceduray {
 /// image there, not the colour image.
 enum class BindingKind : std::uint32_t { acceleration_structure, storage_image, uniform_buffer, storage_buffer, output_image };
 
-inline const char* to_string(BindingKind kind) {
-  constexpr const char* names[] = {"acceleration_structure", "storage_image", "uniform_buffer", "storage_buffer",
-                                   "output_image"};
-  return names[static_cast<std::uint32_t>(kind)];
-}
+PROCEDURAY_DECL const char* to_string(BindingKind kind);
 
 /// One descriptor binding, visible to every ray-tracing stage.
 struct Binding {
@@ -74,7 +72,21 @@ struct GlobalSignature {
 
 /// Throws SceneError for a (set, binding) used twice, a zero count, a push constant size not a multiple of 4,
 /// or both typed and untyped push constants.
-inline void validate(const GlobalSignatureDesc& desc, std::string_view id, std::string_view operation) {
+PROCEDURAY_DECL void validate(const GlobalSignatureDesc& desc, std::string_view id, std::string_view operation);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const char* to_string(BindingKind kind) {
+  constexpr const char* names[] = {"acceleration_structure", "storage_image", "uniform_buffer", "storage_buffer",
+                                   "output_image"};
+  return names[static_cast<std::uint32_t>(kind)];
+}
+
+PROCEDURAY_DECL void validate(const GlobalSignatureDesc& desc, std::string_view id, std::string_view operation) {
   const std::string where = std::string(operation) + ": global signature \"" + std::string(id) + "\"";
   for (std::size_t i = 0; i < desc.bindings.size(); ++i) {
     const Binding& b = desc.bindings[i];
@@ -104,3 +116,4 @@ inline void validate(const GlobalSignatureDesc& desc, std::string_view id, std::
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -15,12 +15,10 @@
 // arguments, the bindings and constants), and `generator --names` lists the stages.
 #pragma once
 
-#include <exception>
+#include <proceduray/config.hpp>
+
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iostream>
-#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +30,33 @@
 namespace proceduray {
 
 /// The file the declarations of `shader` as `stage` go to: "<shader>.<stage>.glsl", '/' made '_'.
-inline std::string glsl_file_name(ShaderStage stage, std::string_view shader) {
+PROCEDURAY_DECL std::string glsl_file_name(ShaderStage stage, std::string_view shader);
+
+/// Writes one file per pipeline stage of `plan` into `dir` (made if missing) and returns their
+/// names; throws EnvironmentError naming a file it cannot write.
+PROCEDURAY_DECL std::vector<std::string> write_glsl_files(const Plan& plan, const std::filesystem::path& dir);
+
+/// Reads the declarations write_glsl_files wrote into `dir`, for RendererOptions::declarations;
+/// the function it returns throws EnvironmentError naming a missing file and the fix.
+PROCEDURAY_DECL std::function<std::string(ShaderStage, const std::string&)> glsl_files(std::filesystem::path dir);
+
+/// The body of a build-time generator: compiles `scene` and writes its declarations into the
+/// folder argv[1], then the list of files into argv[1]/files.txt and, when given, argv[2] (a file
+/// a build system tracks as the output, e.g. Meson's custom_target). Returns 0, or 1 with a message.
+PROCEDURAY_DECL int glsl_files_main(const Scene& scene, int argc, char** argv);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <exception>
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::string glsl_file_name(ShaderStage stage, std::string_view shader) {
   std::string name(shader);
   for (char& c : name) {
     if (c == '/' || c == '\\') c = '_';
@@ -40,9 +64,7 @@ inline std::string glsl_file_name(ShaderStage stage, std::string_view shader) {
   return name + "." + to_string(stage) + ".glsl";
 }
 
-/// Writes one file per pipeline stage of `plan` into `dir` (made if missing) and returns their
-/// names; throws EnvironmentError naming a file it cannot write.
-inline std::vector<std::string> write_glsl_files(const Plan& plan, const std::filesystem::path& dir) {
+PROCEDURAY_DECL std::vector<std::string> write_glsl_files(const Plan& plan, const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   std::vector<std::string> names;
@@ -59,9 +81,7 @@ inline std::vector<std::string> write_glsl_files(const Plan& plan, const std::fi
   return names;
 }
 
-/// Reads the declarations write_glsl_files wrote into `dir`, for RendererOptions::declarations;
-/// the function it returns throws EnvironmentError naming a missing file and the fix.
-inline std::function<std::string(ShaderStage, const std::string&)> glsl_files(std::filesystem::path dir) {
+PROCEDURAY_DECL std::function<std::string(ShaderStage, const std::string&)> glsl_files(std::filesystem::path dir) {
   return [dir = std::move(dir)](ShaderStage stage, const std::string& shader) {
     const std::filesystem::path path = dir / glsl_file_name(stage, shader);
     std::ifstream in(path, std::ios::binary);
@@ -74,10 +94,7 @@ inline std::function<std::string(ShaderStage, const std::string&)> glsl_files(st
   };
 }
 
-/// The body of a build-time generator: compiles `scene` and writes its declarations into the
-/// folder argv[1], then the list of files into argv[1]/files.txt and, when given, argv[2] (a file
-/// a build system tracks as the output, e.g. Meson's custom_target). Returns 0, or 1 with a message.
-inline int glsl_files_main(const Scene& scene, int argc, char** argv) {
+PROCEDURAY_DECL int glsl_files_main(const Scene& scene, int argc, char** argv) {
   if (argc >= 2 && std::string_view(argv[1]) == "--names") {
     try {
       const Plan plan = compile(scene);
@@ -126,3 +143,4 @@ inline int glsl_files_main(const Scene& scene, int argc, char** argv) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

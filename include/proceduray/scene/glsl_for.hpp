@@ -43,6 +43,8 @@
 // Every block comes from shader/glsl_codegen.hpp, the one GLSL emitter.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include "proceduray/scene/aabb_glsl.hpp"
 #include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/scene/outputs_glsl.hpp"
@@ -63,7 +65,62 @@ namespace detail {
 using proceduray::glsl_identifier;  // glsl_names.hpp
 
 /// The one type a shader's uses agree on, or nullptr; throws when they disagree.
-inline const TypeOps* one_type(const std::vector<const TypeOps*>& types, std::string_view shader, const char* what) {
+PROCEDURAY_DECL const TypeOps* one_type(const std::vector<const TypeOps*>& types, std::string_view shader, const char* what);
+
+PROCEDURAY_DECL std::string binding_glsl(const Binding& b);
+
+}  // namespace detail
+
+namespace detail {
+
+/// What every stage gets: the structs of every registered type, ray, layer and callable
+/// constants, the named bindings and the push constant block.
+PROCEDURAY_DECL std::string common_declarations(const Scene& scene, const Plan& plan);
+
+/// The record block of a shader whose records carry `types` (one type, or none).
+PROCEDURAY_DECL std::string record_block(const std::vector<const TypeOps*>& types, std::string_view shader);
+
+/// Outgoing callable data of every callable but `skip` (the one a callable shader receives), and
+/// `<id>_call(d)` for each.
+PROCEDURAY_DECL std::string callable_data(const Scene& scene, std::uint32_t skip);
+
+/// The name of the acceleration structure the trace functions trace: the global signature's
+/// first named one, or "" (then there are no trace functions).
+PROCEDURAY_DECL std::string trace_target(const Plan& plan);
+
+/// What a tracing stage (raygen, miss, closest hit) gets: every ray's outgoing payload, at
+/// location = ray index, and its two trace functions.
+PROCEDURAY_DECL std::string tracing_declarations(const Scene& scene, const Plan& plan);
+
+/// The root arguments type of a record, or nullptr.
+PROCEDURAY_DECL const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const SbtRecord& record);
+
+/// Payload, attributes, record and outgoing payloads of a hit-group stage.
+PROCEDURAY_DECL std::string hit_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader);
+
+/// What `shader` as `stage` gets after the common declarations (see the top of this header);
+/// compile() prepends common_declarations, the same for every stage, computed once.
+PROCEDURAY_DECL std::string stage_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader);
+
+}  // namespace detail
+
+/// The declarations compile() derived for `shader` as `stage`; throws UnknownIdError when the
+/// plan has no such stage (a shader no entry uses, or the wrong stage).
+PROCEDURAY_DECL const std::string& glsl_for(const Plan& plan, ShaderStage stage, std::string_view shader);
+
+/// The names a shader's declarations give it, one line each: a struct as `struct T`, a block as
+/// its header and instance name, a function as its signature, constants, variables and macros as
+/// written. What `glsl_for` tools print (glsl_files_main --names), for a newcomer asking "what
+/// can this shader call?".
+PROCEDURAY_DECL std::string glsl_summary(std::string_view declarations);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL const TypeOps* one_type(const std::vector<const TypeOps*>& types, std::string_view shader, const char* what) {
   const TypeOps* found = nullptr;
   for (const TypeOps* t : types) {
     if (t == nullptr) continue;
@@ -77,7 +134,7 @@ inline const TypeOps* one_type(const std::vector<const TypeOps*>& types, std::st
   return found;
 }
 
-inline std::string binding_glsl(const Binding& b) {
+PROCEDURAY_DECL std::string binding_glsl(const Binding& b) {
   const std::string name = glsl_identifier(b.name);
   const std::string where = "layout(set = " + std::to_string(b.set) + ", binding = " + std::to_string(b.binding);
   switch (b.kind) {
@@ -96,13 +153,7 @@ inline std::string binding_glsl(const Binding& b) {
   return {};
 }
 
-}  // namespace detail
-
-namespace detail {
-
-/// What every stage gets: the structs of every registered type, ray, layer and callable
-/// constants, the named bindings and the push constant block.
-inline std::string common_declarations(const Scene& scene, const Plan& plan) {
+PROCEDURAY_DECL std::string common_declarations(const Scene& scene, const Plan& plan) {
   std::vector<const TypeOps*> roots;  // a fixed order: payloads, attributes, records, callables, bindings
   auto add_root = [&](const TypeOps* t) {
     if (t != nullptr && std::find(roots.begin(), roots.end(), t) == roots.end()) roots.push_back(t);
@@ -140,15 +191,12 @@ inline std::string common_declarations(const Scene& scene, const Plan& plan) {
   return out + glsl_aabb_consts(scene) + glsl_outputs(plan.outputs());
 }
 
-/// The record block of a shader whose records carry `types` (one type, or none).
-inline std::string record_block(const std::vector<const TypeOps*>& types, std::string_view shader) {
+PROCEDURAY_DECL std::string record_block(const std::vector<const TypeOps*>& types, std::string_view shader) {
   const TypeOps* t = one_type(types, shader, "root arguments");
   return t == nullptr ? std::string() : glsl_root_arguments(*t, "arguments");
 }
 
-/// Outgoing callable data of every callable but `skip` (the one a callable shader receives), and
-/// `<id>_call(d)` for each.
-inline std::string callable_data(const Scene& scene, std::uint32_t skip) {
+PROCEDURAY_DECL std::string callable_data(const Scene& scene, std::uint32_t skip) {
   std::string text;
   for (std::uint32_t c = 0; c < scene.callables().size(); ++c) {
     if (c == skip) continue;
@@ -161,9 +209,7 @@ inline std::string callable_data(const Scene& scene, std::uint32_t skip) {
   return text;
 }
 
-/// The name of the acceleration structure the trace functions trace: the global signature's
-/// first named one, or "" (then there are no trace functions).
-inline std::string trace_target(const Plan& plan) {
+PROCEDURAY_DECL std::string trace_target(const Plan& plan) {
   const GlobalSignatureDesc* global = plan.global_signature();
   if (global == nullptr) return {};
   for (const Binding& b : global->bindings) {
@@ -172,9 +218,7 @@ inline std::string trace_target(const Plan& plan) {
   return {};
 }
 
-/// What a tracing stage (raygen, miss, closest hit) gets: every ray's outgoing payload, at
-/// location = ray index, and its two trace functions.
-inline std::string tracing_declarations(const Scene& scene, const Plan& plan) {
+PROCEDURAY_DECL std::string tracing_declarations(const Scene& scene, const Plan& plan) {
   std::string out;
   const std::string tlas = trace_target(plan);
   for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
@@ -193,15 +237,13 @@ inline std::string tracing_declarations(const Scene& scene, const Plan& plan) {
   return out;
 }
 
-/// The root arguments type of a record, or nullptr.
-inline const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const SbtRecord& record) {
+PROCEDURAY_DECL const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const SbtRecord& record) {
   const Entry* e = plan.entry(record);
   if (e == nullptr || e->local_signature == no_index) return nullptr;
   return scene.local_signature(LocalSignatureId<>(e->local_signature)).arguments_glsl;
 }
 
-/// Payload, attributes, record and outgoing payloads of a hit-group stage.
-inline std::string hit_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
+PROCEDURAY_DECL std::string hit_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
   std::vector<const TypeOps*> payloads, attributes, records;
   for (const SbtRecord& rec : plan.records(SbtRegionKind::hit)) {
     if (rec.group == no_index) continue;
@@ -228,9 +270,7 @@ inline std::string hit_declarations(const Scene& scene, const Plan& plan, Shader
   return out;
 }
 
-/// What `shader` as `stage` gets after the common declarations (see the top of this header);
-/// compile() prepends common_declarations, the same for every stage, computed once.
-inline std::string stage_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
+PROCEDURAY_DECL std::string stage_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
   std::string out;
   const auto rays = scene.rays().size();
   std::vector<const TypeOps*> payloads, records;
@@ -272,19 +312,15 @@ inline std::string stage_declarations(const Scene& scene, const Plan& plan, Shad
   return out;
 }
 
-}  // namespace detail
+}  // namespace proceduray::detail
 
-/// The declarations compile() derived for `shader` as `stage`; throws UnknownIdError when the
-/// plan has no such stage (a shader no entry uses, or the wrong stage).
-inline const std::string& glsl_for(const Plan& plan, ShaderStage stage, std::string_view shader) {
+namespace proceduray {
+
+PROCEDURAY_DECL const std::string& glsl_for(const Plan& plan, ShaderStage stage, std::string_view shader) {
   return plan.declarations(stage, shader);
 }
 
-/// The names a shader's declarations give it, one line each: a struct as `struct T`, a block as
-/// its header and instance name, a function as its signature, constants, variables and macros as
-/// written. What `glsl_for` tools print (glsl_files_main --names), for a newcomer asking "what
-/// can this shader call?".
-inline std::string glsl_summary(std::string_view declarations) {
+PROCEDURAY_DECL std::string glsl_summary(std::string_view declarations) {
   std::string out, block;  // block: the header of the struct or block being skipped
   std::size_t at = 0;
   while (at < declarations.size()) {
@@ -321,3 +357,4 @@ inline std::string glsl_summary(std::string_view declarations) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -13,6 +13,8 @@
 // add_global_signature) and once more in compile(), which also sees the struct type names.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include "proceduray/scene/errors.hpp"
 #include "proceduray/shader/glsl_keywords.hpp"
 
@@ -26,15 +28,7 @@ namespace proceduray {
 
 /// `name` with every character that may not appear in a GLSL identifier replaced by '_' (and a
 /// leading '_' before a digit).
-inline std::string glsl_identifier(std::string_view name) {
-  std::string out(name);
-  for (char& c : out) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-    if (!ok) c = '_';
-  }
-  if (out.empty() || (out[0] >= '0' && out[0] <= '9')) out.insert(out.begin(), '_');
-  return out;
-}
+PROCEDURAY_DECL std::string glsl_identifier(std::string_view name);
 
 /// One name generated code declares, and the entity it comes from (for messages).
 struct GlslName {
@@ -47,31 +41,60 @@ struct GlslName {
 inline constexpr std::array<std::string_view, 5> library_glsl_names = {"arguments", "call", "hit", "payload",
                                                                        "ray_count"};
 
-inline std::string quote_origin(std::string_view kind, std::string_view id) {
+PROCEDURAY_DECL std::string quote_origin(std::string_view kind, std::string_view id);
+/// What a ray declares: its outgoing payload under its own name, its three constants and its trace function.
+PROCEDURAY_DECL std::vector<GlslName> ray_glsl_names(std::string_view id);
+PROCEDURAY_DECL std::vector<GlslName> layer_glsl_names(std::string_view id);
+PROCEDURAY_DECL std::vector<GlslName> callable_glsl_names(std::string_view id);
+/// A named binding or push constant block of a global signature (unnamed ones are not declared).
+PROCEDURAY_DECL std::vector<GlslName> binding_glsl_names(std::string_view name, std::string_view kind);
+
+/// Throws SceneError when a candidate name is a GLSL reserved word or one of the library's own
+/// names, DuplicateIdError when it equals a name in `existing` or another candidate's.
+PROCEDURAY_DECL void check_glsl_names(std::string_view op, const std::vector<GlslName>& existing,
+                                      const std::vector<GlslName>& candidates);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::string glsl_identifier(std::string_view name) {
+  std::string out(name);
+  for (char& c : out) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    if (!ok) c = '_';
+  }
+  if (out.empty() || (out[0] >= '0' && out[0] <= '9')) out.insert(out.begin(), '_');
+  return out;
+}
+
+PROCEDURAY_DECL std::string quote_origin(std::string_view kind, std::string_view id) {
   return std::string(kind) + " \"" + std::string(id) + "\"";
 }
-/// What a ray declares: its outgoing payload under its own name, its three constants and its trace function.
-inline std::vector<GlslName> ray_glsl_names(std::string_view id) {
+
+PROCEDURAY_DECL std::vector<GlslName> ray_glsl_names(std::string_view id) {
   const std::string m = glsl_identifier(id), origin = quote_origin("ray", id);
   return {{m, origin}, {m + "_ray", origin}, {m + "_flags", origin}, {m + "_mask", origin}, {"trace_" + m, origin}};
 }
-inline std::vector<GlslName> layer_glsl_names(std::string_view id) {
+
+PROCEDURAY_DECL std::vector<GlslName> layer_glsl_names(std::string_view id) {
   return {{"layer_" + glsl_identifier(id), quote_origin("layer", id)}};
 }
-inline std::vector<GlslName> callable_glsl_names(std::string_view id) {
+
+PROCEDURAY_DECL std::vector<GlslName> callable_glsl_names(std::string_view id) {
   const std::string m = glsl_identifier(id), origin = quote_origin("callable", id);
   return {{m + "_callable", origin}, {m + "_data", origin}, {m + "_call", origin}};
 }
-/// A named binding or push constant block of a global signature (unnamed ones are not declared).
-inline std::vector<GlslName> binding_glsl_names(std::string_view name, std::string_view kind) {
+
+PROCEDURAY_DECL std::vector<GlslName> binding_glsl_names(std::string_view name, std::string_view kind) {
   if (name.empty()) return {};
   return {{glsl_identifier(name), quote_origin(kind, name)}};
 }
 
-/// Throws SceneError when a candidate name is a GLSL reserved word or one of the library's own
-/// names, DuplicateIdError when it equals a name in `existing` or another candidate's.
-inline void check_glsl_names(std::string_view op, const std::vector<GlslName>& existing,
-                             const std::vector<GlslName>& candidates) {
+PROCEDURAY_DECL void check_glsl_names(std::string_view op, const std::vector<GlslName>& existing,
+                                      const std::vector<GlslName>& candidates) {
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const GlslName& c = candidates[i];
     if (is_glsl_reserved(c.name)) {
@@ -97,3 +120,4 @@ inline void check_glsl_names(std::string_view op, const std::vector<GlslName>& e
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

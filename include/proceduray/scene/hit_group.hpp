@@ -9,6 +9,8 @@
 // group must have one. validate() throws HitGroupKindError otherwise.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -23,7 +25,7 @@ namespace proceduray {
 /// Which geometry a hit group handles.
 enum class HitGroupKind : std::uint32_t { triangles = 0, procedural = 1 };
 
-inline const char* to_string(HitGroupKind kind) { return kind == HitGroupKind::triangles ? "triangles" : "procedural"; }
+PROCEDURAY_DECL const char* to_string(HitGroupKind kind);
 
 /// What the user declares for a hit group; empty shader names mean "none".
 struct HitGroupDesc {
@@ -45,7 +47,17 @@ struct HitGroup {
 };
 
 /// Throws HitGroupKindError when the shaders do not fit the kind.
-inline void validate(const HitGroupDesc& desc, std::string_view id, std::string_view operation) {
+PROCEDURAY_DECL void validate(const HitGroupDesc& desc, std::string_view id, std::string_view operation);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const char* to_string(HitGroupKind kind) { return kind == HitGroupKind::triangles ? "triangles" : "procedural"; }
+
+PROCEDURAY_DECL void validate(const HitGroupDesc& desc, std::string_view id, std::string_view operation) {
   if (desc.kind == HitGroupKind::triangles && !desc.intersection.empty()) {
     throw HitGroupKindError(std::string(operation) + ": triangle hit group \"" + std::string(id) +
                             "\" has intersection shader \"" + desc.intersection +
@@ -59,3 +71,4 @@ inline void validate(const HitGroupDesc& desc, std::string_view id, std::string_
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

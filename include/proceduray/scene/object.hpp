@@ -17,6 +17,8 @@
 // throw leaves the scene as it was.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <concepts>
 #include <cstdint>
 #include <string>
@@ -51,34 +53,14 @@ struct ObjectDesc {
 namespace detail {
 
 /// The hit group name of an object for ray `r`: the id for ray 0, "<id>_<ray>" for the others.
-inline std::string object_group_name(const Scene& scene, std::string_view id, std::uint32_t r) {
-  return r == 0 ? std::string(id) : std::string(id) + "_" + scene.rays().name(r);
-}
+PROCEDURAY_DECL std::string object_group_name(const Scene& scene, std::string_view id, std::uint32_t r);
 
 /// The shader `ray` runs from `list`, or "" when it has none; throws for unknown or repeated rays.
-inline std::string shader_of(const Scene& scene, const std::vector<RayShader>& list, std::uint32_t ray,
-                             std::string_view id, const char* what) {
-  std::string found;
-  bool seen = false;
-  for (const RayShader& s : list) {
-    scene.rays().check_index(s.ray.index(), std::string("add_object: object \"") + std::string(id) + "\" " + what);
-    if (s.ray.index() != ray) continue;
-    if (seen) {
-      throw DuplicateIdError("add_object: object \"" + std::string(id) + "\" lists ray \"" + scene.rays().name(ray) +
-                             "\" twice in " + what + "; give each ray type one shader");
-    }
-    seen = true;
-    found = s.shader;
-  }
-  return found;
-}
+PROCEDURAY_DECL std::string shader_of(const Scene& scene, const std::vector<RayShader>& list, std::uint32_t ray,
+                                      std::string_view id, const char* what);
 
 /// Instances of the object's BLAS: its own, or those of the shared BLAS it joins.
-inline std::size_t object_instances(const Scene& scene, const GeometryDesc& g) {
-  if (!g.instances.empty() || g.blas.empty()) return g.instances.size();
-  const Blas* shared = scene.find_shared_blas(g.blas);
-  return shared != nullptr ? shared->instances.size() : 0;
-}
+PROCEDURAY_DECL std::size_t object_instances(const Scene& scene, const GeometryDesc& g);
 
 /// Registers the object's geometry, then its hit groups (checked first: they cannot throw then); returns the
 /// geometry and each ray's group.
@@ -171,3 +153,37 @@ GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc) {
 }
 
 }  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::string object_group_name(const Scene& scene, std::string_view id, std::uint32_t r) {
+  return r == 0 ? std::string(id) : std::string(id) + "_" + scene.rays().name(r);
+}
+
+PROCEDURAY_DECL std::string shader_of(const Scene& scene, const std::vector<RayShader>& list, std::uint32_t ray,
+                                      std::string_view id, const char* what) {
+  std::string found;
+  bool seen = false;
+  for (const RayShader& s : list) {
+    scene.rays().check_index(s.ray.index(), std::string("add_object: object \"") + std::string(id) + "\" " + what);
+    if (s.ray.index() != ray) continue;
+    if (seen) {
+      throw DuplicateIdError("add_object: object \"" + std::string(id) + "\" lists ray \"" + scene.rays().name(ray) +
+                             "\" twice in " + what + "; give each ray type one shader");
+    }
+    seen = true;
+    found = s.shader;
+  }
+  return found;
+}
+
+PROCEDURAY_DECL std::size_t object_instances(const Scene& scene, const GeometryDesc& g) {
+  if (!g.instances.empty() || g.blas.empty()) return g.instances.size();
+  const Blas* shared = scene.find_shared_blas(g.blas);
+  return shared != nullptr ? shared->instances.size() : 0;
+}
+
+}  // namespace proceduray::detail
+#endif  // PROCEDURAY_BODIES

@@ -7,6 +7,8 @@
 // compile() adds both to each stage's declarations (glsl_for.hpp); a shader never writes them.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <span>
 #include <string>
 
@@ -16,7 +18,26 @@ namespace proceduray {
 
 namespace detail {
 /// The body of output `o`'s helper, writing `v` at the pixel of this launch.
-inline std::string output_store(Output o) {
+PROCEDURAY_DECL std::string output_store(Output o);
+PROCEDURAY_DECL const char* output_parameter(Output o);
+}  // namespace detail
+
+/// Every stage's output declarations: flag bits, PROCEDURAY_OUTPUTS when any output is asked
+/// for, and for each output either its image and helper or an empty macro. Macros, not
+/// constants, for the flags: an unused constant would still change the SPIR-V.
+PROCEDURAY_DECL std::string glsl_outputs(std::span<const PlannedOutput> planned);
+
+/// A hit stage's output_hit(n): t (gl_HitTEXT), normal n and ids of this hit, through the
+/// helpers above; an empty macro when the scene asks for none of the three.
+PROCEDURAY_DECL std::string glsl_output_hit(std::span<const PlannedOutput> planned);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::string output_store(Output o) {
   const std::string image = "output_" + std::string(name(o)) + "_image", at = "ivec2(gl_LaunchIDEXT.xy)";
   switch (o) {
     case Output::t: return "imageStore(" + image + ", " + at + ", vec4(v, 0.0, 0.0, 0.0));";
@@ -27,7 +48,8 @@ inline std::string output_store(Output o) {
   }
   return {};
 }
-inline const char* output_parameter(Output o) {
+
+PROCEDURAY_DECL const char* output_parameter(Output o) {
   switch (o) {
     case Output::t: return "float";
     case Output::normal: return "vec3";
@@ -37,12 +59,12 @@ inline const char* output_parameter(Output o) {
   }
   return "";
 }
-}  // namespace detail
 
-/// Every stage's output declarations: flag bits, PROCEDURAY_OUTPUTS when any output is asked
-/// for, and for each output either its image and helper or an empty macro. Macros, not
-/// constants, for the flags: an unused constant would still change the SPIR-V.
-inline std::string glsl_outputs(std::span<const PlannedOutput> planned) {
+}  // namespace proceduray::detail
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::string glsl_outputs(std::span<const PlannedOutput> planned) {
   std::string out = "#define output_flag_nan " + std::to_string(output_flag_nan) + "u\n" +
                     "#define output_flag_exhausted " + std::to_string(output_flag_exhausted) + "u\n" +
                     "#define output_flag_started_inside " + std::to_string(output_flag_started_inside) + "u\n";
@@ -66,9 +88,7 @@ inline std::string glsl_outputs(std::span<const PlannedOutput> planned) {
   return out;
 }
 
-/// A hit stage's output_hit(n): t (gl_HitTEXT), normal n and ids of this hit, through the
-/// helpers above; an empty macro when the scene asks for none of the three.
-inline std::string glsl_output_hit(std::span<const PlannedOutput> planned) {
+PROCEDURAY_DECL std::string glsl_output_hit(std::span<const PlannedOutput> planned) {
   bool any = false;
   for (const PlannedOutput& p : planned) any = any || p.output == Output::t || p.output == Output::normal || p.output == Output::ids;
   if (!any) return "#define output_hit(n)\n";
@@ -77,3 +97,4 @@ inline std::string glsl_output_hit(std::span<const PlannedOutput> planned) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -13,6 +13,8 @@
 // naming the geometry and instance.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <span>
 #include <vector>
 
@@ -41,7 +43,15 @@ struct Placement {
 };
 
 /// The instance transforms of `placements`, in order: a geometry's instances.
-inline std::vector<InstanceTransform> transforms(std::span<const Placement> placements) {
+PROCEDURAY_DECL std::vector<InstanceTransform> transforms(std::span<const Placement> placements);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::vector<InstanceTransform> transforms(std::span<const Placement> placements) {
   std::vector<InstanceTransform> out;
   out.reserve(placements.size());
   for (const Placement& p : placements) out.push_back(p.transform());
@@ -49,3 +59,4 @@ inline std::vector<InstanceTransform> transforms(std::span<const Placement> plac
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -18,6 +18,8 @@
 //                | g0 r0 | g0 r1 | g1 r0 | g1 r1 | g0 r0 | g0 r1 | ...
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -197,7 +199,13 @@ class Plan {
   std::vector<PlannedOutput> m_outputs;
 };
 
-inline const std::string& Plan::declarations(ShaderStage stage, std::string_view shader) const {
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const std::string& Plan::declarations(ShaderStage stage, std::string_view shader) const {
   for (const PlannedStage& s : m_pipeline.stages) {
     if (s.stage == stage && s.shader == shader) return s.declarations;
   }
@@ -208,7 +216,7 @@ inline const std::string& Plan::declarations(ShaderStage stage, std::string_view
                        "); name a shader the scene's entries use, as the stage they use it in");
 }
 
-inline SbtLayout Plan::layout(const DeviceLimits& limits) const {
+PROCEDURAY_DECL SbtLayout Plan::layout(const DeviceLimits& limits) const {
   const std::string device = limits.device.empty() ? std::string("the device") : limits.device;
   auto refuse = [&](const std::string& what, std::uint64_t value, std::uint64_t limit, const char* name,
                     const std::string& fix) {
@@ -242,7 +250,7 @@ inline SbtLayout Plan::layout(const DeviceLimits& limits) const {
   return layout_sbt(limits.sbt, counts);
 }
 
-inline void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> handles) const {
+PROCEDURAY_DECL void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> handles) const {
   const std::uint32_t handle = layout.properties.handle_size;
   if (buffer.size() < layout.size) {
     throw UsageError("Plan::write: buffer has " + std::to_string(buffer.size()) + " bytes, the table needs " +
@@ -269,3 +277,4 @@ inline void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, st
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

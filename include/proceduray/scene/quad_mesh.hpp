@@ -7,6 +7,8 @@
 // and z, and their right-hand-rule normal is +y (up), which closest-hit shaders can rely on.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <string>
 
 #include <glm/glm.hpp>
@@ -18,7 +20,15 @@ namespace proceduray {
 
 /// Two triangles at height `y` spanning `min`..`max` (x, z), normal +y; throws InvalidGeometryError
 /// unless min < max on both axes.
-inline TriangleMesh quad_xz(glm::vec2 min, glm::vec2 max, float y = 0.0f) {
+PROCEDURAY_DECL TriangleMesh quad_xz(glm::vec2 min, glm::vec2 max, float y = 0.0f);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL TriangleMesh quad_xz(glm::vec2 min, glm::vec2 max, float y) {
   if (!(min.x < max.x && min.y < max.y)) {
     throw InvalidGeometryError("quad_xz: min (" + std::to_string(min.x) + ", " + std::to_string(min.y) +
                                ") is not below max (" + std::to_string(max.x) + ", " + std::to_string(max.y) +
@@ -28,3 +38,4 @@ inline TriangleMesh quad_xz(glm::vec2 min, glm::vec2 max, float y = 0.0f) {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

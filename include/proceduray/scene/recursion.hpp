@@ -15,6 +15,8 @@
 // making the pipeline (vk/scene_pipeline.hpp).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include "proceduray/scene/plan.hpp"
 
 #include <algorithm>
@@ -117,7 +119,15 @@ struct RecursionGraph {
 }  // namespace detail
 
 /// The nesting `traces` (one per stage of plan.pipeline().stages) can reach.
-inline RecursionNeed recursion_need(const Plan& plan, std::span<const StageTraces> traces) {
+PROCEDURAY_DECL RecursionNeed recursion_need(const Plan& plan, std::span<const StageTraces> traces);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL RecursionNeed recursion_need(const Plan& plan, std::span<const StageTraces> traces) {
   const PipelinePlan& pipeline = plan.pipeline();
   detail::RecursionGraph g{plan, traces, {}, std::vector<std::vector<std::uint32_t>>(plan.ray_count()),
                            std::vector<std::uint32_t>(plan.ray_count(), 0), std::vector<std::string>(plan.ray_count()),
@@ -152,3 +162,4 @@ inline RecursionNeed recursion_need(const Plan& plan, std::span<const StageTrace
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

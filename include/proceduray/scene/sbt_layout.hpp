@@ -22,6 +22,8 @@
 // the device's maxShaderGroupStride, proceduray::DeviceLimitError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <array>
 #include <cstdint>
 #include <stdexcept>
@@ -42,10 +44,7 @@ struct SbtProperties {
 /// The four SBT regions, in the order they are laid out.
 enum class SbtRegionKind : std::uint32_t { raygen = 0, miss = 1, hit = 2, callable = 3 };
 
-inline const char* to_string(SbtRegionKind kind) {
-  constexpr const char* names[] = {"raygen", "miss", "hit", "callable"};
-  return names[static_cast<std::uint32_t>(kind)];
-}
+PROCEDURAY_DECL const char* to_string(SbtRegionKind kind);
 
 /// What one region holds: its record count and the largest root arguments (bytes after the handle).
 struct SbtRegionRecords {
@@ -93,7 +92,20 @@ constexpr std::uint64_t align_up(std::uint64_t v, std::uint64_t a) { return (v +
 
 /// Lays out the four regions; throws UsageError for impossible properties and DeviceLimitError
 /// when a record stride exceeds the device's maximum.
-inline SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegionRecords, 4>& records) {
+PROCEDURAY_DECL SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegionRecords, 4>& records);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const char* to_string(SbtRegionKind kind) {
+  constexpr const char* names[] = {"raygen", "miss", "hit", "callable"};
+  return names[static_cast<std::uint32_t>(kind)];
+}
+
+PROCEDURAY_DECL SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegionRecords, 4>& records) {
   using detail::align_up;
   using detail::is_power_of_two;
   if (props.handle_size == 0 || !is_power_of_two(props.handle_alignment) || !is_power_of_two(props.base_alignment) ||
@@ -135,3 +147,4 @@ inline SbtLayout layout_sbt(const SbtProperties& props, const std::array<SbtRegi
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

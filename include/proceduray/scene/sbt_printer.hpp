@@ -9,6 +9,8 @@
 // shared by instances without their own entries), and the TLAS instances' SBT offsets and masks.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
@@ -22,7 +24,19 @@ namespace proceduray {
 
 namespace detail {
 /// Renders rows as a table with columns separated by " | ", numbers right-aligned.
-inline std::string format_table(const std::vector<std::vector<std::string>>& rows) {
+PROCEDURAY_DECL std::string format_table(const std::vector<std::vector<std::string>>& rows);
+}  // namespace detail
+
+/// The table as text: regions, records (at most `max_records` per region), TLAS instances (at most `max_records`).
+PROCEDURAY_DECL std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::size_t max_records = 1000);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::detail {
+
+PROCEDURAY_DECL std::string format_table(const std::vector<std::vector<std::string>>& rows) {
   std::vector<std::size_t> width;
   for (const auto& row : rows) {
     width.resize(std::max(width.size(), row.size()));
@@ -47,10 +61,12 @@ inline std::string format_table(const std::vector<std::vector<std::string>>& row
   }
   return out;
 }
-}  // namespace detail
 
-/// The table as text: regions, records (at most `max_records` per region), TLAS instances (at most `max_records`).
-inline std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::size_t max_records = 1000) {
+}  // namespace proceduray::detail
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::size_t max_records) {
   const PipelinePlan& plan = sbt.pipeline();
   std::string out = std::string("SBT: ") + std::to_string(layout.size) + " bytes; handle " +
                     std::to_string(layout.properties.handle_size) + ", handle alignment " +
@@ -102,3 +118,4 @@ inline std::string format_sbt(const Plan& sbt, const SbtLayout& layout, std::siz
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

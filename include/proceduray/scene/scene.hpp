@@ -28,6 +28,8 @@
 // default for the geometry's kind (set_default_hit), or compile() throws MissingEntryError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -168,7 +170,13 @@ class Scene : public Entities {
   OutputSet m_outputs;
 };
 
-inline EntryId Scene::add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size) {
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL EntryId Scene::add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size) {
   if (e.local_signature != no_index) local_signatures().check_index(e.local_signature, op);
   const auto same = [&](const Entry& other) {
     if (other.region != e.region) return false;
@@ -197,7 +205,7 @@ inline EntryId Scene::add_entry(std::string_view op, const Entry& e, const void*
   return m_entries.push(e, data, size);
 }
 
-inline void Scene::check_hit(std::string_view op, const Entry& e) const {
+PROCEDURAY_DECL void Scene::check_hit(std::string_view op, const Entry& e) const {
   rays().check_index(e.ray, op);
   const HitGroup& group = hit_groups().at(e.hit_group, op);
   if (e.is_default) return;
@@ -219,3 +227,4 @@ inline void Scene::check_hit(std::string_view op, const Entry& e) const {
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

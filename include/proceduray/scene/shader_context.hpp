@@ -12,6 +12,8 @@
 // adds both to ShaderCompileError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/scene/plan.hpp"
 
@@ -24,7 +26,20 @@ namespace proceduray {
 /// The entities whose groups use planned stage `stage` (an index into plan.pipeline().stages),
 /// for messages: `raygen "main.rgen"`, `miss of ray "shadow"`, `hit groups "ball" (ray "radiance")`,
 /// `callable group "tint.rcall"`.
-inline std::string stage_users(const Plan& plan, std::uint32_t stage) {
+PROCEDURAY_DECL std::string stage_users(const Plan& plan, std::uint32_t stage);
+
+/// Why a generated function a failing shader calls does not exist, from glslang's log, or "":
+/// `trace_<ray>` for a ray the scene does not declare, in a stage that cannot trace, or in a
+/// scene whose global signature names no acceleration structure.
+PROCEDURAY_DECL std::string generated_name_hint(const Plan& plan, ShaderStage stage, std::string_view log);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL std::string stage_users(const Plan& plan, std::uint32_t stage) {
   const PipelinePlan& p = plan.pipeline();
   if (stage >= p.stages.size()) return {};
   const ShaderStage kind = p.stages[stage].stage;
@@ -61,10 +76,7 @@ inline std::string stage_users(const Plan& plan, std::uint32_t stage) {
   }
 }
 
-/// Why a generated function a failing shader calls does not exist, from glslang's log, or "":
-/// `trace_<ray>` for a ray the scene does not declare, in a stage that cannot trace, or in a
-/// scene whose global signature names no acceleration structure.
-inline std::string generated_name_hint(const Plan& plan, ShaderStage stage, std::string_view log) {
+PROCEDURAY_DECL std::string generated_name_hint(const Plan& plan, ShaderStage stage, std::string_view log) {
   // glslang writes "'trace_glow' : no matching overloaded function found" (or "undeclared identifier").
   // Read by hand: <regex> costs every includer seconds of compile time.
   std::string name;
@@ -106,3 +118,4 @@ inline std::string generated_name_hint(const Plan& plan, ShaderStage stage, std:
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -4,6 +4,8 @@
 //   proceduray::to_string(s);   // "intersection"
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <cstdint>
 
 namespace proceduray {
@@ -11,9 +13,18 @@ namespace proceduray {
 /// A shader stage of the ray-tracing pipeline.
 enum class ShaderStage : std::uint32_t { raygen, miss, closest_hit, any_hit, intersection, callable };
 
-inline const char* to_string(ShaderStage stage) {
+PROCEDURAY_DECL const char* to_string(ShaderStage stage);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL const char* to_string(ShaderStage stage) {
   constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable"};
   return names[static_cast<std::uint32_t>(stage)];
 }
 
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -22,6 +22,8 @@
 // is shifted, so object-space shaders see the same rays up to the (now small) rounding.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -35,11 +37,7 @@ namespace proceduray {
 
 /// Spacing of floats at magnitude |x| (the unit in the last place): 2^(exponent - 23); the
 /// smallest normal float's spacing below it. What a float coordinate of size |x| is rounded to.
-inline double float_spacing(double x) {
-  const double a = std::abs(x);
-  if (!(a >= 0x1p-126)) return 0x1p-149;
-  return std::ldexp(1.0, std::ilogb(a) - 23);
-}
+PROCEDURAY_DECL double float_spacing(double x);
 
 /// A world origin in double; converts world points and transforms to float coordinates
 /// relative to it (see the header).
@@ -130,3 +128,16 @@ class WorldOrigin {
 };
 
 }  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL double float_spacing(double x) {
+  const double a = std::abs(x);
+  if (!(a >= 0x1p-126)) return 0x1p-149;
+  return std::ldexp(1.0, std::ilogb(a) - 23);
+}
+
+}  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

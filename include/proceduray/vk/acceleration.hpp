@@ -21,6 +21,8 @@
 // Geometry is checked by blas_input.hpp (InvalidGeometryError, UsageError).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/blas_input.hpp>
 #include <proceduray/vk/buffer.hpp>
 
@@ -56,32 +58,9 @@ struct BuildOptions {
   bool fast_trace = true;     ///< prefer trace speed over build speed; default on
 };
 
-inline AccelerationStructure::AccelerationStructure(const Context& ctx, VkAccelerationStructureTypeKHR type,
-                                                    VkDeviceSize size)
-    : m_storage(ctx, size,
-                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                Buffer::device_local) {
-  auto info = make<VkAccelerationStructureCreateInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR);
-  info.buffer = m_storage.get();
-  info.size = size;
-  info.type = type;
-  VkAccelerationStructureKHR raw = VK_NULL_HANDLE;
-  check(ctx.rt().create_acceleration_structure(ctx.device(), &info, nullptr, &raw), "vkCreateAccelerationStructureKHR");
-  m_handle = own(ctx.device(), raw, ctx.rt().destroy_acceleration_structure);
-  auto where = make<VkAccelerationStructureDeviceAddressInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR);
-  where.accelerationStructure = raw;
-  m_address = ctx.rt().get_acceleration_structure_device_address(ctx.device(), &where);
-}
-
 namespace detail {
 
-inline VkBuildAccelerationStructureFlagsKHR build_flags(const BuildOptions& options, bool may_compact) {
-  VkBuildAccelerationStructureFlagsKHR flags = options.fast_trace ? VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR
-                                                                  : VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_BUILD_BIT_KHR;
-  if (options.allow_update) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
-  else if (options.compact && may_compact) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR;
-  return flags;
-}
+PROCEDURAY_DECL VkBuildAccelerationStructureFlagsKHR build_flags(const BuildOptions& options, bool may_compact);
 
 /// A scratch buffer whose device address honours minAccelerationStructureScratchOffsetAlignment (128 on the H100).
 struct Scratch {
@@ -97,13 +76,7 @@ struct Scratch {
 };
 
 /// Makes a recorded build's writes visible to `readers` (later builds that reference it, traces).
-inline void after_build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags readers) {
-  auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-  barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, readers, 0, 1, &barrier, 0, nullptr,
-                       0, nullptr);
-}
+PROCEDURAY_DECL void after_build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags readers);
 
 /// One structure to build (or update) in a batch: its type, flags, geometries, and where it goes.
 struct BuildCommand {
@@ -117,46 +90,16 @@ struct BuildCommand {
 };
 
 /// Vulkan's description of `c`.
-inline VkAccelerationStructureBuildGeometryInfoKHR geometry_info(const BuildCommand& c) {
-  auto info = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-  info.type = c.type;
-  info.flags = c.flags;
-  info.mode = c.mode;
-  info.srcAccelerationStructure = c.mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? c.dst : VK_NULL_HANDLE;
-  info.dstAccelerationStructure = c.dst;
-  info.geometryCount = static_cast<std::uint32_t>(c.geometries.size());
-  info.pGeometries = c.geometries.data();
-  info.scratchData.deviceAddress = c.scratch;
-  return info;
-}
+PROCEDURAY_DECL VkAccelerationStructureBuildGeometryInfoKHR geometry_info(const BuildCommand& c);
 
 /// The structure and scratch sizes a build of `c` needs (its mode, destination and scratch ignored).
-inline VkAccelerationStructureBuildSizesInfoKHR build_sizes(const Context& ctx, const BuildCommand& c) {
-  const auto info = geometry_info(c);
-  auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
-  ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info,
-                                                  c.counts.data(), &sizes);
-  return sizes;
-}
+PROCEDURAY_DECL VkAccelerationStructureBuildSizesInfoKHR build_sizes(const Context& ctx, const BuildCommand& c);
 
 /// The build primitive: records every build or update of `builds` with one
 /// vkCmdBuildAccelerationStructuresKHR, then one barrier that makes them visible to `readers`.
 /// Used by build_blas(es), build_tlas, Tlas and RefittableBlas.
-inline void record_builds(const Context& ctx, VkCommandBuffer cmd, std::span<const BuildCommand> builds,
-                          VkPipelineStageFlags readers) {
-  if (builds.empty()) return;
-  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
-  std::vector<std::vector<VkAccelerationStructureBuildRangeInfoKHR>> ranges(builds.size());
-  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_ptrs;
-  for (std::size_t b = 0; b < builds.size(); ++b) {
-    infos.push_back(geometry_info(builds[b]));
-    for (std::uint32_t count : builds[b].counts) ranges[b].push_back({count, 0, 0, 0});
-    range_ptrs.push_back(ranges[b].data());
-  }
-  ctx.rt().cmd_build_acceleration_structures(cmd, static_cast<std::uint32_t>(infos.size()), infos.data(),
-                                             range_ptrs.data());
-  after_build_barrier(cmd, readers);
-}
+PROCEDURAY_DECL void record_builds(const Context& ctx, VkCommandBuffer cmd, std::span<const BuildCommand> builds,
+                                   VkPipelineStageFlags readers);
 
 /// Scratch for every build of a batch in one buffer, each part aligned; `scratch(i)` is build i's.
 struct BatchScratch {
@@ -176,8 +119,118 @@ struct BatchScratch {
 
 /// Copies each structure into one of its compacted size, in one submit; the caller's submit built
 /// `built` and wrote their compacted sizes into `pool` (queries 0..n-1).
-inline std::vector<AccelerationStructure> compact_all(const Context& ctx, std::span<const AccelerationStructure> built,
-                                                      VkAccelerationStructureTypeKHR type, VkQueryPool pool) {
+PROCEDURAY_DECL std::vector<AccelerationStructure> compact_all(const Context& ctx, std::span<const AccelerationStructure> built,
+                                                               VkAccelerationStructureTypeKHR type, VkQueryPool pool);
+
+/// Creates and builds one structure per command (all of one type and flags) in one submit and
+/// waits. With ALLOW_COMPACTION the compacted sizes are queried in that submit and every
+/// structure is compacted in a second: two submits for any number of structures.
+PROCEDURAY_DECL std::vector<AccelerationStructure> build_structures(const Context& ctx, std::vector<BuildCommand> commands);
+
+}  // namespace detail
+
+/// The geometries of one BLAS of a batch: boxes or triangles (one of the two lists, not both).
+struct BlasGeometries {
+  std::span<const AabbGeometry> boxes;
+  std::span<const TriangleGeometry> triangles;
+};
+
+/// Builds every BLAS of `blases` (geometry i of each gets gl_GeometryIndexEXT == i) and waits:
+/// one submit builds them all and, with BuildOptions::compact, queries their compacted sizes;
+/// a second compacts them all. Throws as build_blas does, naming the BLAS's index.
+PROCEDURAY_DECL std::vector<AccelerationStructure> build_blases(const Context& ctx, std::span<const BlasGeometries> blases,
+                                                                const BuildOptions& options = {});
+
+/// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i) and waits.
+PROCEDURAY_DECL AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
+                                                 const BuildOptions& options = {});
+
+/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i) and waits.
+PROCEDURAY_DECL AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                                 const BuildOptions& options = {});
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL AccelerationStructure::AccelerationStructure(const Context& ctx, VkAccelerationStructureTypeKHR type,
+                                                             VkDeviceSize size)
+    : m_storage(ctx, size,
+                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                Buffer::device_local) {
+  auto info = make<VkAccelerationStructureCreateInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR);
+  info.buffer = m_storage.get();
+  info.size = size;
+  info.type = type;
+  VkAccelerationStructureKHR raw = VK_NULL_HANDLE;
+  check(ctx.rt().create_acceleration_structure(ctx.device(), &info, nullptr, &raw), "vkCreateAccelerationStructureKHR");
+  m_handle = own(ctx.device(), raw, ctx.rt().destroy_acceleration_structure);
+  auto where = make<VkAccelerationStructureDeviceAddressInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR);
+  where.accelerationStructure = raw;
+  m_address = ctx.rt().get_acceleration_structure_device_address(ctx.device(), &where);
+}
+
+}  // namespace proceduray::vk
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL VkBuildAccelerationStructureFlagsKHR build_flags(const BuildOptions& options, bool may_compact) {
+  VkBuildAccelerationStructureFlagsKHR flags = options.fast_trace ? VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR
+                                                                  : VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_BUILD_BIT_KHR;
+  if (options.allow_update) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
+  else if (options.compact && may_compact) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR;
+  return flags;
+}
+
+PROCEDURAY_DECL void after_build_barrier(VkCommandBuffer cmd, VkPipelineStageFlags readers) {
+  auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, readers, 0, 1, &barrier, 0, nullptr,
+                       0, nullptr);
+}
+
+PROCEDURAY_DECL VkAccelerationStructureBuildGeometryInfoKHR geometry_info(const BuildCommand& c) {
+  auto info = make<VkAccelerationStructureBuildGeometryInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+  info.type = c.type;
+  info.flags = c.flags;
+  info.mode = c.mode;
+  info.srcAccelerationStructure = c.mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR ? c.dst : VK_NULL_HANDLE;
+  info.dstAccelerationStructure = c.dst;
+  info.geometryCount = static_cast<std::uint32_t>(c.geometries.size());
+  info.pGeometries = c.geometries.data();
+  info.scratchData.deviceAddress = c.scratch;
+  return info;
+}
+
+PROCEDURAY_DECL VkAccelerationStructureBuildSizesInfoKHR build_sizes(const Context& ctx, const BuildCommand& c) {
+  const auto info = geometry_info(c);
+  auto sizes = make<VkAccelerationStructureBuildSizesInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
+  ctx.rt().get_acceleration_structure_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info,
+                                                  c.counts.data(), &sizes);
+  return sizes;
+}
+
+PROCEDURAY_DECL void record_builds(const Context& ctx, VkCommandBuffer cmd, std::span<const BuildCommand> builds,
+                                   VkPipelineStageFlags readers) {
+  if (builds.empty()) return;
+  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
+  std::vector<std::vector<VkAccelerationStructureBuildRangeInfoKHR>> ranges(builds.size());
+  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_ptrs;
+  for (std::size_t b = 0; b < builds.size(); ++b) {
+    infos.push_back(geometry_info(builds[b]));
+    for (std::uint32_t count : builds[b].counts) ranges[b].push_back({count, 0, 0, 0});
+    range_ptrs.push_back(ranges[b].data());
+  }
+  ctx.rt().cmd_build_acceleration_structures(cmd, static_cast<std::uint32_t>(infos.size()), infos.data(),
+                                             range_ptrs.data());
+  after_build_barrier(cmd, readers);
+}
+
+PROCEDURAY_DECL std::vector<AccelerationStructure> compact_all(const Context& ctx, std::span<const AccelerationStructure> built,
+                                                               VkAccelerationStructureTypeKHR type, VkQueryPool pool) {
   const auto n = static_cast<std::uint32_t>(built.size());
   std::vector<VkDeviceSize> sizes(n);
   check(vkGetQueryPoolResults(ctx.device(), pool, 0, n, n * sizeof(VkDeviceSize), sizes.data(), sizeof(VkDeviceSize),
@@ -200,10 +253,7 @@ inline std::vector<AccelerationStructure> compact_all(const Context& ctx, std::s
   return compacted;
 }
 
-/// Creates and builds one structure per command (all of one type and flags) in one submit and
-/// waits. With ALLOW_COMPACTION the compacted sizes are queried in that submit and every
-/// structure is compacted in a second: two submits for any number of structures.
-inline std::vector<AccelerationStructure> build_structures(const Context& ctx, std::vector<BuildCommand> commands) {
+PROCEDURAY_DECL std::vector<AccelerationStructure> build_structures(const Context& ctx, std::vector<BuildCommand> commands) {
   if (commands.empty()) return {};
   const VkAccelerationStructureTypeKHR type = commands.front().type;
   std::vector<AccelerationStructure> built;
@@ -243,19 +293,12 @@ inline std::vector<AccelerationStructure> build_structures(const Context& ctx, s
   return compact_all(ctx, built, type, pool.get());
 }
 
-}  // namespace detail
+}  // namespace proceduray::vk::detail
 
-/// The geometries of one BLAS of a batch: boxes or triangles (one of the two lists, not both).
-struct BlasGeometries {
-  std::span<const AabbGeometry> boxes;
-  std::span<const TriangleGeometry> triangles;
-};
+namespace proceduray::vk {
 
-/// Builds every BLAS of `blases` (geometry i of each gets gl_GeometryIndexEXT == i) and waits:
-/// one submit builds them all and, with BuildOptions::compact, queries their compacted sizes;
-/// a second compacts them all. Throws as build_blas does, naming the BLAS's index.
-inline std::vector<AccelerationStructure> build_blases(const Context& ctx, std::span<const BlasGeometries> blases,
-                                                       const BuildOptions& options = {}) {
+PROCEDURAY_DECL std::vector<AccelerationStructure> build_blases(const Context& ctx, std::span<const BlasGeometries> blases,
+                                                                const BuildOptions& options) {
   std::vector<detail::BlasInput> inputs;  // checked and uploaded first: nothing is built if one is bad
   for (std::size_t b = 0; b < blases.size(); ++b) {
     const std::string operation = "build_blases: BLAS " + std::to_string(b);
@@ -273,20 +316,19 @@ inline std::vector<AccelerationStructure> build_blases(const Context& ctx, std::
   return detail::build_structures(ctx, std::move(commands));
 }
 
-/// Builds a BLAS of procedural geometries (geometry i gets gl_GeometryIndexEXT == i) and waits.
-inline AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
-                                        const BuildOptions& options = {}) {
+PROCEDURAY_DECL AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
+                                                 const BuildOptions& options) {
   const detail::BlasInput in = detail::aabb_input(ctx, geometries, "build_blas");
   return std::move(detail::build_structures(
       ctx, {{.flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts}})[0]);
 }
 
-/// Builds a BLAS of triangle geometries (geometry i gets gl_GeometryIndexEXT == i) and waits.
-inline AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
-                                        const BuildOptions& options = {}) {
+PROCEDURAY_DECL AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                                 const BuildOptions& options) {
   const detail::BlasInput in = detail::triangle_input(ctx, geometries, "build_blas");
   return std::move(detail::build_structures(
       ctx, {{.flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts}})[0]);
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

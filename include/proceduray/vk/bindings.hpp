@@ -14,6 +14,8 @@
 // (a uniform of another type would read or write past its buffer), else UsageError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/global_signature.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
@@ -166,8 +168,14 @@ class Bindings {
   std::vector<std::byte> m_push;
 };
 
-inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas,
-                          std::uint32_t instance_count)
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, const AccelerationStructure& tlas,
+                                   std::uint32_t instance_count)
     : m_ctx(&ctx), m_instance_count(instance_count) {
   if (desc == nullptr) return;
   m_push_block = desc->push_constants;
@@ -207,7 +215,7 @@ inline Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc* desc, c
   }
 }
 
-inline Bindings::Uniform& Bindings::uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op) {
+PROCEDURAY_DECL Bindings::Uniform& Bindings::uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op) {
   for (Uniform& u : m_uniforms) {
     if (u.set != slot.set || u.binding != slot.binding) continue;
     check_type(u.type, type, slot, op);
@@ -229,8 +237,8 @@ inline Bindings::Uniform& Bindings::uniform(const proceduray::Binding& slot, con
                    "declare it there (a UniformSlot converts to its Binding)");
 }
 
-inline void Bindings::set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes,
-                                        std::string_view op) {
+PROCEDURAY_DECL void Bindings::set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes,
+                                                 std::string_view op) {
   for (Storage& s : m_storage) {
     if (s.set != slot.set || s.binding != slot.binding) continue;
     check_type(s.type, type, slot, op);
@@ -254,8 +262,8 @@ inline void Bindings::set_storage_bytes(const proceduray::Binding& slot, const T
                    "declare it there (a StorageSlot converts to its Binding)");
 }
 
-inline void Bindings::set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,
-                                     std::string_view op) {
+PROCEDURAY_DECL void Bindings::set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,
+                                              std::string_view op) {
   if (m_push_block.type == nullptr) {
     throw UsageError(std::string(op) + ": the global signature declares no typed push constants (" +
                      std::to_string(m_push_size) + " untyped bytes); declare them with "
@@ -269,7 +277,7 @@ inline void Bindings::set_push_bytes(const PushConstantBlock& slot, const TypeOp
   m_push.assign(bytes.begin(), bytes.end());
 }
 
-inline void Bindings::check_ready(std::string_view op) const {
+PROCEDURAY_DECL void Bindings::check_ready(std::string_view op) const {
   for (const Uniform& u : m_uniforms) {
     if (!u.buffer) {
       throw UsageError(std::string(op) + ": the uniform at set " + std::to_string(u.set) + " binding " +
@@ -293,3 +301,4 @@ inline void Bindings::check_ready(std::string_view op) const {
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

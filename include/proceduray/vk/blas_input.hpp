@@ -11,6 +11,8 @@
 // (scene/geometry.hpp): a bad box or vertex throws InvalidGeometryError, an empty list UsageError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/vk/buffer.hpp>
@@ -51,11 +53,39 @@ struct BlasInput {
 };
 
 /// The scene's box for Vulkan's (same six floats, same order).
-inline Aabb to_aabb(const VkAabbPositionsKHR& b) { return {{b.minX, b.minY, b.minZ}, {b.maxX, b.maxY, b.maxZ}}; }
+PROCEDURAY_DECL Aabb to_aabb(const VkAabbPositionsKHR& b);
 
 /// Throws UsageError for an empty list, InvalidGeometryError for a geometry without boxes or a box
 /// that is not one (the scene's rule, proceduray::validate(Aabb)).
-inline void check_aabbs(std::span<const AabbGeometry> geometries, std::string_view operation) {
+PROCEDURAY_DECL void check_aabbs(std::span<const AabbGeometry> geometries, std::string_view operation);
+
+/// Throws UsageError for an empty list, InvalidGeometryError for a bad triangle list or a non-finite vertex.
+PROCEDURAY_DECL void check_triangles(std::span<const TriangleGeometry> geometries, std::string_view operation);
+
+/// Writes boxes into `input` (laid out by aabb_input for the same counts).
+PROCEDURAY_DECL void write_aabbs(BlasInput& input, std::span<const AabbGeometry> geometries);
+
+/// Writes vertices into `input` (laid out by triangle_input for the same counts).
+PROCEDURAY_DECL void write_vertices(BlasInput& input, std::span<const TriangleGeometry> geometries);
+
+/// Checks, uploads and describes procedural geometries.
+PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation);
+
+/// Checks, uploads and describes triangle geometries.
+PROCEDURAY_DECL BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                         std::string_view operation);
+
+}  // namespace detail
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL Aabb to_aabb(const VkAabbPositionsKHR& b) { return {{b.minX, b.minY, b.minZ}, {b.maxX, b.maxY, b.maxZ}}; }
+
+PROCEDURAY_DECL void check_aabbs(std::span<const AabbGeometry> geometries, std::string_view operation) {
   if (geometries.empty()) {
     throw UsageError(std::string(operation) + ": no geometries given; pass at least one AabbGeometry");
   }
@@ -74,8 +104,7 @@ inline void check_aabbs(std::span<const AabbGeometry> geometries, std::string_vi
   }
 }
 
-/// Throws UsageError for an empty list, InvalidGeometryError for a bad triangle list or a non-finite vertex.
-inline void check_triangles(std::span<const TriangleGeometry> geometries, std::string_view operation) {
+PROCEDURAY_DECL void check_triangles(std::span<const TriangleGeometry> geometries, std::string_view operation) {
   if (geometries.empty()) {
     throw UsageError(std::string(operation) + ": no geometries given; pass at least one TriangleGeometry");
   }
@@ -100,8 +129,7 @@ inline void check_triangles(std::span<const TriangleGeometry> geometries, std::s
   }
 }
 
-/// Writes boxes into `input` (laid out by aabb_input for the same counts).
-inline void write_aabbs(BlasInput& input, std::span<const AabbGeometry> geometries) {
+PROCEDURAY_DECL void write_aabbs(BlasInput& input, std::span<const AabbGeometry> geometries) {
   VkDeviceSize offset = 0;
   for (const AabbGeometry& g : geometries) {
     input.data.write(g.boxes, offset);
@@ -109,8 +137,7 @@ inline void write_aabbs(BlasInput& input, std::span<const AabbGeometry> geometri
   }
 }
 
-/// Writes vertices into `input` (laid out by triangle_input for the same counts).
-inline void write_vertices(BlasInput& input, std::span<const TriangleGeometry> geometries) {
+PROCEDURAY_DECL void write_vertices(BlasInput& input, std::span<const TriangleGeometry> geometries) {
   VkDeviceSize offset = 0;
   for (const TriangleGeometry& t : geometries) {
     input.data.write(t.vertices, offset);
@@ -118,8 +145,7 @@ inline void write_vertices(BlasInput& input, std::span<const TriangleGeometry> g
   }
 }
 
-/// Checks, uploads and describes procedural geometries.
-inline BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation) {
+PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation) {
   check_aabbs(geometries, operation);
   std::size_t total = 0;
   for (const AabbGeometry& g : geometries) total += g.boxes.size();
@@ -144,9 +170,8 @@ inline BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> ge
   return in;
 }
 
-/// Checks, uploads and describes triangle geometries.
-inline BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeometry> geometries,
-                                std::string_view operation) {
+PROCEDURAY_DECL BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeometry> geometries,
+                                         std::string_view operation) {
   check_triangles(geometries, operation);
   std::size_t vertex_count = 0, index_count = 0;
   for (const TriangleGeometry& t : geometries) {
@@ -182,6 +207,5 @@ inline BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeom
   return in;
 }
 
-}  // namespace detail
-
-}  // namespace proceduray::vk
+}  // namespace proceduray::vk::detail
+#endif  // PROCEDURAY_BODIES

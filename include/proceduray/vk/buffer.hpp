@@ -16,6 +16,8 @@
 // of memory speed, so a 16 MiB frame took 55-75 ms to copy out of it on an H200 host.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/context.hpp>
 
 #include <cstring>
@@ -63,7 +65,13 @@ class Buffer {
   VkDevice m_device = VK_NULL_HANDLE;
 };
 
-inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory)
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, Memory memory)
     : m_size(size) {
   if (size == 0) {
     throw UsageError("Buffer: size 0 requested; Vulkan buffers need at least one byte");
@@ -106,7 +114,7 @@ inline Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
   }
 }
 
-inline VkDeviceAddress Buffer::address() const {
+PROCEDURAY_DECL VkDeviceAddress Buffer::address() const {
   if (m_address == 0) {
     throw UsageError("Buffer::address: the buffer was created without VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT; "
                      "add it to the usage flags");
@@ -114,7 +122,7 @@ inline VkDeviceAddress Buffer::address() const {
   return m_address;
 }
 
-inline void Buffer::invalidate() const {
+PROCEDURAY_DECL void Buffer::invalidate() const {
   if (m_coherent || m_mapped == nullptr) return;
   auto range = make<VkMappedMemoryRange>(VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE);
   range.memory = m_memory.get();
@@ -122,7 +130,7 @@ inline void Buffer::invalidate() const {
   check(vkInvalidateMappedMemoryRanges(m_device, 1, &range), "vkInvalidateMappedMemoryRanges");
 }
 
-inline void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset) {
+PROCEDURAY_DECL void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset) {
   if (m_mapped == nullptr) {
     throw UsageError("Buffer::write: the buffer is device-local; create it with Buffer::host_visible to write it "
                      "from the host");
@@ -141,3 +149,4 @@ inline void Buffer::write(std::span<const std::byte> bytes, VkDeviceSize offset)
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

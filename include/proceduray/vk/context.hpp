@@ -13,6 +13,8 @@
 // A Context is neither copied nor moved: every object made from it keeps a pointer to it.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/scene/device_limits.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/vk/device_selection.hpp>
@@ -157,7 +159,17 @@ class Context {
 namespace detail {
 
 /// The ray-tracing entry points of `device`; throws NoRayTracingDevice naming one it lacks.
-inline DeviceFunctions load_device_functions(VkDevice device, const std::string& name) {
+PROCEDURAY_DECL DeviceFunctions load_device_functions(VkDevice device, const std::string& name);
+
+}  // namespace detail
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL DeviceFunctions load_device_functions(VkDevice device, const std::string& name) {
   DeviceFunctions rt;
   auto load = [&](auto& fn, const char* entry) {
     fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(device, entry));
@@ -178,9 +190,11 @@ inline DeviceFunctions load_device_functions(VkDevice device, const std::string&
   return rt;
 }
 
-}  // namespace detail
+}  // namespace proceduray::vk::detail
 
-inline Context::Context(const ContextOptions& options)
+namespace proceduray::vk {
+
+PROCEDURAY_DECL Context::Context(const ContextOptions& options)
     : m_preference(detail::preference_from_environment(options.device)),  // a bad PROCEDURAY_DEVICE throws first
       m_log(options.print_validation),
       m_vulkan(options.application_name, options.validation ? &m_log : nullptr) {
@@ -197,9 +211,9 @@ inline Context::Context(const ContextOptions& options)
   }
 }
 
-inline Context::~Context() { release(); }
+PROCEDURAY_DECL Context::~Context() { release(); }
 
-inline void Context::release() noexcept {
+PROCEDURAY_DECL void Context::release() noexcept {
   if (m_device != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(m_device);
     if (m_submit_fence != VK_NULL_HANDLE) vkDestroyFence(m_device, m_submit_fence, nullptr);
@@ -209,7 +223,7 @@ inline void Context::release() noexcept {
   }
 }
 
-inline void Context::read_properties() {
+PROCEDURAY_DECL void Context::read_properties() {
   vkGetPhysicalDeviceProperties(m_physical, &m_properties);
   m_name = m_properties.deviceName;
   auto as = make<VkPhysicalDeviceAccelerationStructurePropertiesKHR>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR);
@@ -224,7 +238,7 @@ inline void Context::read_properties() {
   vkGetPhysicalDeviceMemoryProperties(m_physical, &m_memory);
 }
 
-inline void Context::create_device() {
+PROCEDURAY_DECL void Context::create_device() {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -281,7 +295,7 @@ inline void Context::create_device() {
   m_rt = detail::load_device_functions(m_device, m_name);
 }
 
-inline std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {
+PROCEDURAY_DECL std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {
   for (std::uint32_t i = 0; i < m_memory.memoryTypeCount; ++i) {
     if ((type_bits & (1u << i)) != 0 && (m_memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
   }
@@ -290,7 +304,7 @@ inline std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPrope
                         std::to_string(flags) + " for type bits " + std::to_string(type_bits));
 }
 
-inline void Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
+PROCEDURAY_DECL void Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
   if (m_submitting) {  // a submit from inside another's recording: its own command buffer and fence
     auto alloc = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
     alloc.commandPool = m_pool;
@@ -320,8 +334,8 @@ inline void Context::submit(const std::function<void(VkCommandBuffer)>& record) 
   submit_and_wait(m_submit_cmd, m_submit_fence, record);
 }
 
-inline void Context::submit_and_wait(VkCommandBuffer cmd, VkFence fence,
-                                     const std::function<void(VkCommandBuffer)>& record) const {
+PROCEDURAY_DECL void Context::submit_and_wait(VkCommandBuffer cmd, VkFence fence,
+                                              const std::function<void(VkCommandBuffer)>& record) const {
   auto begin = make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
@@ -337,3 +351,4 @@ inline void Context::submit_and_wait(VkCommandBuffer cmd, VkFence fence,
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

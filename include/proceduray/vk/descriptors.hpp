@@ -7,6 +7,8 @@
 //   set.layout();   // for the pipeline layout
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/acceleration.hpp>
 
 #include <algorithm>
@@ -55,7 +57,13 @@ class DescriptorSet {
   VkDescriptorSet m_set = VK_NULL_HANDLE;
 };
 
-inline DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<Binding>& bindings) : m_ctx(&ctx) {
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<Binding>& bindings) : m_ctx(&ctx) {
   std::vector<VkDescriptorSetLayoutBinding> described;
   std::map<VkDescriptorType, std::uint32_t> counts;
   for (const Binding& b : bindings) {
@@ -90,7 +98,7 @@ inline DescriptorSet::DescriptorSet(const Context& ctx, const std::vector<Bindin
   check(vkAllocateDescriptorSets(ctx.device(), &alloc, &m_set), "vkAllocateDescriptorSets");
 }
 
-inline VkDescriptorType DescriptorSet::type_of(std::uint32_t binding, const char* what) const {
+PROCEDURAY_DECL VkDescriptorType DescriptorSet::type_of(std::uint32_t binding, const char* what) const {
   auto it = m_types.find(binding);
   if (it == m_types.end()) {
     throw UsageError(std::string("DescriptorSet::write: binding ") + std::to_string(binding) +
@@ -99,9 +107,9 @@ inline VkDescriptorType DescriptorSet::type_of(std::uint32_t binding, const char
   return it->second;
 }
 
-inline VkWriteDescriptorSet DescriptorSet::write_info(std::uint32_t binding, const char* what,
-                                                     std::initializer_list<VkDescriptorType> accepted,
-                                                     const void* next) const {
+PROCEDURAY_DECL VkWriteDescriptorSet DescriptorSet::write_info(std::uint32_t binding, const char* what,
+                                                              std::initializer_list<VkDescriptorType> accepted,
+                                                              const void* next) const {
   const VkDescriptorType type = type_of(binding, what);
   if (std::find(accepted.begin(), accepted.end(), type) == accepted.end()) {
     throw UsageError("DescriptorSet::write: binding " + std::to_string(binding) + " cannot hold " + what +
@@ -115,7 +123,7 @@ inline VkWriteDescriptorSet DescriptorSet::write_info(std::uint32_t binding, con
   return write;
 }
 
-inline void DescriptorSet::write(std::uint32_t binding, const AccelerationStructure& tlas) {
+PROCEDURAY_DECL void DescriptorSet::write(std::uint32_t binding, const AccelerationStructure& tlas) {
   VkAccelerationStructureKHR handle = tlas.get();
   auto as = make<VkWriteDescriptorSetAccelerationStructureKHR>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
   as.accelerationStructureCount = 1;
@@ -124,14 +132,14 @@ inline void DescriptorSet::write(std::uint32_t binding, const AccelerationStruct
   vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
 }
 
-inline void DescriptorSet::write(std::uint32_t binding, VkImageView storage_image) {
+PROCEDURAY_DECL void DescriptorSet::write(std::uint32_t binding, VkImageView storage_image) {
   const VkDescriptorImageInfo image{VK_NULL_HANDLE, storage_image, VK_IMAGE_LAYOUT_GENERAL};
   auto write = write_info(binding, "a storage image", {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   write.pImageInfo = &image;
   vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
 }
 
-inline void DescriptorSet::write(std::uint32_t binding, const Buffer& buffer) {
+PROCEDURAY_DECL void DescriptorSet::write(std::uint32_t binding, const Buffer& buffer) {
   const VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
   auto write = write_info(binding, "a buffer", {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   write.pBufferInfo = &info;
@@ -139,3 +147,4 @@ inline void DescriptorSet::write(std::uint32_t binding, const Buffer& buffer) {
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -10,6 +10,8 @@
 // select_device throws NoRayTracingDevice saying what each device lacks and how to get one that can.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/structs.hpp>
@@ -47,7 +49,29 @@ inline constexpr const char* required_device_extensions[] = {
 };
 
 /// The preference with PROCEDURAY_DEVICE applied to `automatic`; throws UsageError for an unknown value.
-inline DevicePreference preference_from_environment(DevicePreference preference) {
+PROCEDURAY_DECL DevicePreference preference_from_environment(DevicePreference preference);
+
+PROCEDURAY_DECL const char* to_string(DevicePreference p);
+
+/// Lower is preferred: discrete GPU, integrated, virtual, other, then CPU.
+PROCEDURAY_DECL int rank(VkPhysicalDeviceType type);
+
+}  // namespace detail
+
+/// What a physical device lacks for ray tracing, as readable phrases; empty when it has everything.
+PROCEDURAY_DECL std::vector<std::string> missing_for_ray_tracing(VkPhysicalDevice device);
+
+/// The best device of `instance` that can ray trace and fits `preference` (automatic honours
+/// PROCEDURAY_DEVICE); throws NoRayTracingDevice listing every device and what it lacks.
+PROCEDURAY_DECL VkPhysicalDevice select_device(VkInstance instance, DevicePreference preference);
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL DevicePreference preference_from_environment(DevicePreference preference) {
   if (preference != DevicePreference::automatic) return preference;
   const char* env = std::getenv("PROCEDURAY_DEVICE");
   if (env == nullptr || *env == '\0' || std::strcmp(env, "auto") == 0) return preference;
@@ -57,12 +81,11 @@ inline DevicePreference preference_from_environment(DevicePreference preference)
                    "' is not a device choice; use cpu, gpu or auto");
 }
 
-inline const char* to_string(DevicePreference p) {
+PROCEDURAY_DECL const char* to_string(DevicePreference p) {
   return p == DevicePreference::cpu ? "cpu" : p == DevicePreference::gpu ? "gpu" : "auto";
 }
 
-/// Lower is preferred: discrete GPU, integrated, virtual, other, then CPU.
-inline int rank(VkPhysicalDeviceType type) {
+PROCEDURAY_DECL int rank(VkPhysicalDeviceType type) {
   switch (type) {
     case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
     case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
@@ -72,10 +95,11 @@ inline int rank(VkPhysicalDeviceType type) {
   }
 }
 
-}  // namespace detail
+}  // namespace proceduray::vk::detail
 
-/// What a physical device lacks for ray tracing, as readable phrases; empty when it has everything.
-inline std::vector<std::string> missing_for_ray_tracing(VkPhysicalDevice device) {
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::vector<std::string> missing_for_ray_tracing(VkPhysicalDevice device) {
   std::vector<std::string> missing;
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(device, &props);
@@ -102,9 +126,7 @@ inline std::vector<std::string> missing_for_ray_tracing(VkPhysicalDevice device)
   return missing;
 }
 
-/// The best device of `instance` that can ray trace and fits `preference` (automatic honours
-/// PROCEDURAY_DEVICE); throws NoRayTracingDevice listing every device and what it lacks.
-inline VkPhysicalDevice select_device(VkInstance instance, DevicePreference preference) {
+PROCEDURAY_DECL VkPhysicalDevice select_device(VkInstance instance, DevicePreference preference) {
   preference = detail::preference_from_environment(preference);
   std::uint32_t count = 0;
   check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
@@ -144,3 +166,4 @@ inline VkPhysicalDevice select_device(VkInstance instance, DevicePreference pref
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -7,6 +7,8 @@
 // `catch (const proceduray::Error&)` catches it with every other library exception.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 
 #include <vulkan/vulkan.h>
@@ -18,7 +20,36 @@
 namespace proceduray::vk {
 
 /// Spelled name of a VkResult ("VK_ERROR_DEVICE_LOST"), or its number.
-inline std::string result_name(VkResult r) {
+PROCEDURAY_DECL std::string result_name(VkResult r);
+
+/// The error category of VkResult codes, so VulkanError is a std::system_error.
+PROCEDURAY_DECL const std::error_category& vulkan_category() noexcept;
+
+/// A failed Vulkan call: carries the VkResult and the call's name.
+class VulkanError : public std::system_error, public proceduray::Error {
+ public:
+  VulkanError(VkResult result, std::string call, const std::string& what)
+      : std::system_error(static_cast<int>(result), vulkan_category(), what),
+        m_result(result), m_call(std::move(call)) {}
+  VkResult result() const noexcept { return m_result; }
+  const std::string& call() const noexcept { return m_call; }
+  const char* what() const noexcept override { return std::system_error::what(); }
+
+ private:
+  VkResult m_result;
+  std::string m_call;
+};
+
+/// Throws VulkanError unless `result` is VK_SUCCESS; `call` names the failed function.
+PROCEDURAY_DECL void check(VkResult result, const char* call, std::string_view context = {});
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::string result_name(VkResult r) {
   switch (r) {
 #define PROCEDURAY_RESULT_CASE(x) \
   case x:                         \
@@ -55,8 +86,7 @@ inline std::string result_name(VkResult r) {
   }
 }
 
-/// The error category of VkResult codes, so VulkanError is a std::system_error.
-inline const std::error_category& vulkan_category() noexcept {
+PROCEDURAY_DECL const std::error_category& vulkan_category() noexcept {
   struct Category final : std::error_category {
     const char* name() const noexcept override { return "vulkan"; }
     std::string message(int code) const override { return result_name(static_cast<VkResult>(code)); }
@@ -65,23 +95,7 @@ inline const std::error_category& vulkan_category() noexcept {
   return category;
 }
 
-/// A failed Vulkan call: carries the VkResult and the call's name.
-class VulkanError : public std::system_error, public proceduray::Error {
- public:
-  VulkanError(VkResult result, std::string call, const std::string& what)
-      : std::system_error(static_cast<int>(result), vulkan_category(), what),
-        m_result(result), m_call(std::move(call)) {}
-  VkResult result() const noexcept { return m_result; }
-  const std::string& call() const noexcept { return m_call; }
-  const char* what() const noexcept override { return std::system_error::what(); }
-
- private:
-  VkResult m_result;
-  std::string m_call;
-};
-
-/// Throws VulkanError unless `result` is VK_SUCCESS; `call` names the failed function.
-inline void check(VkResult result, const char* call, std::string_view context = {}) {
+PROCEDURAY_DECL void check(VkResult result, const char* call, std::string_view context) {
   if (result == VK_SUCCESS) return;  // a string_view: the frame loop's checks build no string
   std::string what = std::string(call) + " failed";
   if (!context.empty()) what += " (" + std::string(context) + ")";
@@ -95,3 +109,4 @@ inline void check(VkResult result, const char* call, std::string_view context = 
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

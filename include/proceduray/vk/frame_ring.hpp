@@ -13,6 +13,8 @@
 // slot was reused, or that was never submitted, throws UsageError naming both frames.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/buffer.hpp>
 
 #include <cstdint>
@@ -85,7 +87,13 @@ class FrameRing {
 
 // ---------------------------------------------------------------------------------------------
 
-inline FrameRing::FrameRing(const Context& ctx, std::uint32_t frames_in_flight, std::string_view op) : m_ctx(&ctx) {
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL FrameRing::FrameRing(const Context& ctx, std::uint32_t frames_in_flight, std::string_view op) : m_ctx(&ctx) {
   if (frames_in_flight == 0 || frames_in_flight > max_frames_in_flight) {
     throw UsageError(std::string(op) + ": " + std::to_string(frames_in_flight) +
                      " frames in flight asked; give 1.." + std::to_string(max_frames_in_flight) +
@@ -124,7 +132,7 @@ inline FrameRing::FrameRing(const Context& ctx, std::uint32_t frames_in_flight, 
   }
 }
 
-inline FrameSlot& FrameRing::begin() {
+PROCEDURAY_DECL FrameSlot& FrameRing::begin() {
   FrameSlot& slot = m_slots[m_submitted % m_slots.size()];
   wait(slot);
   check(vkResetCommandBuffer(slot.cmd, 0), "vkResetCommandBuffer", "frame ring");
@@ -135,13 +143,13 @@ inline FrameSlot& FrameRing::begin() {
   return slot;
 }
 
-inline void FrameRing::stamp(const FrameSlot& slot, std::uint32_t which) const {
+PROCEDURAY_DECL void FrameRing::stamp(const FrameSlot& slot, std::uint32_t which) const {
   if (!m_queries) return;
   vkCmdWriteTimestamp(slot.cmd, which == 0 ? VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT : VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT,
                       m_queries.get(), 2 * slot.index + which);
 }
 
-inline std::uint64_t FrameRing::submit(FrameSlot& slot) {
+PROCEDURAY_DECL std::uint64_t FrameRing::submit(FrameSlot& slot) {
   check(vkEndCommandBuffer(slot.cmd), "vkEndCommandBuffer", "frame ring");
   const VkFence fence = slot.fence.get();
   check(vkResetFences(m_ctx->device(), 1, &fence), "vkResetFences", "frame ring");
@@ -154,7 +162,7 @@ inline std::uint64_t FrameRing::submit(FrameSlot& slot) {
   return slot.frame;
 }
 
-inline void FrameRing::wait(FrameSlot& slot) {
+PROCEDURAY_DECL void FrameRing::wait(FrameSlot& slot) {
   if (!slot.pending) return;
   const VkFence fence = slot.fence.get();
   check(vkWaitForFences(m_ctx->device(), 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences", "frame ring");
@@ -162,11 +170,11 @@ inline void FrameRing::wait(FrameSlot& slot) {
   if (slot.readback) slot.readback->invalidate();
 }
 
-inline void FrameRing::wait_all() {
+PROCEDURAY_DECL void FrameRing::wait_all() {
   for (FrameSlot& slot : m_slots) wait(slot);
 }
 
-inline void FrameRing::wait_all_noexcept() noexcept {
+PROCEDURAY_DECL void FrameRing::wait_all_noexcept() noexcept {
   for (FrameSlot& slot : m_slots) {
     if (!slot.pending) continue;
     const VkFence fence = slot.fence.get();
@@ -175,14 +183,14 @@ inline void FrameRing::wait_all_noexcept() noexcept {
   }
 }
 
-inline bool FrameRing::busy() const noexcept {
+PROCEDURAY_DECL bool FrameRing::busy() const noexcept {
   for (const FrameSlot& slot : m_slots) {
     if (slot.pending) return true;
   }
   return false;
 }
 
-inline FrameSlot& FrameRing::slot_of(std::uint64_t frame, std::string_view op) {
+PROCEDURAY_DECL FrameSlot& FrameRing::slot_of(std::uint64_t frame, std::string_view op) {
   if (frame == 0 || frame > m_submitted) {
     throw UsageError(std::string(op) + ": frame " + std::to_string(frame) + " was never submitted (" +
                      std::to_string(m_submitted) + " so far); pass a ticket that submit() returned");
@@ -197,7 +205,7 @@ inline FrameSlot& FrameRing::slot_of(std::uint64_t frame, std::string_view op) {
   return slot;
 }
 
-inline double FrameRing::trace_ms(const FrameSlot& slot) const {
+PROCEDURAY_DECL double FrameRing::trace_ms(const FrameSlot& slot) const {
   if (!m_queries) return 0;
   std::uint64_t stamps[2] = {};
   check(vkGetQueryPoolResults(m_ctx->device(), m_queries.get(), 2 * slot.index, 2, sizeof stamps, stamps,
@@ -206,7 +214,7 @@ inline double FrameRing::trace_ms(const FrameSlot& slot) const {
   return static_cast<double>(stamps[1] - stamps[0]) * m_ctx->timestamp_period_ns() * 1e-6;
 }
 
-inline Buffer& FrameRing::readback(FrameSlot& slot, VkDeviceSize bytes) {
+PROCEDURAY_DECL Buffer& FrameRing::readback(FrameSlot& slot, VkDeviceSize bytes) {
   if (!slot.readback || slot.readback->size() < bytes) {
     slot.readback = std::make_unique<Buffer>(*m_ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, Buffer::host_cached);
   }
@@ -214,3 +222,4 @@ inline Buffer& FrameRing::readback(FrameSlot& slot, VkDeviceSize bytes) {
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

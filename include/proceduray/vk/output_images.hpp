@@ -13,6 +13,8 @@
 // Renderer does all of this when the scene asks for outputs; a scene that asks for none gets no image.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/scene/outputs.hpp>
 #include <proceduray/vk/bindings.hpp>
 #include <proceduray/vk/frame.hpp>
@@ -28,24 +30,10 @@
 namespace proceduray::vk {
 
 /// What an output's image is cleared to before a trace: the value of "nothing written".
-inline VkClearColorValue output_clear_value(Output o) {
-  VkClearColorValue v{};
-  if (o == Output::t) v.float32[0] = -1.0f;
-  if (o == Output::ids) v.uint32[0] = v.uint32[1] = v.uint32[2] = v.uint32[3] = 0xffffffffu;
-  return v;
-}
+PROCEDURAY_DECL VkClearColorValue output_clear_value(Output o);
 
 /// The Vulkan format of an output's image (format_of(o) in GLSL terms).
-inline VkFormat output_format(Output o) {
-  switch (o) {
-    case Output::t: return VK_FORMAT_R32_SFLOAT;
-    case Output::normal: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case Output::ids: return VK_FORMAT_R32G32B32A32_UINT;
-    case Output::steps:
-    case Output::flags: return VK_FORMAT_R32_UINT;
-  }
-  return VK_FORMAT_UNDEFINED;
-}
+PROCEDURAY_DECL VkFormat output_format(Output o);
 
 /// One storage image per planned output.
 class OutputImages {
@@ -136,3 +124,28 @@ class OutputImages {
 };
 
 }  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL VkClearColorValue output_clear_value(Output o) {
+  VkClearColorValue v{};
+  if (o == Output::t) v.float32[0] = -1.0f;
+  if (o == Output::ids) v.uint32[0] = v.uint32[1] = v.uint32[2] = v.uint32[3] = 0xffffffffu;
+  return v;
+}
+
+PROCEDURAY_DECL VkFormat output_format(Output o) {
+  switch (o) {
+    case Output::t: return VK_FORMAT_R32_SFLOAT;
+    case Output::normal: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case Output::ids: return VK_FORMAT_R32G32B32A32_UINT;
+    case Output::steps:
+    case Output::flags: return VK_FORMAT_R32_UINT;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+}  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -17,6 +17,8 @@
 // the device's maxRayRecursionDepth with a DeviceLimitError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/descriptors.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
 
@@ -71,29 +73,12 @@ struct PipelineDesc {
 /// Throws UsageError when `spirv`, a `stage` shader named `shader`, traces rays but `depth` leaves
 /// it no room: raygen traces at depth 1, any other stage's traces are nested (depth >= 2).
 /// `operation` is the user's call, `declared` whether the user set the depth, `fix` how to set it.
-inline void check_recursion_depth(std::string_view operation, ShaderStage stage, std::string_view shader,
-                                  std::span<const std::uint32_t> spirv, std::uint32_t depth, bool declared,
-                                  std::string_view fix) {
-  if (stage == ShaderStage::raygen || depth >= 2 || !traces_rays(spirv)) return;
-  throw UsageError(std::string(operation) + ": " + to_string(stage) + " shader '" + std::string(shader) +
-                   "' calls traceRayEXT, so its rays nest inside the raygen's, but the pipeline's max recursion "
-                   "depth is " + std::to_string(depth) + (declared ? "" : " (the default: none was declared)") +
-                   ", which would crash at the nested trace; " + std::string(fix) +
-                   " with n >= 2 (1 + how many rays deep the nesting goes)");
-}
+PROCEDURAY_DECL void check_recursion_depth(std::string_view operation, ShaderStage stage, std::string_view shader,
+                                           std::span<const std::uint32_t> spirv, std::uint32_t depth, bool declared,
+                                           std::string_view fix);
 
 namespace detail {
-inline VkShaderStageFlagBits vk_stage(ShaderStage s) {
-  switch (s) {
-    case ShaderStage::raygen: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
-    case ShaderStage::miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
-    case ShaderStage::closest_hit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
-    case ShaderStage::any_hit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
-    case ShaderStage::intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
-    case ShaderStage::callable: return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
-  }
-  return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
-}
+PROCEDURAY_DECL VkShaderStageFlagBits vk_stage(ShaderStage s);
 }  // namespace detail
 
 /// A ray-tracing pipeline, its layout and its shader group handles.
@@ -125,7 +110,50 @@ namespace detail {
 
 /// Throws for a depth past the device's, a group naming a shader that does not exist, a
 /// procedural group without intersection, or a non-raygen shader that traces at depth 1.
-inline void check_pipeline_desc(const Context& ctx, const PipelineDesc& desc) {
+PROCEDURAY_DECL void check_pipeline_desc(const Context& ctx, const PipelineDesc& desc);
+
+/// The pipeline over `layout`: one module per shader, the groups, a dynamic stack size.
+PROCEDURAY_DECL VkPipeline create_pipeline(const Context& ctx, const PipelineDesc& desc, VkPipelineLayout layout);
+
+/// The spec's default stack size formula, from the sizes the driver reports per group and stage.
+PROCEDURAY_DECL std::uint32_t default_stack_size(const Context& ctx, const PipelineDesc& desc, VkPipeline pipeline);
+
+}  // namespace detail
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL void check_recursion_depth(std::string_view operation, ShaderStage stage, std::string_view shader,
+                                           std::span<const std::uint32_t> spirv, std::uint32_t depth, bool declared,
+                                           std::string_view fix) {
+  if (stage == ShaderStage::raygen || depth >= 2 || !traces_rays(spirv)) return;
+  throw UsageError(std::string(operation) + ": " + to_string(stage) + " shader '" + std::string(shader) +
+                   "' calls traceRayEXT, so its rays nest inside the raygen's, but the pipeline's max recursion "
+                   "depth is " + std::to_string(depth) + (declared ? "" : " (the default: none was declared)") +
+                   ", which would crash at the nested trace; " + std::string(fix) +
+                   " with n >= 2 (1 + how many rays deep the nesting goes)");
+}
+
+}  // namespace proceduray::vk
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL VkShaderStageFlagBits vk_stage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::raygen: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    case ShaderStage::miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
+    case ShaderStage::closest_hit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+    case ShaderStage::any_hit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+    case ShaderStage::intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    case ShaderStage::callable: return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+  }
+  return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+}
+
+PROCEDURAY_DECL void check_pipeline_desc(const Context& ctx, const PipelineDesc& desc) {
   const std::uint32_t device_depth = ctx.ray_tracing_properties().maxRayRecursionDepth;
   if (desc.max_recursion_depth > device_depth) {
     throw DeviceLimitError("Pipeline: max_recursion_depth " + std::to_string(desc.max_recursion_depth) +
@@ -160,8 +188,7 @@ inline void check_pipeline_desc(const Context& ctx, const PipelineDesc& desc) {
 
 }
 
-/// The pipeline over `layout`: one module per shader, the groups, a dynamic stack size.
-inline VkPipeline create_pipeline(const Context& ctx, const PipelineDesc& desc, VkPipelineLayout layout) {
+PROCEDURAY_DECL VkPipeline create_pipeline(const Context& ctx, const PipelineDesc& desc, VkPipelineLayout layout) {
   std::vector<DeviceHandle<VkShaderModule>> modules;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   for (const auto& shader : desc.shaders) {
@@ -205,8 +232,7 @@ inline VkPipeline create_pipeline(const Context& ctx, const PipelineDesc& desc, 
   return pipeline;
 }
 
-/// The spec's default stack size formula, from the sizes the driver reports per group and stage.
-inline std::uint32_t default_stack_size(const Context& ctx, const PipelineDesc& desc, VkPipeline pipeline) {
+PROCEDURAY_DECL std::uint32_t default_stack_size(const Context& ctx, const PipelineDesc& desc, VkPipeline pipeline) {
   VkDeviceSize raygen = 0, miss = 0, closest = 0, intersect_any = 0, callable = 0;
   auto size = [&](std::uint32_t g, VkShaderGroupShaderKHR which) {
     return ctx.rt().get_ray_tracing_shader_group_stack_size(ctx.device(), pipeline, g, which);
@@ -234,9 +260,11 @@ inline std::uint32_t default_stack_size(const Context& ctx, const PipelineDesc& 
 
 }
 
-}  // namespace detail
+}  // namespace proceduray::vk::detail
 
-inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
+namespace proceduray::vk {
+
+PROCEDURAY_DECL Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
     : m_group_count(static_cast<std::uint32_t>(desc.groups.size())),
       m_handle_size(ctx.ray_tracing_properties().shaderGroupHandleSize),
       m_push_constant_size(desc.push_constant_size) {
@@ -262,7 +290,7 @@ inline Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
   }
 }
 
-inline std::span<const std::byte> Pipeline::group_handle(std::uint32_t group) const {
+PROCEDURAY_DECL std::span<const std::byte> Pipeline::group_handle(std::uint32_t group) const {
   if (group >= m_group_count) {
     throw UsageError("Pipeline::group_handle: group " + std::to_string(group) + " does not exist; the pipeline has " +
                      std::to_string(m_group_count) + " groups");
@@ -271,3 +299,4 @@ inline std::span<const std::byte> Pipeline::group_handle(std::uint32_t group) co
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

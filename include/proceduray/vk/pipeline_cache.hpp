@@ -10,29 +10,21 @@
 // replaced on save(): never handed to the driver, so it can never crash it.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/context.hpp>
 
 #include <array>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace proceduray::vk {
 
 /// The pipeline cache's file name for this device and driver: pipeline-<vendor>-<device>-<cache UUID>.bin.
-inline std::string default_pipeline_cache_name(const Context& ctx) {
-  const VkPhysicalDeviceProperties& p = ctx.properties();
-  char name[96];
-  int n = std::snprintf(name, sizeof name, "pipeline-%04x-%04x-", p.vendorID, p.deviceID);
-  for (std::uint8_t b : p.pipelineCacheUUID) n += std::snprintf(name + n, sizeof name - static_cast<std::size_t>(n), "%02x", b);
-  return std::string(name) + ".bin";
-}
+PROCEDURAY_DECL std::string default_pipeline_cache_name(const Context& ctx);
 
 /// A pipeline cache loaded from and saved to one file.
 class PipelineCache {
@@ -68,7 +60,26 @@ class PipelineCache {
   std::string m_warning;
 };
 
-inline PipelineCache::PipelineCache(const Context& ctx, std::filesystem::path path)
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+#include <fstream>
+#include <iterator>
+#include <unistd.h>
+#include <cstdio>
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::string default_pipeline_cache_name(const Context& ctx) {
+  const VkPhysicalDeviceProperties& p = ctx.properties();
+  char name[96];
+  int n = std::snprintf(name, sizeof name, "pipeline-%04x-%04x-", p.vendorID, p.deviceID);
+  for (std::uint8_t b : p.pipelineCacheUUID) n += std::snprintf(name + n, sizeof name - static_cast<std::size_t>(n), "%02x", b);
+  return std::string(name) + ".bin";
+}
+
+PROCEDURAY_DECL PipelineCache::PipelineCache(const Context& ctx, std::filesystem::path path)
     : m_ctx(&ctx), m_path(std::move(path)) {
   std::vector<std::uint8_t> data;
   if (!m_path.empty() && std::filesystem::exists(m_path)) {
@@ -87,7 +98,7 @@ inline PipelineCache::PipelineCache(const Context& ctx, std::filesystem::path pa
   m_loaded = !data.empty();
 }
 
-inline std::vector<std::uint8_t> PipelineCache::read_valid(std::string& why) const {
+PROCEDURAY_DECL std::vector<std::uint8_t> PipelineCache::read_valid(std::string& why) const {
   std::ifstream in(m_path, std::ios::binary);
   const std::vector<std::uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   constexpr std::size_t head = magic.size() + 16;
@@ -119,7 +130,7 @@ inline std::vector<std::uint8_t> PipelineCache::read_valid(std::string& why) con
   return data;
 }
 
-inline void PipelineCache::save() const {
+PROCEDURAY_DECL void PipelineCache::save() const {
   if (m_path.empty()) return;
   std::size_t size = 0;
   check(vkGetPipelineCacheData(m_ctx->device(), m_cache.get(), &size, nullptr), "vkGetPipelineCacheData");
@@ -152,3 +163,4 @@ inline void PipelineCache::save() const {
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -29,6 +29,8 @@
 // other setters write memory that submitted frames read: they wait for the frames in flight.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/bindings.hpp>
@@ -43,8 +45,6 @@
 
 #include <chrono>
 #include <cstring>
-#include <filesystem>
-#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -145,7 +145,18 @@ class Renderer {
   /// Waits for the frame (submitted with Readback::all) and views one per-pixel output: float for
   /// t and normal, std::uint32_t for ids, steps and flags (as in Outputs).
   template <class T>
-  std::span<const T> output(FrameTicket frame, Output which);
+  std::span<const T> output(FrameTicket frame, Output which) {
+    static_assert(std::is_same_v<T, float> || std::is_same_v<T, std::uint32_t>,
+                  "Renderer::output: outputs are float (t, normal) or std::uint32_t (ids, steps, flags)");
+    const bool is_float = which == Output::t || which == Output::normal;
+    if (is_float != std::is_same_v<T, float>) {
+      throw UsageError(std::string("Renderer::output: output '") + std::string(proceduray::name(which)) + "' holds " +
+                       (is_float ? "float" : "std::uint32_t") + " values; ask for output<" +
+                       (is_float ? "float" : "std::uint32_t") + ">");
+    }
+    const std::span<const std::uint8_t> bytes = output_bytes(frame, which, "Renderer::output");
+    return {reinterpret_cast<const T*>(bytes.data()), bytes.size() / sizeof(T)};
+  }
   /// Frames in flight, as RendererOptions::frames_in_flight asked.
   std::uint32_t frames_in_flight() const noexcept { return m_ring->size(); }
   /// Records one width x height frame into a command buffer the caller submits: the structure
@@ -212,9 +223,9 @@ class Renderer {
   std::unique_ptr<FrameRing> m_ring;     // last: destroyed first, it waits for the frames in flight
 };
 
-// ---------------------------------------------------------------------------------------------
+#if PROCEDURAY_BODIES
 
-inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
+PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
     : m_ctx(&ctx), m_plan(compile(scene)), m_layout(m_plan.layout(ctx.limits())) {
   m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
   m_slot_frames.resize(m_ring->size());
@@ -241,7 +252,7 @@ inline Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, Re
   m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
 }
 
-inline void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
+PROCEDURAY_DECL void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
   check_trace_size(*m_ctx, width, height);
   m_bindings->check_ready(op);
   if (m_image && m_image->width() == width && m_image->height() == height) return;
@@ -252,8 +263,8 @@ inline void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::st
   m_bindings->bind_image(m_image->view());
 }
 
-inline FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, Stamp before,
-                                        Stamp after) {
+PROCEDURAY_DECL FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, Stamp before,
+                                                 Stamp after) {
   // The frame before may still run: its trace and copies before this frame's builds, clears and writes.
   auto barrier = make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
   barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -272,16 +283,16 @@ inline FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t width
   return work;
 }
 
-inline FrameWork Renderer::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) {
+PROCEDURAY_DECL FrameWork Renderer::record(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) {
   prepare(width, height, "Renderer::record");
   return record_frame(cmd, width, height, {}, {});
 }
 
-inline FrameTicket Renderer::submit(std::uint32_t width, std::uint32_t height, Readback readback) {
+PROCEDURAY_DECL FrameTicket Renderer::submit(std::uint32_t width, std::uint32_t height, Readback readback) {
   return submit_as(width, height, readback, "Renderer::submit");
 }
 
-inline FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32_t height, Readback readback, std::string_view op) {
+PROCEDURAY_DECL FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32_t height, Readback readback, std::string_view op) {
   prepare(width, height, op);
   FrameSlot& slot = m_ring->begin();
   const auto host_start = Clock::now();
@@ -305,7 +316,7 @@ inline FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32_t height
   return {m_ring->submit(slot)};
 }
 
-inline std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(FrameTicket frame, std::string_view op) {
+PROCEDURAY_DECL std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(FrameTicket frame, std::string_view op) {
   FrameSlot& slot = m_ring->slot_of(frame.number, op);
   m_ring->wait(slot);
   SlotFrame& info = m_slot_frames[slot.index];
@@ -316,9 +327,9 @@ inline std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(FrameTicke
   return {&slot, &info};
 }
 
-inline Frame Renderer::wait(FrameTicket frame) { return finished(frame, "Renderer::wait").second->frame; }
+PROCEDURAY_DECL Frame Renderer::wait(FrameTicket frame) { return finished(frame, "Renderer::wait").second->frame; }
 
-inline std::span<const std::uint8_t> Renderer::rgba(FrameTicket frame) {
+PROCEDURAY_DECL std::span<const std::uint8_t> Renderer::rgba(FrameTicket frame) {
   auto [slot, info] = finished(frame, "Renderer::rgba");
   if (info->readback == Readback::none) {
     throw UsageError("Renderer::rgba: frame " + std::to_string(frame.number) +
@@ -328,7 +339,7 @@ inline std::span<const std::uint8_t> Renderer::rgba(FrameTicket frame) {
   return {static_cast<const std::uint8_t*>(slot->readback->data()), bytes};
 }
 
-inline void Renderer::read_rgba(FrameTicket frame, std::span<std::uint8_t> out) {
+PROCEDURAY_DECL void Renderer::read_rgba(FrameTicket frame, std::span<std::uint8_t> out) {
   const std::span<const std::uint8_t> pixels = rgba(frame);
   if (out.size() < pixels.size()) {
     const Frame& f = m_slot_frames[m_ring->slot_of(frame.number, "Renderer::read_rgba").index].frame;
@@ -339,7 +350,7 @@ inline void Renderer::read_rgba(FrameTicket frame, std::span<std::uint8_t> out) 
   std::memcpy(out.data(), pixels.data(), pixels.size());
 }
 
-inline std::span<const std::uint8_t> Renderer::output_bytes(FrameTicket frame, Output which, std::string_view op) {
+PROCEDURAY_DECL std::span<const std::uint8_t> Renderer::output_bytes(FrameTicket frame, Output which, std::string_view op) {
   auto [slot, info] = finished(frame, op);
   if (info->readback != Readback::all) {
     throw UsageError(std::string(op) + ": frame " + std::to_string(frame.number) +
@@ -357,21 +368,7 @@ inline std::span<const std::uint8_t> Renderer::output_bytes(FrameTicket frame, O
                    "'; add it with Scene::set_outputs");
 }
 
-template <class T>
-std::span<const T> Renderer::output(FrameTicket frame, Output which) {
-  static_assert(std::is_same_v<T, float> || std::is_same_v<T, std::uint32_t>,
-                "Renderer::output: outputs are float (t, normal) or std::uint32_t (ids, steps, flags)");
-  const bool is_float = which == Output::t || which == Output::normal;
-  if (is_float != std::is_same_v<T, float>) {
-    throw UsageError(std::string("Renderer::output: output '") + std::string(proceduray::name(which)) + "' holds " +
-                     (is_float ? "float" : "std::uint32_t") + " values; ask for output<" +
-                     (is_float ? "float" : "std::uint32_t") + ">");
-  }
-  const std::span<const std::uint8_t> bytes = output_bytes(frame, which, "Renderer::output");
-  return {reinterpret_cast<const T*>(bytes.data()), bytes.size() / sizeof(T)};
-}
-
-inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool readback) {
+PROCEDURAY_DECL Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool readback) {
   const FrameTicket ticket = submit_as(width, height, readback ? Readback::all : Readback::none, "Renderer::render");
   Frame frame = wait(ticket);
   if (readback) {
@@ -385,15 +382,16 @@ inline Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool re
   return frame;
 }
 
-inline const StorageImage& Renderer::image() const {
+PROCEDURAY_DECL const StorageImage& Renderer::image() const {
   if (!m_image) throw UsageError("Renderer::image: no frame was traced yet; call render() or record() first");
   return *m_image;
 }
 
-inline double Renderer::warm_up() {
+PROCEDURAY_DECL double Renderer::warm_up() {
   const auto start = Clock::now();
   render(8, 8, false);
   return ms_since(start);
 }
+#endif  // PROCEDURAY_BODIES
 
 }  // namespace proceduray::vk

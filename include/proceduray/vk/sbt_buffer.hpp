@@ -10,6 +10,8 @@
 //   sbt.regions();   // the four VkStridedDeviceAddressRegionKHR for vkCmdTraceRaysKHR
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/scene/plan.hpp>
 #include <proceduray/vk/pipeline.hpp>
@@ -62,7 +64,13 @@ class SbtBuffer {
   std::array<VkStridedDeviceAddressRegionKHR, 4> m_regions{};
 };
 
-inline void SbtBuffer::place(const Context& ctx) {
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL void SbtBuffer::place(const Context& ctx) {
   if (m_layout.properties.handle_size != ctx.sbt_properties().handle_size ||
       m_layout.properties.base_alignment != ctx.sbt_properties().base_alignment) {
     throw UsageError("SbtBuffer: the table was laid out for handle size " +
@@ -84,8 +92,8 @@ inline void SbtBuffer::place(const Context& ctx) {
   }
 }
 
-inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan,
-                            const SbtLayout& layout)
+PROCEDURAY_DECL SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan,
+                                     const SbtLayout& layout)
     : m_layout(layout) {
   place(ctx);
   if (pipeline.group_count() != plan.pipeline().groups.size()) {
@@ -101,8 +109,8 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
   plan.write(m_layout, {static_cast<std::byte*>(m_buffer.data()) + m_start, m_layout.size}, handles);
 }
 
-inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
-                            std::span<const RecordWrite> records)
+PROCEDURAY_DECL SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
+                                     std::span<const RecordWrite> records)
     : m_layout(layout) {
   place(ctx);
   std::array<std::vector<bool>, 4> written;
@@ -139,3 +147,4 @@ inline SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const 
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -14,6 +14,8 @@
 // the call the user made, for messages (the Renderer passes "Renderer::set_transform", say).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/plan.hpp>
 #include <proceduray/scene/scene.hpp>
@@ -109,12 +111,13 @@ class SceneAcceleration {
   bool m_tlas_rebuild = false;  // a BLAS was rebuilt, or a mask changed: the TLAS is built again
 };
 
-// The scene's boxes go to the BLAS build as they are: an Aabb is six floats, min then max, like
-// VkAabbPositionsKHR.
+// An Aabb goes to the BLAS build as it is: six floats, min then max, like VkAabbPositionsKHR.
 static_assert(sizeof(Aabb) == sizeof(VkAabbPositionsKHR) && offsetof(Aabb, max) == offsetof(VkAabbPositionsKHR, maxX));
 
-inline SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
-                                            const BuildOptions& options)
+#if PROCEDURAY_BODIES
+
+PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
+                                                     const BuildOptions& options)
     : m_ctx(&ctx), m_plan(&plan) {
   const auto blases = plan.blases();
   m_blases.resize(blases.size());
@@ -133,7 +136,7 @@ inline SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray
   m_tlas = Tlas(*m_ctx, m_instances, {.allow_update = any_dynamic});
 }
 
-inline void SceneAcceleration::build_static_blases(const proceduray::Scene& scene, const BuildOptions& options) {
+PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::Scene& scene, const BuildOptions& options) {
   const auto blases = m_plan->blases();
   std::vector<std::uint32_t> which;
   std::vector<std::vector<AabbGeometry>> boxes;         // straight from the scene: Static data is not copied
@@ -161,7 +164,7 @@ inline void SceneAcceleration::build_static_blases(const proceduray::Scene& scen
   for (std::size_t i = 0; i < which.size(); ++i) m_blases[which[i]].fixed = std::move(built[i]);
 }
 
-inline void SceneAcceleration::build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b) {
+PROCEDURAY_DECL void SceneAcceleration::build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b) {
   const PlannedBlas& blas = m_plan->blases()[b];
   BlasSlot& slot = m_blases[b];
   for (std::uint32_t g : blas.geometries) {
@@ -180,7 +183,7 @@ inline void SceneAcceleration::build_refittable_blas(const proceduray::Scene& sc
   }
 }
 
-inline std::vector<AabbGeometry> SceneAcceleration::aabb_geometries(std::uint32_t b) const {
+PROCEDURAY_DECL std::vector<AabbGeometry> SceneAcceleration::aabb_geometries(std::uint32_t b) const {
   const PlannedBlas& blas = m_plan->blases()[b];
   std::vector<AabbGeometry> out;
   for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
@@ -189,7 +192,7 @@ inline std::vector<AabbGeometry> SceneAcceleration::aabb_geometries(std::uint32_
   return out;
 }
 
-inline std::vector<TriangleGeometry> SceneAcceleration::triangle_geometries(std::uint32_t b) const {
+PROCEDURAY_DECL std::vector<TriangleGeometry> SceneAcceleration::triangle_geometries(std::uint32_t b) const {
   const PlannedBlas& blas = m_plan->blases()[b];
   std::vector<TriangleGeometry> out;
   for (std::size_t g = 0; g < blas.geometries.size(); ++g) {
@@ -199,7 +202,7 @@ inline std::vector<TriangleGeometry> SceneAcceleration::triangle_geometries(std:
   return out;
 }
 
-inline void SceneAcceleration::check_movable(GeometryId geometry, std::string_view operation) const {
+PROCEDURAY_DECL void SceneAcceleration::check_movable(GeometryId geometry, std::string_view operation) const {
   const PlannedGeometry& g = m_plan->geometry(geometry, operation);
   if (m_plan->blases()[g.blas].update == UpdatePolicy::Static) {
     throw UsageError(std::string(operation) + ": geometry \"" + g.name +
@@ -208,15 +211,15 @@ inline void SceneAcceleration::check_movable(GeometryId geometry, std::string_vi
   }
 }
 
-inline std::uint32_t SceneAcceleration::movable_instance(GeometryId geometry, std::uint32_t instance,
-                                                         std::string_view op) const {
+PROCEDURAY_DECL std::uint32_t SceneAcceleration::movable_instance(GeometryId geometry, std::uint32_t instance,
+                                                                  std::string_view op) const {
   const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
   check_movable(geometry, op);
   return k;
 }
 
-inline void SceneAcceleration::check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
-                                            std::string_view op) const {
+PROCEDURAY_DECL void SceneAcceleration::check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
+                                                     std::string_view op) const {
   // An instance transform is 3x4: a projective last row would be dropped without a word.
   if (m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f) return;
   throw UsageError(std::string(op) + ": geometry \"" + m_plan->geometry(geometry, op).name + "\" instance " +
@@ -225,16 +228,16 @@ inline void SceneAcceleration::check_affine(GeometryId geometry, std::uint32_t i
                    "), not (0, 0, 0, 1); an instance transform is affine: pass a rotation, scale and translation");
 }
 
-inline void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t,
-                                               std::string_view op) const {
+PROCEDURAY_DECL void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t,
+                                                        std::string_view op) const {
   detail::check_matrix(t, [&] {
     return std::string(op) + ": geometry \"" + m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
            " transform";
   });
 }
 
-inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
-                                              std::string_view op) {
+PROCEDURAY_DECL void SceneAcceleration::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
+                                                       std::string_view op) {
   check_movable(geometry, op);
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
   const PlannedBlas& blas = m_plan->blases()[g.blas];
@@ -243,9 +246,8 @@ inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<con
                                std::to_string(blas.instance_count) + " instances, " +
                                std::to_string(object_to_world.size()) + " transforms given; give one per instance");
   }
-  // A BLAS's instances are consecutive in the TLAS. All are checked before any moves, so a bad
-  // matrix leaves every instance where it was.
-  // The one conversion of a user's matrix: into Vulkan's rows, kept as they are up to the TLAS.
+  // A BLAS's instances are consecutive in the TLAS. All are checked (and converted, once, into Vulkan's
+  // rows) before any moves, so a bad matrix leaves every instance where it was.
   std::vector<InstanceTransform> rows(blas.instance_count);
   for (std::uint32_t i = 0; i < blas.instance_count; ++i) {
     check_affine(geometry, i, object_to_world[i], op);
@@ -256,8 +258,8 @@ inline void SceneAcceleration::set_transforms(GeometryId geometry, std::span<con
   m_transforms_dirty = true;
 }
 
-inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
-                                        std::string_view op) {
+PROCEDURAY_DECL void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
+                                                 std::string_view op) {
   const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
   if (mask > 0xFF) {  // an int would otherwise lose its high bits and could become 0: the instance vanishes
     throw UsageError(std::string(op) + ": mask 0x" + proceduray::detail::hex(mask) + " of geometry \"" +
@@ -269,8 +271,8 @@ inline void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t insta
   m_tlas_rebuild = true;
 }
 
-inline void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
-                                             std::string_view op) {
+PROCEDURAY_DECL void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
+                                                      std::string_view op) {
   const std::uint32_t k = movable_instance(geometry, instance, op);
   check_affine(geometry, instance, object_to_world, op);
   const InstanceTransform rows = instance_transform(object_to_world);  // the one conversion
@@ -279,8 +281,8 @@ inline void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t 
   m_transforms_dirty = true;
 }
 
-inline const PlannedBlas& SceneAcceleration::dynamic_geometry(GeometryId geometry, GeometryKind kind,
-                                                                std::string_view operation) const {
+PROCEDURAY_DECL const PlannedBlas& SceneAcceleration::dynamic_geometry(GeometryId geometry, GeometryKind kind,
+                                                                         std::string_view operation) const {
   const PlannedGeometry& g = m_plan->geometry(geometry, operation);
   const PlannedBlas& blas = m_plan->blases()[g.blas];
   const std::string& name = g.name;
@@ -297,7 +299,7 @@ inline const PlannedBlas& SceneAcceleration::dynamic_geometry(GeometryId geometr
   return blas;
 }
 
-inline void SceneAcceleration::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op) {
+PROCEDURAY_DECL void SceneAcceleration::set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op) {
   dynamic_geometry(geometry, GeometryKind::procedural, op);
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
   const std::string where = std::string(op) + ": geometry \"" + g.name + "\"";
@@ -314,8 +316,8 @@ inline void SceneAcceleration::set_aabbs(GeometryId geometry, std::span<const Aa
   slot.changed = true;
 }
 
-inline void SceneAcceleration::set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices,
-                                            std::string_view op) {
+PROCEDURAY_DECL void SceneAcceleration::set_vertices(GeometryId geometry, std::span<const glm::vec3> vertices,
+                                                     std::string_view op) {
   dynamic_geometry(geometry, GeometryKind::triangles, op);
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
   TriangleMesh mesh = m_blases[g.blas].meshes[g.geometry_index];
@@ -329,7 +331,7 @@ inline void SceneAcceleration::set_vertices(GeometryId geometry, std::span<const
   set_mesh(geometry, std::move(mesh), op);
 }
 
-inline void SceneAcceleration::set_mesh(GeometryId geometry, TriangleMesh mesh, std::string_view op) {
+PROCEDURAY_DECL void SceneAcceleration::set_mesh(GeometryId geometry, TriangleMesh mesh, std::string_view op) {
   dynamic_geometry(geometry, GeometryKind::triangles, op);
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
   GeometryDesc check = GeometryDesc::triangles(mesh, {});
@@ -339,7 +341,7 @@ inline void SceneAcceleration::set_mesh(GeometryId geometry, TriangleMesh mesh, 
   slot.changed = true;
 }
 
-inline void SceneAcceleration::record_refit(VkCommandBuffer cmd, std::uint32_t b) {
+PROCEDURAY_DECL void SceneAcceleration::record_refit(VkCommandBuffer cmd, std::uint32_t b) {
   RefittableBlas& blas = *m_blases[b].dynamic;
   if (m_plan->blases()[b].kind == GeometryKind::procedural) {
     blas.record_refit(*m_ctx, cmd, std::span<const AabbGeometry>(aabb_geometries(b)));
@@ -348,7 +350,7 @@ inline void SceneAcceleration::record_refit(VkCommandBuffer cmd, std::uint32_t b
   }
 }
 
-inline std::vector<std::uint32_t> SceneAcceleration::prepare_blases(FrameWork& work) {
+PROCEDURAY_DECL std::vector<std::uint32_t> SceneAcceleration::prepare_blases(FrameWork& work) {
   std::vector<std::uint32_t> refits;
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
     BlasSlot& slot = m_blases[b];
@@ -378,7 +380,7 @@ inline std::vector<std::uint32_t> SceneAcceleration::prepare_blases(FrameWork& w
   return refits;
 }
 
-inline FrameWork SceneAcceleration::record(VkCommandBuffer cmd) {
+PROCEDURAY_DECL FrameWork SceneAcceleration::record(VkCommandBuffer cmd) {
   FrameWork work;
   const std::vector<std::uint32_t> refits = prepare_blases(work);
   for (std::uint32_t b : refits) record_refit(cmd, b);  // each ends with a barrier for the TLAS build
@@ -393,5 +395,6 @@ inline FrameWork SceneAcceleration::record(VkCommandBuffer cmd) {
   m_tlas_rebuild = false;
   return work;
 }
+#endif  // PROCEDURAY_BODIES
 
 }  // namespace proceduray::vk

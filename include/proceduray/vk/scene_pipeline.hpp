@@ -11,6 +11,8 @@
 //   std::uint32_t depth = proceduray::vk::pipeline_depth(ctx, plan, traces);   // traces: stage_traces() per stage
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/plan.hpp>
 #include <proceduray/scene/glsl_names.hpp>
@@ -66,7 +68,39 @@ struct PipelineTimings {
 
 /// The plan's groups as pipeline groups, indices into the plan's stages (in the plan's order,
 /// which is the order of the handles the plan's records use).
-inline std::vector<ShaderGroup> shader_groups(const PipelinePlan& planned) {
+PROCEDURAY_DECL std::vector<ShaderGroup> shader_groups(const PipelinePlan& planned);
+
+/// The path of shader `name` in the first of `dirs` that has it; throws UsageError listing the folders.
+PROCEDURAY_DECL std::string find_shader(std::span<const std::filesystem::path> dirs, const std::string& name);
+
+/// What planned stage `s` traces, from trace_info(its SPIR-V): a payload named like a ray's
+/// id (glsl_for's outgoing payloads) is that ray; `payload` (the incoming one) is each ray whose
+/// records run the stage; any other name, or none, may be any ray.
+PROCEDURAY_DECL StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, const TraceInfo& info);
+
+/// The recursion depth to build the plan's pipeline with, from what its stages trace
+/// (scene/recursion.hpp): the derived depth when none was declared; the declared one when it
+/// covers the derived depth, or when a cycle leaves the bound to the shaders. Throws UsageError
+/// for a declared depth below the derived one or a cycle with no declared depth, and
+/// DeviceLimitError for a depth past the device's maxRayRecursionDepth, naming the chain of rays.
+PROCEDURAY_DECL std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& plan, std::span<const StageTraces> traces);
+
+/// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push
+/// constants, at the recursion depth pipeline_depth() gives. Throws UsageError for a missing shader
+/// or a depth the shaders exceed, DeviceLimitError past the device's depth, ShaderCompileError
+/// naming the stage, the scene entities that use it, and the file (includes resolved) and line.
+PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
+                                                              std::span<const VkDescriptorSetLayout> set_layouts,
+                                                              std::uint32_t push_size, RendererOptions options,
+                                                              PipelineTimings* timings = nullptr);
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::vector<ShaderGroup> shader_groups(const PipelinePlan& planned) {
   static constexpr VkRayTracingShaderGroupTypeKHR types[] = {VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR,
                                                              VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR,
                                                              VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR};
@@ -77,8 +111,7 @@ inline std::vector<ShaderGroup> shader_groups(const PipelinePlan& planned) {
   return groups;
 }
 
-/// The path of shader `name` in the first of `dirs` that has it; throws UsageError listing the folders.
-inline std::string find_shader(std::span<const std::filesystem::path> dirs, const std::string& name) {
+PROCEDURAY_DECL std::string find_shader(std::span<const std::filesystem::path> dirs, const std::string& name) {
   std::string tried;
   for (const auto& dir : dirs) {
     std::error_code ec;
@@ -89,10 +122,7 @@ inline std::string find_shader(std::span<const std::filesystem::path> dirs, cons
                    "); add its folder to RendererOptions::shader_dirs or fix the name in the scene");
 }
 
-/// What planned stage `s` traces, from trace_info(its SPIR-V): a payload named like a ray's
-/// id (glsl_for's outgoing payloads) is that ray; `payload` (the incoming one) is each ray whose
-/// records run the stage; any other name, or none, may be any ray.
-inline StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, const TraceInfo& info) {
+PROCEDURAY_DECL StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, const TraceInfo& info) {
   StageTraces out{.any_ray = info.unnamed, .calls = info.calls};
   const PipelinePlan& planned = plan.pipeline();
   auto add = [&](std::uint32_t r) {
@@ -120,12 +150,7 @@ inline StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, c
   return out;
 }
 
-/// The recursion depth to build the plan's pipeline with, from what its stages trace
-/// (scene/recursion.hpp): the derived depth when none was declared; the declared one when it
-/// covers the derived depth, or when a cycle leaves the bound to the shaders. Throws UsageError
-/// for a declared depth below the derived one or a cycle with no declared depth, and
-/// DeviceLimitError for a depth past the device's maxRayRecursionDepth, naming the chain of rays.
-inline std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& plan, std::span<const StageTraces> traces) {
+PROCEDURAY_DECL std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& plan, std::span<const StageTraces> traces) {
   const PipelinePlan& planned = plan.pipeline();
   const RecursionNeed need = recursion_need(plan, traces);
   const std::uint32_t device = ctx.ray_tracing_properties().maxRayRecursionDepth;
@@ -152,14 +177,10 @@ inline std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& 
   return depth;
 }
 
-/// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push
-/// constants, at the recursion depth pipeline_depth() gives. Throws UsageError for a missing shader
-/// or a depth the shaders exceed, DeviceLimitError past the device's depth, ShaderCompileError
-/// naming the stage, the scene entities that use it, and the file (includes resolved) and line.
-inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
-                                                     std::span<const VkDescriptorSetLayout> set_layouts,
-                                                     std::uint32_t push_size, RendererOptions options,
-                                                     PipelineTimings* timings = nullptr) {
+PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
+                                                              std::span<const VkDescriptorSetLayout> set_layouts,
+                                                              std::uint32_t push_size, RendererOptions options,
+                                                              PipelineTimings* timings) {
   using Clock = std::chrono::steady_clock;
   auto ms_since = [](Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -218,3 +239,4 @@ inline std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const p
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

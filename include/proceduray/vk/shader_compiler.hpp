@@ -14,21 +14,14 @@
 //   proceduray::vk::trace_info(spirv);    // the payload variables it traces with, whether it calls callables
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/shader_stage.hpp>
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-#include <glslang/SPIRV/GlslangToSpv.h>
-
-#include <algorithm>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <mutex>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -142,14 +135,7 @@ constexpr std::uint32_t op_name = 5, op_trace_ray = 4445, op_execute_callable = 
 /// Whether a SPIR-V module calls traceRayEXT (an OpTraceRayKHR instruction, opcode 4445): a
 /// non-raygen stage that does needs a pipeline recursion depth >= 2. executeCallableEXT
 /// (OpExecuteCallableKHR, 4446) is not a trace. A truncated or malformed module gives false.
-inline bool traces_rays(std::span<const std::uint32_t> spirv) noexcept {
-  bool found = false;
-  detail::each_spirv_instruction(spirv, [&](std::uint32_t op, std::span<const std::uint32_t>) {
-    found = op == detail::op_trace_ray;
-    return !found;
-  });
-  return found;
-}
+PROCEDURAY_DECL bool traces_rays(std::span<const std::uint32_t> spirv) noexcept;
 
 /// What a SPIR-V module traces and calls, before the payloads are matched to rays.
 struct TraceInfo {
@@ -162,78 +148,45 @@ struct TraceInfo {
 /// Location on ray payloads (GLSL's location only picks the variable), so the name is what ties a
 /// trace to a ray: glsl_for declares ray r's outgoing payload under the ray's id and the incoming
 /// one as `payload` (scene_pipeline.hpp maps them).
-inline TraceInfo trace_info(std::span<const std::uint32_t> spirv) {
-  std::vector<std::pair<std::uint32_t, std::string>> names;  // (id, OpName)
-  std::vector<std::uint32_t> payloads;                       // ids passed to OpTraceRayKHR
-  TraceInfo out;
-  const auto each = [&](std::uint32_t op, std::span<const std::uint32_t> words) {
-    if (op == detail::op_name && words.size() >= 3) {
-      std::string name;  // a nul-terminated UTF-8 literal, four bytes a word
-      for (std::uint32_t w : words.subspan(2)) {
-        for (int b = 0; b < 4 && ((w >> (8 * b)) & 0xFFu) != 0; ++b) {
-          name += static_cast<char>((w >> (8 * b)) & 0xFFu);
-        }
-      }
-      names.emplace_back(words[1], std::move(name));
-    }
-    if (op == detail::op_trace_ray && words.size() >= 12) payloads.push_back(words[11]);
-    if (op == detail::op_execute_callable) out.calls = true;
-    return true;
-  };
-  out.unnamed = !detail::each_spirv_instruction(spirv, each);
-  for (std::uint32_t id : payloads) {
-    const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == id; });
-    if (it == names.end() || it->second.empty()) {
-      out.unnamed = true;
-    } else if (std::find(out.payloads.begin(), out.payloads.end(), it->second) == out.payloads.end()) {
-      out.payloads.push_back(it->second);
-    }
-  }
-  return out;
-}
+PROCEDURAY_DECL TraceInfo trace_info(std::span<const std::uint32_t> spirv);
 
 /// The library's GLSL folder: $PROCEDURAY_SHADER_DIR, else the one known at build time.
-inline std::filesystem::path library_shader_dir() {
-  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') return env;
-#ifdef PROCEDURAY_SHADER_DIR
-  return PROCEDURAY_SHADER_DIR;
-#else
-  return {};
-#endif
-}
+PROCEDURAY_DECL std::filesystem::path library_shader_dir();
 
 /// Reads a text file; throws EnvironmentError naming the path when it cannot.
-inline std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw EnvironmentError("read_text_file: cannot open '" + path.string() + "'; check the path" +
-                           (path.is_relative() ? " (relative to " + std::filesystem::current_path().string() + ")"
-                                               : std::string()));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+PROCEDURAY_DECL std::string read_text_file(const std::filesystem::path& path);
+
+/// Compiles one shader to SPIR-V (entry point "main"); throws ShaderCompileError on failure.
+/// `included`, when given, receives every file an #include read.
+PROCEDURAY_DECL std::vector<std::uint32_t> compile_glsl(const ShaderSource& source, std::vector<IncludedFile>* included = nullptr);
+
+/// Reads and compiles a GLSL file; its folder is searched first for #includes.
+PROCEDURAY_DECL std::vector<std::uint32_t> compile_glsl_file(ShaderStage stage, const std::filesystem::path& path,
+                                                             std::string preamble = {});
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+#include <fstream>
+#include <sstream>
+#include <mutex>
+#include <cstdlib>
+#include <algorithm>
+
+// glslang is read only where the bodies are compiled.
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+namespace proceduray::vk {
 
 namespace detail {
 
-inline EShLanguage glslang_stage(ShaderStage s) {
-  switch (s) {
-    case ShaderStage::raygen: return EShLangRayGen;
-    case ShaderStage::miss: return EShLangMiss;
-    case ShaderStage::closest_hit: return EShLangClosestHit;
-    case ShaderStage::any_hit: return EShLangAnyHit;
-    case ShaderStage::intersection: return EShLangIntersect;
-    case ShaderStage::callable: return EShLangCallable;
-  }
-  return EShLangRayGen;
-}
+PROCEDURAY_DECL EShLanguage glslang_stage(ShaderStage s);
 
 /// glslang needs one process-wide initialisation before any compile.
-inline void ensure_glslang() {
-  static std::once_flag once;
-  std::call_once(once, [] { glslang::InitializeProcess(); });
-}
+PROCEDURAY_DECL void ensure_glslang();
 
 /// Resolves #include "x" against the includer's folder, then the include folders.
 class Includer final : public glslang::TShader::Includer {
@@ -272,9 +225,92 @@ class Includer final : public glslang::TShader::Includer {
 
 }  // namespace detail
 
-/// Compiles one shader to SPIR-V (entry point "main"); throws ShaderCompileError on failure.
-/// `included`, when given, receives every file an #include read.
-inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source, std::vector<IncludedFile>* included = nullptr) {
+PROCEDURAY_DECL bool traces_rays(std::span<const std::uint32_t> spirv) noexcept {
+  bool found = false;
+  detail::each_spirv_instruction(spirv, [&](std::uint32_t op, std::span<const std::uint32_t>) {
+    found = op == detail::op_trace_ray;
+    return !found;
+  });
+  return found;
+}
+
+PROCEDURAY_DECL TraceInfo trace_info(std::span<const std::uint32_t> spirv) {
+  std::vector<std::pair<std::uint32_t, std::string>> names;  // (id, OpName)
+  std::vector<std::uint32_t> payloads;                       // ids passed to OpTraceRayKHR
+  TraceInfo out;
+  const auto each = [&](std::uint32_t op, std::span<const std::uint32_t> words) {
+    if (op == detail::op_name && words.size() >= 3) {
+      std::string name;  // a nul-terminated UTF-8 literal, four bytes a word
+      for (std::uint32_t w : words.subspan(2)) {
+        for (int b = 0; b < 4 && ((w >> (8 * b)) & 0xFFu) != 0; ++b) {
+          name += static_cast<char>((w >> (8 * b)) & 0xFFu);
+        }
+      }
+      names.emplace_back(words[1], std::move(name));
+    }
+    if (op == detail::op_trace_ray && words.size() >= 12) payloads.push_back(words[11]);
+    if (op == detail::op_execute_callable) out.calls = true;
+    return true;
+  };
+  out.unnamed = !detail::each_spirv_instruction(spirv, each);
+  for (std::uint32_t id : payloads) {
+    const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == id; });
+    if (it == names.end() || it->second.empty()) {
+      out.unnamed = true;
+    } else if (std::find(out.payloads.begin(), out.payloads.end(), it->second) == out.payloads.end()) {
+      out.payloads.push_back(it->second);
+    }
+  }
+  return out;
+}
+
+PROCEDURAY_DECL std::filesystem::path library_shader_dir() {
+  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') return env;
+#ifdef PROCEDURAY_SHADER_DIR
+  return PROCEDURAY_SHADER_DIR;
+#else
+  return {};
+#endif
+}
+
+PROCEDURAY_DECL std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw EnvironmentError("read_text_file: cannot open '" + path.string() + "'; check the path" +
+                           (path.is_relative() ? " (relative to " + std::filesystem::current_path().string() + ")"
+                                               : std::string()));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace proceduray::vk
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL EShLanguage glslang_stage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::raygen: return EShLangRayGen;
+    case ShaderStage::miss: return EShLangMiss;
+    case ShaderStage::closest_hit: return EShLangClosestHit;
+    case ShaderStage::any_hit: return EShLangAnyHit;
+    case ShaderStage::intersection: return EShLangIntersect;
+    case ShaderStage::callable: return EShLangCallable;
+  }
+  return EShLangRayGen;
+}
+
+PROCEDURAY_DECL void ensure_glslang() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+}  // namespace proceduray::vk::detail
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::vector<std::uint32_t> compile_glsl(const ShaderSource& source, std::vector<IncludedFile>* included) {
   detail::ensure_glslang();
   const EShLanguage stage = detail::glslang_stage(source.stage);
   glslang::TShader shader(stage);
@@ -321,10 +357,10 @@ inline std::vector<std::uint32_t> compile_glsl(const ShaderSource& source, std::
   return spirv;
 }
 
-/// Reads and compiles a GLSL file; its folder is searched first for #includes.
-inline std::vector<std::uint32_t> compile_glsl_file(ShaderStage stage, const std::filesystem::path& path,
-                                                    std::string preamble = {}) {
+PROCEDURAY_DECL std::vector<std::uint32_t> compile_glsl_file(ShaderStage stage, const std::filesystem::path& path,
+                                                             std::string preamble) {
   return compile_glsl({stage, path.string(), read_text_file(path), {}, std::move(preamble)});
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -13,43 +13,27 @@
 // cache off with one warning: shaders are compiled as if there were none.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/version.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
 
-#include <glslang/build_info.h>
-
 #include <atomic>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <string_view>
-#include <unistd.h>
 #include <vector>
 
 namespace proceduray::vk {
 
 /// Where the library keeps its caches: $XDG_CACHE_HOME/proceduray, else $HOME/.cache/proceduray;
 /// empty when neither variable is set (no cache).
-inline std::filesystem::path default_cache_dir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
-    return std::filesystem::path(xdg) / "proceduray";
-  }
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
-    return std::filesystem::path(home) / ".cache" / "proceduray";
-  }
-  return {};
-}
+PROCEDURAY_DECL std::filesystem::path default_cache_dir();
 
 /// FNV-1a, continued from `h`: cheap and enough to key and check entries.
-inline std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull) {
-  for (const char c : bytes) h = (h ^ static_cast<std::uint8_t>(c)) * 1099511628211ull;
-  return h;
-}
+PROCEDURAY_DECL std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull);
 
 /// SPIR-V entries in one folder.
 class SpirvCache {
@@ -87,7 +71,46 @@ class SpirvCache {
 
 // ---------------------------------------------------------------------------------------------
 
-inline std::uint64_t SpirvCache::key(const ShaderSource& source) {
+namespace detail {
+/// Reads a little-endian-as-written value at `at`, advancing it; false past the end.
+template <class T>
+bool take(const std::vector<char>& bytes, std::size_t& at, T& out) {
+  if (at > bytes.size() || bytes.size() - at < sizeof(T)) return false;
+  std::memcpy(&out, bytes.data() + at, sizeof(T));
+  at += sizeof(T);
+  return true;
+}
+}  // namespace detail
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+#include <glslang/build_info.h>
+#include <fstream>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <unistd.h>
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::filesystem::path default_cache_dir() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
+    return std::filesystem::path(xdg) / "proceduray";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    return std::filesystem::path(home) / ".cache" / "proceduray";
+  }
+  return {};
+}
+
+PROCEDURAY_DECL std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h) {
+  for (const char c : bytes) h = (h ^ static_cast<std::uint8_t>(c)) * 1099511628211ull;
+  return h;
+}
+
+PROCEDURAY_DECL std::uint64_t SpirvCache::key(const ShaderSource& source) {
   std::uint64_t h = fnv1a(proceduray::version);
   h = fnv1a(GLSLANG_VERSION_FLAVOR, fnv1a(std::to_string(GLSLANG_VERSION_MAJOR) + "." +
                                               std::to_string(GLSLANG_VERSION_MINOR) + "." +
@@ -103,13 +126,13 @@ inline std::uint64_t SpirvCache::key(const ShaderSource& source) {
   return h;
 }
 
-inline std::filesystem::path SpirvCache::entry(const ShaderSource& source) const {
+PROCEDURAY_DECL std::filesystem::path SpirvCache::entry(const ShaderSource& source) const {
   char name[32];
   std::snprintf(name, sizeof name, "%016llx.spv", static_cast<unsigned long long>(key(source)));
   return m_dir / name;
 }
 
-inline std::vector<std::uint32_t> SpirvCache::compile(const ShaderSource& source) {
+PROCEDURAY_DECL std::vector<std::uint32_t> SpirvCache::compile(const ShaderSource& source) {
   if (m_dir.empty()) {
     ++m_misses;
     return compile_glsl(source);
@@ -128,20 +151,9 @@ inline std::vector<std::uint32_t> SpirvCache::compile(const ShaderSource& source
   return spirv;
 }
 
-namespace detail {
-/// Reads a little-endian-as-written value at `at`, advancing it; false past the end.
-template <class T>
-bool take(const std::vector<char>& bytes, std::size_t& at, T& out) {
-  if (at > bytes.size() || bytes.size() - at < sizeof(T)) return false;
-  std::memcpy(&out, bytes.data() + at, sizeof(T));
-  at += sizeof(T);
-  return true;
-}
-}  // namespace detail
-
 // Layout: magic, key, checksum of the rest, include count, per include (path length, path, text
 // hash), word count, words.
-inline bool SpirvCache::load(const std::filesystem::path& file, std::uint64_t k, std::vector<std::uint32_t>& spirv) {
+PROCEDURAY_DECL bool SpirvCache::load(const std::filesystem::path& file, std::uint64_t k, std::vector<std::uint32_t>& spirv) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) return false;
   std::ifstream in(file, std::ios::binary);
@@ -179,7 +191,7 @@ inline bool SpirvCache::load(const std::filesystem::path& file, std::uint64_t k,
   return true;
 }
 
-inline void SpirvCache::store(const std::filesystem::path& file, std::uint64_t k,
+PROCEDURAY_DECL void SpirvCache::store(const std::filesystem::path& file, std::uint64_t k,
                               const std::vector<IncludedFile>& included, const std::vector<std::uint32_t>& spirv) {
   std::string body;
   const auto put = [&](const auto& value) { body.append(reinterpret_cast<const char*>(&value), sizeof value); };
@@ -220,3 +232,4 @@ inline void SpirvCache::store(const std::filesystem::path& file, std::uint64_t k
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -17,6 +17,8 @@
 // a format other than those five UsageError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/buffer.hpp>
 
 #include <cstdint>
@@ -27,16 +29,7 @@
 namespace proceduray::vk {
 
 /// Bytes per pixel of the formats a StorageImage takes; 0 for any other.
-inline std::uint32_t storage_pixel_bytes(VkFormat format) {
-  switch (format) {
-    case VK_FORMAT_R8G8B8A8_UNORM:
-    case VK_FORMAT_R32_SFLOAT:
-    case VK_FORMAT_R32_UINT: return 4;
-    case VK_FORMAT_R32G32B32A32_SFLOAT:
-    case VK_FORMAT_R32G32B32A32_UINT: return 16;
-    default: return 0;
-  }
-}
+PROCEDURAY_DECL std::uint32_t storage_pixel_bytes(VkFormat format);
 
 /// A 2D image in the general layout, with a view for storage writes (formats: storage_pixel_bytes).
 class StorageImage {
@@ -91,8 +84,25 @@ class StorageImage {
   bool m_initialised = false;
 };
 
-inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format,
-                                  Init init)
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL std::uint32_t storage_pixel_bytes(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_R32_SFLOAT:
+    case VK_FORMAT_R32_UINT: return 4;
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+    case VK_FORMAT_R32G32B32A32_UINT: return 16;
+    default: return 0;
+  }
+}
+
+PROCEDURAY_DECL StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::uint32_t height, VkFormat format,
+                                           Init init)
     : m_ctx(&ctx), m_width(width), m_height(height), m_format(format) {
   if (storage_pixel_bytes(format) == 0) {
     throw UsageError("StorageImage: format " + std::to_string(static_cast<int>(format)) +
@@ -144,7 +154,7 @@ inline StorageImage::StorageImage(const Context& ctx, std::uint32_t width, std::
   if (init == now) ctx.submit([&](VkCommandBuffer cmd) { record_init(cmd); });
 }
 
-inline void StorageImage::record_init(VkCommandBuffer cmd) {
+PROCEDURAY_DECL void StorageImage::record_init(VkCommandBuffer cmd) {
   if (m_initialised) return;
   transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
              VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
@@ -152,7 +162,7 @@ inline void StorageImage::record_init(VkCommandBuffer cmd) {
   m_initialised = true;
 }
 
-inline void StorageImage::record_copy(VkCommandBuffer cmd, const Buffer& buffer, VkDeviceSize offset) const {
+PROCEDURAY_DECL void StorageImage::record_copy(VkCommandBuffer cmd, const Buffer& buffer, VkDeviceSize offset) const {
   if (offset > buffer.size() || bytes() > buffer.size() - offset) {
     throw UsageError("StorageImage::record_copy: " + std::to_string(bytes()) + " bytes at offset " +
                      std::to_string(offset) + " overrun the buffer's " + std::to_string(buffer.size()) +
@@ -182,9 +192,9 @@ inline void StorageImage::record_copy(VkCommandBuffer cmd, const Buffer& buffer,
                        nullptr);
 }
 
-inline void StorageImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
-                                     VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
-                                     VkPipelineStageFlags dst_stage) const {
+PROCEDURAY_DECL void StorageImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
+                                              VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
+                                              VkPipelineStageFlags dst_stage) const {
   auto barrier = make<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
   barrier.srcAccessMask = src_access;
   barrier.dstAccessMask = dst_access;
@@ -197,7 +207,7 @@ inline void StorageImage::transition(VkCommandBuffer cmd, VkImageLayout from, Vk
   vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
-inline void StorageImage::record_clear(VkCommandBuffer cmd, const VkClearColorValue& value) const {
+PROCEDURAY_DECL void StorageImage::record_clear(VkCommandBuffer cmd, const VkClearColorValue& value) const {
   // Earlier traces' writes before the clear; the clear before this trace's writes.
   transition(cmd, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT,
              VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT);
@@ -208,7 +218,7 @@ inline void StorageImage::record_clear(VkCommandBuffer cmd, const VkClearColorVa
              VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
 }
 
-inline std::vector<std::uint8_t> StorageImage::read() const {
+PROCEDURAY_DECL std::vector<std::uint8_t> StorageImage::read() const {
   if (!m_initialised) {
     throw UsageError("StorageImage::read: the image was made StorageImage::recorded and its record_init() was "
                      "never submitted; record it before the first trace");
@@ -222,3 +232,4 @@ inline std::vector<std::uint8_t> StorageImage::read() const {
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

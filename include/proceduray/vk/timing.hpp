@@ -12,6 +12,8 @@
 // not a median. Speed belongs in benchmarks that print these numbers, never in unit tests.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/vk/renderer.hpp>
 
@@ -33,14 +35,7 @@ struct Stats {
 };
 
 /// Min, median and max of `samples`; throws UsageError for an empty list.
-inline Stats stats(std::span<const double> samples) {
-  if (samples.empty()) throw UsageError("stats: no samples; time at least one frame");
-  std::vector<double> v(samples.begin(), samples.end());
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  const double median = n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  return {v.front(), median, v.back(), n};
-}
+PROCEDURAY_DECL Stats stats(std::span<const double> samples);
 
 /// How time_frames runs.
 struct TimingOptions {
@@ -97,8 +92,26 @@ FrameTimes time_frames(Renderer& renderer, std::uint32_t width, std::uint32_t he
 }
 
 /// time_frames with nothing to update between frames.
-inline FrameTimes time_frames(Renderer& renderer, std::uint32_t width, std::uint32_t height, TimingOptions options = {}) {
+PROCEDURAY_DECL FrameTimes time_frames(Renderer& renderer, std::uint32_t width, std::uint32_t height, TimingOptions options = {});
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL Stats stats(std::span<const double> samples) {
+  if (samples.empty()) throw UsageError("stats: no samples; time at least one frame");
+  std::vector<double> v(samples.begin(), samples.end());
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  const double median = n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return {v.front(), median, v.back(), n};
+}
+
+PROCEDURAY_DECL FrameTimes time_frames(Renderer& renderer, std::uint32_t width, std::uint32_t height, TimingOptions options) {
   return time_frames(renderer, width, height, options, [](std::uint32_t) {});
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

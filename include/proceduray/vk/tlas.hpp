@@ -17,6 +17,8 @@
 // each message names the call and the instance's index in the list given.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/scene/device_limits.hpp>
 #include <proceduray/scene/geometry.hpp>
@@ -57,38 +59,11 @@ void check_matrix(const InstanceTransform& t, Where where) {
 
 /// Throws for an instance Vulkan cannot take: no BLAS (UsageError), indices past 24 bits
 /// (DeviceLimitError), a non-finite or singular transform (InvalidGeometryError).
-inline void check_instance(const Instance& in, std::size_t i, std::string_view operation = "build_tlas") {
-  // Built only on failure: a refit checks every instance every frame.
-  auto which = [&] { return std::string(operation) + ": instance " + std::to_string(i); };
-  if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
-    throw UsageError(which() + " has no BLAS; set Instance::blas to a built structure");
-  }
-  if (!fits_instance_field(in.custom_index) || !fits_instance_field(in.sbt_offset)) {
-    throw DeviceLimitError(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
-                           std::to_string(in.sbt_offset) + " does not fit in 24 bits (at most " +
-                           std::to_string(max_instance_sbt_offset) + ": instanceCustomIndex and "
-                           "instanceShaderBindingTableRecordOffset are 24-bit fields); use fewer instances or records");
-  }
-  check_matrix(in.transform, [&] { return which() + " transform"; });
-}
+PROCEDURAY_DECL void check_instance(const Instance& in, std::size_t i, std::string_view operation = "build_tlas");
 
 /// Packs instances into Vulkan's layout; throws for bad input (check_instance), naming the instance.
-inline void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
-                           std::string_view operation = "build_tlas") {
-  for (std::size_t i = 0; i < instances.size(); ++i) {
-    const Instance& in = instances[i];
-    check_instance(in, i, operation);
-    VkAccelerationStructureInstanceKHR& out = packed[i];
-    out = {};
-    static_assert(sizeof(out.transform) == sizeof(in.transform), "InstanceTransform is VkTransformMatrixKHR's layout");
-    std::memcpy(&out.transform, &in.transform, sizeof(out.transform));  // rows as they are: no conversion
-    out.instanceCustomIndex = in.custom_index;
-    out.mask = in.mask;
-    out.instanceShaderBindingTableRecordOffset = in.sbt_offset;
-    out.flags = in.flags;
-    out.accelerationStructureReference = in.blas->address();
-  }
-}
+PROCEDURAY_DECL void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
+                                    std::string_view operation = "build_tlas");
 
 }  // namespace detail
 
@@ -174,7 +149,51 @@ class Tlas {
 };
 
 /// Builds a TLAS over `instances` and waits (see Tlas for refittable ones).
-inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Instance> instances) {
+PROCEDURAY_DECL AccelerationStructure build_tlas(const Context& ctx, std::span<const Instance> instances);
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL void check_instance(const Instance& in, std::size_t i, std::string_view operation) {
+  // Built only on failure: a refit checks every instance every frame.
+  auto which = [&] { return std::string(operation) + ": instance " + std::to_string(i); };
+  if (in.blas == nullptr || in.blas->get() == VK_NULL_HANDLE) {
+    throw UsageError(which() + " has no BLAS; set Instance::blas to a built structure");
+  }
+  if (!fits_instance_field(in.custom_index) || !fits_instance_field(in.sbt_offset)) {
+    throw DeviceLimitError(which() + " custom_index " + std::to_string(in.custom_index) + " or sbt_offset " +
+                           std::to_string(in.sbt_offset) + " does not fit in 24 bits (at most " +
+                           std::to_string(max_instance_sbt_offset) + ": instanceCustomIndex and "
+                           "instanceShaderBindingTableRecordOffset are 24-bit fields); use fewer instances or records");
+  }
+  check_matrix(in.transform, [&] { return which() + " transform"; });
+}
+
+PROCEDURAY_DECL void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
+                                    std::string_view operation) {
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const Instance& in = instances[i];
+    check_instance(in, i, operation);
+    VkAccelerationStructureInstanceKHR& out = packed[i];
+    out = {};
+    static_assert(sizeof(out.transform) == sizeof(in.transform), "InstanceTransform is VkTransformMatrixKHR's layout");
+    std::memcpy(&out.transform, &in.transform, sizeof(out.transform));  // rows as they are: no conversion
+    out.instanceCustomIndex = in.custom_index;
+    out.mask = in.mask;
+    out.instanceShaderBindingTableRecordOffset = in.sbt_offset;
+    out.flags = in.flags;
+    out.accelerationStructureReference = in.blas->address();
+  }
+}
+
+}  // namespace proceduray::vk::detail
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL AccelerationStructure build_tlas(const Context& ctx, std::span<const Instance> instances) {
   std::vector<VkAccelerationStructureInstanceKHR> packed(instances.size());
   detail::pack_instances(instances, packed);
   Buffer buffer(ctx, std::max<VkDeviceSize>(1, packed.size()) * sizeof(VkAccelerationStructureInstanceKHR),
@@ -193,3 +212,4 @@ inline AccelerationStructure build_tlas(const Context& ctx, std::span<const Inst
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -7,27 +7,14 @@
 // size throws proceduray::UsageError, one past the limits proceduray::DeviceLimitError.
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/vk/sbt_buffer.hpp>
 
 namespace proceduray::vk {
 
 /// Throws UsageError for a zero size, DeviceLimitError for one this device cannot dispatch.
-inline void check_trace_size(const Context& ctx, std::uint32_t width, std::uint32_t height) {
-  const auto& limits = ctx.properties().limits;
-  const std::uint64_t max_x = std::uint64_t{limits.maxComputeWorkGroupCount[0]} * limits.maxComputeWorkGroupSize[0];
-  const std::uint64_t max_y = std::uint64_t{limits.maxComputeWorkGroupCount[1]} * limits.maxComputeWorkGroupSize[1];
-  const std::uint64_t max_rays = ctx.ray_tracing_properties().maxRayDispatchInvocationCount;
-  const std::uint64_t rays = std::uint64_t{width} * height;
-  if (width == 0 || height == 0 || width > max_x || height > max_y || rays > max_rays) {
-    const std::string message = "trace: size " + std::to_string(width) + "x" + std::to_string(height) +
-                                " cannot be dispatched on " + ctx.name() + "; width must be 1.." +
-                                std::to_string(max_x) + ", height 1.." + std::to_string(max_y) +
-                                " and width*height at most " + std::to_string(max_rays) +
-                                " (maxComputeWorkGroupCount x maxComputeWorkGroupSize, maxRayDispatchInvocationCount)";
-    if (width == 0 || height == 0) throw UsageError(message);
-    throw DeviceLimitError(message);
-  }
-}
+PROCEDURAY_DECL void check_trace_size(const Context& ctx, std::uint32_t width, std::uint32_t height);
 
 /// Records the binds (pipeline, sets 0..n-1, push constants), the stack size and one trace into `cmd`;
 /// `before` and `after` run right around vkCmdTraceRaysKHR (timestamps, say).
@@ -58,9 +45,36 @@ void record_trace(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipel
 }
 
 /// Checks the size, then records the binds and one trace, submits them and waits for the queue.
-inline void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
-                  const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
-                  std::span<const std::byte> push_constants = {}) {
+PROCEDURAY_DECL void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
+                           const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
+                           std::span<const std::byte> push_constants = {});
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk {
+
+PROCEDURAY_DECL void check_trace_size(const Context& ctx, std::uint32_t width, std::uint32_t height) {
+  const auto& limits = ctx.properties().limits;
+  const std::uint64_t max_x = std::uint64_t{limits.maxComputeWorkGroupCount[0]} * limits.maxComputeWorkGroupSize[0];
+  const std::uint64_t max_y = std::uint64_t{limits.maxComputeWorkGroupCount[1]} * limits.maxComputeWorkGroupSize[1];
+  const std::uint64_t max_rays = ctx.ray_tracing_properties().maxRayDispatchInvocationCount;
+  const std::uint64_t rays = std::uint64_t{width} * height;
+  if (width == 0 || height == 0 || width > max_x || height > max_y || rays > max_rays) {
+    const std::string message = "trace: size " + std::to_string(width) + "x" + std::to_string(height) +
+                                " cannot be dispatched on " + ctx.name() + "; width must be 1.." +
+                                std::to_string(max_x) + ", height 1.." + std::to_string(max_y) +
+                                " and width*height at most " + std::to_string(max_rays) +
+                                " (maxComputeWorkGroupCount x maxComputeWorkGroupSize, maxRayDispatchInvocationCount)";
+    if (width == 0 || height == 0) throw UsageError(message);
+    throw DeviceLimitError(message);
+  }
+}
+
+PROCEDURAY_DECL void trace(const Context& ctx, const Pipeline& pipeline, const DescriptorSet& set,
+                           const SbtBuffer& sbt, std::uint32_t width, std::uint32_t height,
+                           std::span<const std::byte> push_constants) {
   check_trace_size(ctx, width, height);
   const VkDescriptorSet raw = set.get();
   ctx.submit([&](VkCommandBuffer cmd) {
@@ -69,3 +83,4 @@ inline void trace(const Context& ctx, const Pipeline& pipeline, const Descriptor
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES

@@ -10,6 +10,8 @@
 // there is no Vulkan driver at all. The log must outlive the instance (its messenger writes to it).
 #pragma once
 
+#include <proceduray/config.hpp>
+
 #include <proceduray/error.hpp>
 #include <proceduray/vk/device_selection.hpp>
 #include <proceduray/vk/error.hpp>
@@ -129,7 +131,17 @@ class VulkanInstance {
 namespace detail {
 
 /// Throws EnvironmentError when VK_LAYER_KHRONOS_validation is not installed.
-inline void require_validation_layer() {
+PROCEDURAY_DECL void require_validation_layer();
+
+}  // namespace detail
+
+}  // namespace proceduray::vk
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray::vk::detail {
+
+PROCEDURAY_DECL void require_validation_layer() {
   std::uint32_t count = 0;
   vkEnumerateInstanceLayerProperties(&count, nullptr);
   std::vector<VkLayerProperties> available(count);
@@ -144,9 +156,11 @@ inline void require_validation_layer() {
   }
 }
 
-}  // namespace detail
+}  // namespace proceduray::vk::detail
 
-inline VulkanInstance::VulkanInstance(const char* application_name, ValidationLog* log) {
+namespace proceduray::vk {
+
+PROCEDURAY_DECL VulkanInstance::VulkanInstance(const char* application_name, ValidationLog* log) {
   auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
   app.pApplicationName = application_name;
   app.pEngineName = "proceduray";
@@ -185,3 +199,4 @@ inline VulkanInstance::VulkanInstance(const char* application_name, ValidationLo
 }
 
 }  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES
