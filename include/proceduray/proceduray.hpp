@@ -19,6 +19,7 @@
 #include <proceduray/march/calibration.hpp>
 #include <proceduray/march/cut_planes.hpp>
 #include <proceduray/march/metaballs.hpp>
+#include <proceduray/mesh/obj.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>
 #include <proceduray/scene/glsl_files.hpp>

@@ -47,6 +47,7 @@ BATCHES = {
     'scene': ['include/proceduray/scene/*.hpp'],
     'accuracy': ['include/proceduray/accuracy/*.hpp'],
     'march': ['include/proceduray/march/*.hpp'],
+    'mesh': ['include/proceduray/mesh/*.hpp'],
     # scene/ headers whose blocks show the renderer are compiled with vk/ (the scene batch stays pure).
     'vk': ['include/proceduray/vk/*.hpp',
            'include/proceduray/scene/uniform_slot.hpp'],
@@ -54,7 +55,7 @@ BATCHES = {
     'readme': ['README.md'],
 }
 # Batches whose headers must not pull in Vulkan (scene/, shader/ and accuracy/ stay pure): checked in the same compile.
-PURE = {'shader', 'scene', 'accuracy', 'march'}
+PURE = {'shader', 'scene', 'accuracy', 'march', 'mesh'}
 DECLARATION = re.compile(r'(struct|class|enum|union|using|namespace|template|inline|constexpr|int main'
                          r'|PROCEDURAY_STRUCT|PROCEDURAY_DEFINE_STRUCT)\b')
 

@@ -1,0 +1,6 @@
+#include <proceduray/mesh/obj.hpp>
+#include <proceduray/scene/scene.hpp>
+// @declarations
+void usage(proceduray::Scene& scene, std::size_t i) {
+  // @statements
+}
