@@ -107,6 +107,29 @@ TEST_CASE("features set_mask changes what rays see with a TLAS rebuild and no BL
   CHECK_THROWS_WITH_AS(r.renderer.set_mask(r.scene.ball(1), 1, 0), doctest::Contains("no instance 1"), SceneError);
 }
 
+TEST_CASE("features set_visible hides an instance and its shadow with a TLAS update, and shows it as it was") {
+  Rendered r;
+  const glm::vec3 red = features_scene::colours[0];
+  const vk::Frame before = r.frame();
+  REQUIRE(count(before, red) > 100);
+  REQUIRE(near(pixel(before, where(shadow_point(0))), bytes(shadowed)));
+  r.renderer.set_visible(r.scene.ball(0), 0, false);
+  const vk::Frame hidden = r.frame();
+  CHECK(hidden.work == vk::FrameWork{.tlas_updates = 1});  // no build of anything
+  CHECK(count(hidden, red) == 0);
+  CHECK(near(pixel(hidden, where(features_scene::centres[0])), bytes(tinted)));  // the floor behind it
+  CHECK(near(pixel(hidden, where(shadow_point(0))), bytes(tinted)));             // and no shadow
+  CHECK(count(hidden, features_scene::colours[2]) == count(before, features_scene::colours[2]));  // others stay
+  r.renderer.set_visible(r.scene.ball(0), 0, false);  // already hidden: no work
+  CHECK(r.frame().work == vk::FrameWork{});
+  r.renderer.set_visible(r.scene.ball(0), 0, true);
+  const vk::Frame shown = r.frame();
+  CHECK(shown.work == vk::FrameWork{.tlas_updates = 1});
+  CHECK(shown.rgba == before.rgba);  // the updated TLAS finds the same hits
+  CHECK_THROWS_WITH_AS(r.renderer.set_visible(r.scene.ball(0), 5, false),
+                       doctest::Contains("Renderer::set_visible"), SceneError);
+}
+
 TEST_CASE("features a closest-hit that traces rays: the depth is derived, and a smaller declared one refused") {
   TestContext t;
   // floor.rchit calls traceRayEXT (shadow rays); depth 1 would make lavapipe die at the nested trace.

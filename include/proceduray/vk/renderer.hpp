@@ -8,6 +8,7 @@
 //   renderer.set_storage(tints_slot, tints);          // typed storage buffer (an array)
 //   renderer.set_push(knobs_slot, knobs);             // typed push constants, recorded with the next trace
 //   renderer.set_transform(pacman, 1, moved);         // DynamicTransform: TLAS refit, no BLAS work
+//   renderer.set_visible(pacman, 0, false);           // hidden until shown again: a TLAS update
 //   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
@@ -102,12 +103,16 @@ class Renderer {
     m_ring->wait_all();
     m_structures->set_transforms(geometry, object_to_world, "Renderer::set_transforms");
   }
-  /// Changes the instance mask (Layers bits) of one instance, any policy: the TLAS is rebuilt
-  /// before the next trace (a mask is not a motion, so no refit is involved).
+  /// Changes one instance's mask (Layers bits), any policy: a TLAS build before the next trace.
   /// Throws UsageError for a mask over 0xFF (an instance mask has 8 bits).
   void set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask) {
     m_ring->wait_all();
     m_structures->set_mask(geometry, instance, mask, "Renderer::set_mask");
+  }
+  /// Hides or shows one instance, any policy: a TLAS update, never a rebuild (Unity's "Off").
+  void set_visible(GeometryId geometry, std::uint32_t instance, bool visible) {
+    m_ring->wait_all();
+    m_structures->set_visible(geometry, instance, visible, "Renderer::set_visible");
   }
   /// Replaces a DynamicGeometry procedural geometry's boxes: the same count refits its BLAS before
   /// the next trace, another count rebuilds it. Throws for other policies, triangles or bad boxes.
@@ -191,9 +196,7 @@ class Renderer {
     const FrameRing* ring = nullptr;
     const FrameSlot* slot = nullptr;
     std::uint32_t which = 0;
-    void operator()(VkCommandBuffer) const {
-      if (ring != nullptr) ring->stamp(*slot, which);
-    }
+    void operator()(VkCommandBuffer) const { if (ring != nullptr) ring->stamp(*slot, which); }
   };
   /// Per slot: what its frame was asked and what it did.
   struct SlotFrame {
@@ -224,7 +227,6 @@ class Renderer {
 };
 
 #if PROCEDURAY_BODIES
-
 PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
     : m_ctx(&ctx), m_plan(compile(scene)), m_layout(m_plan.layout(ctx.limits())) {
   m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");

@@ -22,6 +22,7 @@
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/frame.hpp>
 #include <proceduray/vk/refittable_blas.hpp>
+#include <proceduray/vk/scene_instances.hpp>
 #include <proceduray/vk/tlas.hpp>
 
 #include <cstddef>
@@ -44,15 +45,25 @@ class SceneAcceleration {
   SceneAcceleration(const SceneAcceleration&) = delete;
   SceneAcceleration& operator=(const SceneAcceleration&) = delete;
 
-  /// Moves instance `instance` of `geometry`: TLAS refit at the next record(). Throws for a Static geometry.
+  /// Moves, masks and shows or hides instances (SceneInstances): the TLAS work at the next record().
+  SceneInstances& instances() noexcept { return *m_instances; }
+  const SceneInstances& instances() const noexcept { return *m_instances; }
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
-                     std::string_view op = "SceneAcceleration::set_transform");
-  /// Moves every instance of `geometry` (one matrix each, in order): one TLAS refit. Nothing moves if one is bad.
+                     std::string_view op = "SceneAcceleration::set_transform") {
+    m_instances->set_transform(geometry, instance, object_to_world, op);
+  }
   void set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
-                      std::string_view op = "SceneAcceleration::set_transforms");
-  /// Changes one instance's mask, any policy: TLAS rebuild at the next record().
+                      std::string_view op = "SceneAcceleration::set_transforms") {
+    m_instances->set_transforms(geometry, object_to_world, op);
+  }
   void set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
-                std::string_view op = "SceneAcceleration::set_mask");
+                std::string_view op = "SceneAcceleration::set_mask") {
+    m_instances->set_mask(geometry, instance, mask, op);
+  }
+  void set_visible(GeometryId geometry, std::uint32_t instance, bool visible,
+                   std::string_view op = "SceneAcceleration::set_visible") {
+    m_instances->set_visible(geometry, instance, visible, op);
+  }
   /// New boxes for a DynamicGeometry procedural geometry: refit for the same count, else rebuild.
   void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op = "SceneAcceleration::set_aabbs");
   /// New positions (same count) for a DynamicGeometry triangle geometry: refit.
@@ -90,12 +101,6 @@ class SceneAcceleration {
   /// Copies the data of DynamicGeometry BLAS `b` and builds it refittable (one submit).
   void build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b);
   const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, std::string_view operation) const;
-  void check_movable(GeometryId geometry, std::string_view operation) const;
-  /// The TLAS index of (geometry, instance) of a movable geometry; throws InvalidGeometryError or UsageError.
-  std::uint32_t movable_instance(GeometryId geometry, std::uint32_t instance, std::string_view op) const;
-  /// InvalidGeometryError naming `op`, the geometry and the instance for a non-finite or singular matrix.
-  void check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t, std::string_view op) const;
-  void check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m, std::string_view op) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
   void record_refit(VkCommandBuffer cmd, std::uint32_t blas);
@@ -105,10 +110,8 @@ class SceneAcceleration {
   const Context* m_ctx;
   const proceduray::Plan* m_plan;
   std::vector<BlasSlot> m_blases;  // index = planned BLAS; never reallocated (instances point into it)
-  std::vector<Instance> m_instances;
+  std::unique_ptr<SceneInstances> m_instances;  // its list points into m_blases
   Tlas m_tlas;
-  bool m_transforms_dirty = false;
-  bool m_tlas_rebuild = false;  // a BLAS was rebuilt, or a mask changed: the TLAS is built again
 };
 
 // An Aabb goes to the BLAS build as it is: six floats, min then max, like VkAabbPositionsKHR.
@@ -122,18 +125,18 @@ PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const p
   const auto blases = plan.blases();
   m_blases.resize(blases.size());
   build_static_blases(scene, options);
-  bool any_dynamic = false;
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
-    any_dynamic = any_dynamic || blases[b].update != UpdatePolicy::Static;
     if (blases[b].update == UpdatePolicy::DynamicGeometry) build_refittable_blas(scene, b);
   }
   const auto instances = m_plan->instances();
+  std::vector<Instance> list;
   for (std::uint32_t k = 0; k < instances.size(); ++k) {
-    m_instances.push_back({.blas = &m_blases[instances[k].blas].get(), .transform = instances[k].transform, .custom_index = k,
-                           .sbt_offset = instances[k].sbt_offset, .mask = instances[k].mask});
+    list.push_back({.blas = &m_blases[instances[k].blas].get(), .transform = instances[k].transform, .custom_index = k,
+                    .sbt_offset = instances[k].sbt_offset, .mask = instances[k].mask});
   }
-  // Only a scene that changes pays for a refittable TLAS.
-  m_tlas = Tlas(*m_ctx, m_instances, {.allow_update = any_dynamic});
+  m_instances = std::make_unique<SceneInstances>(*m_plan, std::move(list));
+  // Always refittable, so showing and hiding instances (a mask) is an update, never a rebuild.
+  m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true});
 }
 
 PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::Scene& scene, const BuildOptions& options) {
@@ -200,85 +203,6 @@ PROCEDURAY_DECL std::vector<TriangleGeometry> SceneAcceleration::triangle_geomet
     out.push_back({mesh.vertices, mesh.indices, m_plan->geometries()[blas.geometries[g]].opaque});
   }
   return out;
-}
-
-PROCEDURAY_DECL void SceneAcceleration::check_movable(GeometryId geometry, std::string_view operation) const {
-  const PlannedGeometry& g = m_plan->geometry(geometry, operation);
-  if (m_plan->blases()[g.blas].update == UpdatePolicy::Static) {
-    throw UsageError(std::string(operation) + ": geometry \"" + g.name +
-                                "\" is Static, so its instances were built not to move; declare it with "
-                                "update = UpdatePolicy::DynamicTransform");
-  }
-}
-
-PROCEDURAY_DECL std::uint32_t SceneAcceleration::movable_instance(GeometryId geometry, std::uint32_t instance,
-                                                                  std::string_view op) const {
-  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
-  check_movable(geometry, op);
-  return k;
-}
-
-PROCEDURAY_DECL void SceneAcceleration::check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m,
-                                                     std::string_view op) const {
-  // An instance transform is 3x4: a projective last row would be dropped without a word.
-  if (m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f) return;
-  throw UsageError(std::string(op) + ": geometry \"" + m_plan->geometry(geometry, op).name + "\" instance " +
-                   std::to_string(instance) + " matrix has last row (" + std::to_string(m[0][3]) + ", " +
-                   std::to_string(m[1][3]) + ", " + std::to_string(m[2][3]) + ", " + std::to_string(m[3][3]) +
-                   "), not (0, 0, 0, 1); an instance transform is affine: pass a rotation, scale and translation");
-}
-
-PROCEDURAY_DECL void SceneAcceleration::check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t,
-                                                        std::string_view op) const {
-  detail::check_matrix(t, [&] {
-    return std::string(op) + ": geometry \"" + m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
-           " transform";
-  });
-}
-
-PROCEDURAY_DECL void SceneAcceleration::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
-                                                       std::string_view op) {
-  check_movable(geometry, op);
-  const PlannedGeometry& g = m_plan->geometry(geometry, op);
-  const PlannedBlas& blas = m_plan->blases()[g.blas];
-  if (object_to_world.size() != blas.instance_count) {
-    throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name + "\" has " +
-                               std::to_string(blas.instance_count) + " instances, " +
-                               std::to_string(object_to_world.size()) + " transforms given; give one per instance");
-  }
-  // A BLAS's instances are consecutive in the TLAS. All are checked (and converted, once, into Vulkan's
-  // rows) before any moves, so a bad matrix leaves every instance where it was.
-  std::vector<InstanceTransform> rows(blas.instance_count);
-  for (std::uint32_t i = 0; i < blas.instance_count; ++i) {
-    check_affine(geometry, i, object_to_world[i], op);
-    rows[i] = instance_transform(object_to_world[i]);
-    check_transform(geometry, i, rows[i], op);
-  }
-  for (std::uint32_t i = 0; i < blas.instance_count; ++i) m_instances[blas.first_instance + i].transform = rows[i];
-  m_transforms_dirty = true;
-}
-
-PROCEDURAY_DECL void SceneAcceleration::set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
-                                                 std::string_view op) {
-  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
-  if (mask > 0xFF) {  // an int would otherwise lose its high bits and could become 0: the instance vanishes
-    throw UsageError(std::string(op) + ": mask 0x" + proceduray::detail::hex(mask) + " of geometry \"" +
-                     m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
-                     " has more than Vulkan's 8 instance-mask bits; use layer bits (Scene::layer_mask), 0..0xFF");
-  }
-  if (m_instances[k].mask == mask) return;
-  m_instances[k].mask = static_cast<std::uint8_t>(mask);
-  m_tlas_rebuild = true;
-}
-
-PROCEDURAY_DECL void SceneAcceleration::set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
-                                                      std::string_view op) {
-  const std::uint32_t k = movable_instance(geometry, instance, op);
-  check_affine(geometry, instance, object_to_world, op);
-  const InstanceTransform rows = instance_transform(object_to_world);  // the one conversion
-  check_transform(geometry, instance, rows, op);                        // throws
-  m_instances[k].transform = rows;
-  m_transforms_dirty = true;
 }
 
 PROCEDURAY_DECL const PlannedBlas& SceneAcceleration::dynamic_geometry(GeometryId geometry, GeometryKind kind,
@@ -364,17 +288,13 @@ PROCEDURAY_DECL std::vector<std::uint32_t> SceneAcceleration::prepare_blases(Fra
     if (refit) {
       refits.push_back(b);
       ++work.blas_refits;
-      m_transforms_dirty = true;  // the TLAS holds the old bounds: refit it
+      m_instances->blas_refit();  // the TLAS holds the old bounds: refit it
     } else {
       // A new structure (the old one is freed whole, handle before memory); its instances point at it.
       slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes))
                                 : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes));
-      const PlannedBlas& blas = m_plan->blases()[b];
-      for (std::uint32_t k = 0; k < blas.instance_count; ++k) {
-        m_instances[blas.first_instance + k].blas = &slot.dynamic->structure();
-      }
+      m_instances->blas_rebuilt(m_plan->blases()[b], slot.dynamic->structure());
       ++work.blas_builds;
-      m_tlas_rebuild = true;
     }
   }
   return refits;
@@ -384,15 +304,18 @@ PROCEDURAY_DECL FrameWork SceneAcceleration::record(VkCommandBuffer cmd) {
   FrameWork work;
   const std::vector<std::uint32_t> refits = prepare_blases(work);
   for (std::uint32_t b : refits) record_refit(cmd, b);  // each ends with a barrier for the TLAS build
-  if (m_tlas_rebuild) {
-    m_tlas.record_build(*m_ctx, cmd, m_instances);
-    ++work.tlas_builds;
-  } else if (m_transforms_dirty) {
-    m_tlas.record_update(*m_ctx, cmd, m_instances);
-    ++work.tlas_updates;
+  switch (m_instances->take()) {
+    case TlasWork::build:
+      m_tlas.record_build(*m_ctx, cmd, m_instances->list());
+      ++work.tlas_builds;
+      break;
+    case TlasWork::update:
+      m_tlas.record_update(*m_ctx, cmd, m_instances->list());
+      ++work.tlas_updates;
+      break;
+    case TlasWork::none:
+      break;
   }
-  m_transforms_dirty = false;
-  m_tlas_rebuild = false;
   return work;
 }
 #endif  // PROCEDURAY_BODIES
