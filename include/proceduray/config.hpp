@@ -15,6 +15,9 @@
 //
 // Headers mark what moves: a function declared PROCEDURAY_DECL and defined below in an
 // `#if PROCEDURAY_BODIES` block, and includes only those bodies need inside the same block.
+// One program uses one mode: a header-only file linked with implementation.hpp's would define
+// each body twice. A PROCEDURAY_SEPARATE program without implementation.hpp fails to link,
+// naming the first body it misses (e.g. proceduray::vk::Renderer::Renderer).
 #pragma once
 
 #if defined(PROCEDURAY_IMPLEMENTATION)
