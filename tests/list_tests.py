@@ -30,6 +30,9 @@ def cases(source):
     with open(source, encoding='utf-8') as f:
         text = f.read()
     names = [m.replace('\\"', '"').replace('\\\\', '\\') for m in CASE.findall(text)]
+    for name in names:
+        if ';' in name:  # CMake splits a test name on it, so the two build systems would disagree
+            sys.exit(f'{source}: test case "{name}" has a semicolon; CMake splits names on it: use a comma')
     return names
 
 

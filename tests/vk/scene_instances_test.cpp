@@ -54,7 +54,7 @@ TEST_CASE("scene instances: hiding and showing is a TLAS update, and a mask set 
   CHECK(in.take() == vk::TlasWork::build);
 }
 
-TEST_CASE("scene instances: BLAS changes and moves ask for the TLAS work they need; bad input names the call") {
+TEST_CASE("scene instances: BLAS changes and moves ask for the TLAS work they need, and bad input names the call") {
   TestContext t;
   RendererScene s(UpdatePolicy::DynamicTransform);
   const Plan plan = compile(s.table(t.ctx));
