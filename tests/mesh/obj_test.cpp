@@ -16,17 +16,11 @@
 
 namespace {
 
-// A unit cube with one normal per face and the four corners of a square texture.
-const char* const cube_with_normals = R"(# cube
-v 0 0 0
-v 1 0 0
-v 1 1 0
-v 0 1 0
-v 0 0 1
-v 1 0 1
-v 1 1 1
-v 0 1 1
-vn 0 0 -1
+// A unit cube's corners.
+const std::string cube_positions = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+
+// The cube with one normal per face and the four corners of a square texture.
+const std::string cube_with_normals = cube_positions + R"(vn 0 0 -1
 vn 0 0 1
 vn 0 -1 0
 vn 0 1 0
@@ -45,15 +39,7 @@ f 2/1/6 3/2/6 7/3/6 6/4/6
 )";
 
 // The same cube with positions only.
-const char* const cube_positions_only = R"(v 0 0 0
-v 1 0 0
-v 1 1 0
-v 0 1 0
-v 0 0 1
-v 1 0 1
-v 1 1 1
-v 0 1 1
-f 1 4 3 2
+const std::string cube_positions_only = cube_positions + R"(f 1 4 3 2
 f 5 6 7 8
 f 1 2 6 5
 f 4 8 7 3

@@ -156,9 +156,13 @@ PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vec
   return mesh;
 }
 
-/// Parses with tinyobjloader; throws InvalidGeometryError with its message.
-PROCEDURAY_DECL ObjMesh parse_obj_with(tinyobj::ObjReader& reader, bool parsed, std::string_view name) {
-  if (!parsed || !reader.Valid()) {
+/// Parses `text` with tinyobjloader; throws InvalidGeometryError with its message.
+PROCEDURAY_DECL ObjMesh parse_obj_text(const std::string& text, std::string_view name) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(text, std::string(), config) || !reader.Valid()) {
     std::string message = reader.Error();
     while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
     throw InvalidGeometryError("load_obj: '" + std::string(name) + "' is not a valid OBJ file: " +
@@ -167,19 +171,10 @@ PROCEDURAY_DECL ObjMesh parse_obj_with(tinyobj::ObjReader& reader, bool parsed, 
   return obj_mesh(reader.GetAttrib(), reader.GetShapes(), name);
 }
 
-PROCEDURAY_DECL tinyobj::ObjReaderConfig obj_config() {
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  return config;
-}
-
 }  // namespace detail
 
 PROCEDURAY_DECL ObjMesh parse_obj(std::string_view text, std::string_view name) {
-  tinyobj::ObjReader reader;
-  const bool parsed = reader.ParseFromString(std::string(text), std::string(), detail::obj_config());
-  return detail::parse_obj_with(reader, parsed, name);
+  return detail::parse_obj_text(std::string(text), name);
 }
 
 PROCEDURAY_DECL ObjMesh load_obj(const std::filesystem::path& path) {
@@ -191,7 +186,7 @@ PROCEDURAY_DECL ObjMesh load_obj(const std::filesystem::path& path) {
   }
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw EnvironmentError("load_obj: reading '" + path.string() + "' failed");
-  return parse_obj(text, path.string());
+  return detail::parse_obj_text(text, path.string());
 }
 
 }  // namespace proceduray

@@ -45,9 +45,7 @@ class SceneAcceleration {
   SceneAcceleration(const SceneAcceleration&) = delete;
   SceneAcceleration& operator=(const SceneAcceleration&) = delete;
 
-  /// Moves, masks and shows or hides instances (SceneInstances): the TLAS work at the next record().
-  SceneInstances& instances() noexcept { return *m_instances; }
-  const SceneInstances& instances() const noexcept { return *m_instances; }
+  /// Move, mask, show or hide instances (SceneInstances): the TLAS work happens at the next record().
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world,
                      std::string_view op = "SceneAcceleration::set_transform") {
     m_instances->set_transform(geometry, instance, object_to_world, op);

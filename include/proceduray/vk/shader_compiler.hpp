@@ -183,11 +183,6 @@ namespace proceduray::vk {
 
 namespace detail {
 
-PROCEDURAY_DECL EShLanguage glslang_stage(ShaderStage s);
-
-/// glslang needs one process-wide initialisation before any compile.
-PROCEDURAY_DECL void ensure_glslang();
-
 /// Resolves #include "x" against the includer's folder, then the include folders.
 class Includer final : public glslang::TShader::Includer {
  public:
@@ -301,6 +296,7 @@ PROCEDURAY_DECL EShLanguage glslang_stage(ShaderStage s) {
   return EShLangRayGen;
 }
 
+/// glslang needs one process-wide initialisation before any compile.
 PROCEDURAY_DECL void ensure_glslang() {
   static std::once_flag once;
   std::call_once(once, [] { glslang::InitializeProcess(); });
