@@ -93,6 +93,14 @@ struct HitResolution {
 /// What compile(scene) derived; a value: copy it, keep it, compare it.
 class Plan {
  public:
+  // Out of line so that a program compiles the members' copies and destruction once.
+  Plan();
+  ~Plan();
+  Plan(const Plan&);
+  Plan(Plan&&) noexcept;
+  Plan& operator=(const Plan&);
+  Plan& operator=(Plan&&) noexcept;
+
   /// Records of a region, in record order.
   std::span<const SbtRecord> records(SbtRegionKind region) const { return m_records[static_cast<std::uint32_t>(region)]; }
   /// TLAS instances: BLAS order, then instance order.
@@ -204,6 +212,13 @@ class Plan {
 #if PROCEDURAY_BODIES
 
 namespace proceduray {
+
+PROCEDURAY_DECL Plan::Plan() = default;
+PROCEDURAY_DECL Plan::~Plan() = default;
+PROCEDURAY_DECL Plan::Plan(const Plan&) = default;
+PROCEDURAY_DECL Plan::Plan(Plan&&) noexcept = default;
+PROCEDURAY_DECL Plan& Plan::operator=(const Plan&) = default;
+PROCEDURAY_DECL Plan& Plan::operator=(Plan&&) noexcept = default;
 
 PROCEDURAY_DECL const std::string& Plan::declarations(ShaderStage stage, std::string_view shader) const {
   for (const PlannedStage& s : m_pipeline.stages) {

@@ -114,25 +114,13 @@ class Scene : public Entities {
   }
 
   /// Makes a registered global signature the one the pipeline uses; default: none.
-  void set_global_signature(GlobalSignatureId id) {
-    global_signatures().check_index(own(id, "Scene::set_global_signature"), "Scene::set_global_signature");
-    m_global_signature = id;
-  }
+  void set_global_signature(GlobalSignatureId id);
   /// Registers `desc` as `id` and makes it the one the pipeline uses.
-  GlobalSignatureId set_global_signature(GlobalSignatureDesc desc, std::string id = "global") {
-    const GlobalSignatureId g = add_global_signature(std::move(id), std::move(desc));
-    m_global_signature = g;
-    return g;
-  }
+  GlobalSignatureId set_global_signature(GlobalSignatureDesc desc, std::string id = "global");
   /// Declares the deepest traceRayEXT nesting the shaders do (1 = rays from raygen only).
   /// Undeclared, the renderer derives it from what each shader traces (scene/recursion.hpp); it
   /// refuses a declared depth below that, and needs one when shaders trace in a cycle (reflections).
-  void set_max_recursion_depth(std::uint32_t depth) {
-    if (depth == 0) {
-      throw SceneError("Scene::set_max_recursion_depth: depth 0 allows no traceRayEXT at all; use >= 1");
-    }
-    m_max_recursion_depth = depth;
-  }
+  void set_max_recursion_depth(std::uint32_t depth);
 
   /// The global signature the pipeline uses; invalid when none was set.
   GlobalSignatureId pipeline_global_signature() const { return m_global_signature; }
@@ -154,13 +142,7 @@ class Scene : public Entities {
     local_signatures().check_index(own(id, op), op);
     return id.index();
   }
-  EntryId add_raygen_entry(std::string shader, std::uint32_t signature, const void* data, std::uint32_t size) {
-    if (shader.empty()) throw SceneError("Scene::add_raygen: empty raygen shader name; name the raygen shader");
-    if (signature != no_index) local_signatures().check_index(signature, "Scene::add_raygen");
-    const Entry e{.region = SbtRegionKind::raygen, .local_signature = signature,
-                  .shader = m_entries.add_raygen_shader(std::move(shader))};
-    return m_entries.push(e, data, size);
-  }
+  EntryId add_raygen_entry(std::string shader, std::uint32_t signature, const void* data, std::uint32_t size);
   EntryId add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size);
   void check_hit(std::string_view op, const Entry& e) const;
 
@@ -224,6 +206,33 @@ PROCEDURAY_DECL void Scene::check_hit(std::string_view op, const Entry& e) const
                      geometries().name(e.geometry) + "\" does not exist (it has " + std::to_string(count) +
                      " instances); use an index below the count, or all_instances");
   }
+}
+
+PROCEDURAY_DECL EntryId Scene::add_raygen_entry(std::string shader, std::uint32_t signature, const void* data,
+                                                std::uint32_t size) {
+  if (shader.empty()) throw SceneError("Scene::add_raygen: empty raygen shader name; name the raygen shader");
+  if (signature != no_index) local_signatures().check_index(signature, "Scene::add_raygen");
+  const Entry e{.region = SbtRegionKind::raygen, .local_signature = signature,
+                .shader = m_entries.add_raygen_shader(std::move(shader))};
+  return m_entries.push(e, data, size);
+}
+
+PROCEDURAY_DECL GlobalSignatureId Scene::set_global_signature(GlobalSignatureDesc desc, std::string id) {
+  const GlobalSignatureId g = add_global_signature(std::move(id), std::move(desc));
+  m_global_signature = g;
+  return g;
+}
+
+PROCEDURAY_DECL void Scene::set_global_signature(GlobalSignatureId id) {
+  global_signatures().check_index(own(id, "Scene::set_global_signature"), "Scene::set_global_signature");
+  m_global_signature = id;
+}
+
+PROCEDURAY_DECL void Scene::set_max_recursion_depth(std::uint32_t depth) {
+  if (depth == 0) {
+    throw SceneError("Scene::set_max_recursion_depth: depth 0 allows no traceRayEXT at all; use >= 1");
+  }
+  m_max_recursion_depth = depth;
 }
 
 }  // namespace proceduray

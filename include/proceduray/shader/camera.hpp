@@ -9,6 +9,7 @@
 // x to the right and y down, so the image needs no flip.
 #pragma once
 
+#include <proceduray/config.hpp>
 #include <proceduray/error.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -33,8 +34,28 @@ struct Camera {
 PROCEDURAY_STRUCT(Camera, scalar, eye, forward, right, up, pixel_angle, pad0, pad1, pad2);
 
 /// A camera at `eye` looking at `target` with vertical field of view `fov_y_degrees`; throws UsageError on degenerate input.
-inline Camera look_at(glm::vec3 eye, glm::vec3 target, float fov_y_degrees, std::uint32_t width, std::uint32_t height,
-                      glm::vec3 world_up = {0.0f, 1.0f, 0.0f}) {
+PROCEDURAY_DECL Camera look_at(glm::vec3 eye, glm::vec3 target, float fov_y_degrees, std::uint32_t width,
+                               std::uint32_t height, glm::vec3 world_up = {0.0f, 1.0f, 0.0f});
+
+/// The pixel a world point appears in (may lie outside the image); the inverse of camera_ray.
+inline glm::ivec2 project(const Camera& c, glm::vec3 p, std::uint32_t width, std::uint32_t height) {
+  const glm::vec3 v = p - glm::vec3(c.eye);
+  const float z = glm::dot(v, glm::vec3(c.forward));
+  const glm::vec3 r(c.right), u(c.up);
+  const float x = glm::dot(v, r) / glm::dot(r, r) / z;
+  const float y = glm::dot(v, u) / glm::dot(u, u) / z;
+  return {static_cast<int>(std::floor((x + 1.0f) * 0.5f * static_cast<float>(width))),
+          static_cast<int>(std::floor((1.0f - y) * 0.5f * static_cast<float>(height)))};
+}
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+namespace proceduray {
+
+PROCEDURAY_DECL Camera look_at(glm::vec3 eye, glm::vec3 target, float fov_y_degrees, std::uint32_t width,
+                               std::uint32_t height, glm::vec3 world_up) {
   const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
   if (!finite(eye) || !finite(target) || !finite(world_up) || !std::isfinite(fov_y_degrees)) {
     // NaN compares false with everything, so it would pass the checks below and trace NaN rays.
@@ -62,15 +83,5 @@ inline Camera look_at(glm::vec3 eye, glm::vec3 target, float fov_y_degrees, std:
           glm::vec4(up * tan_half, 0.0f), 2.0f * tan_half / static_cast<float>(height), 0, 0, 0};
 }
 
-/// The pixel a world point appears in (may lie outside the image); the inverse of camera_ray.
-inline glm::ivec2 project(const Camera& c, glm::vec3 p, std::uint32_t width, std::uint32_t height) {
-  const glm::vec3 v = p - glm::vec3(c.eye);
-  const float z = glm::dot(v, glm::vec3(c.forward));
-  const glm::vec3 r(c.right), u(c.up);
-  const float x = glm::dot(v, r) / glm::dot(r, r) / z;
-  const float y = glm::dot(v, u) / glm::dot(u, u) / z;
-  return {static_cast<int>(std::floor((x + 1.0f) * 0.5f * static_cast<float>(width))),
-          static_cast<int>(std::floor((1.0f - y) * 0.5f * static_cast<float>(height)))};
-}
-
 }  // namespace proceduray
+#endif  // PROCEDURAY_BODIES
