@@ -5,7 +5,7 @@ using namespace doc_vk;
 // @declarations
 void usage(pr::Scene& scene, pr::vk::Renderer& renderer, const pr::Aabb& box,
            const std::vector<pr::InstanceTransform>& transforms, pr::LocalSignatureId<TintArgs> tint_signature,
-           pr::GeometryId ball_id, pr::GeometryId blob_id, const glm::mat4& moved, const std::vector<pr::Aabb>& boxes,
+           pr::GeometryId ball_id, pr::GeometryId blob_id, const glm::mat4& moved, const glm::mat4& placed, const std::vector<pr::Aabb>& boxes,
            std::uint32_t w, std::uint32_t h) {
   // @statements
 }

@@ -393,3 +393,37 @@ TEST_CASE("compile refuses a scene without a raygen entry") {
   r.scene.add_raygen("Raygen");
   CHECK_THROWS_AS(compile(r.scene), MissingEntryError);  // the next check: the hit records
 }
+
+TEST_CASE("compile keeps a BLAS's shared block for instances added at run time only when asked") {
+  Scene s;
+  const auto ray = s.add_ray<TestPayload>("r", {.miss = "m"});
+  const auto group = s.add_hit_group("g", {.closest_hit = "c"});
+  const auto own = s.add_hit_group("own", {.closest_hit = "own"});
+  TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
+  GeometryDesc desc = GeometryDesc::triangles(tri);  // one instance, with an entry of its own
+  const GeometryId fixed = s.add_geometry("fixed", desc);
+  desc.may_add_instances = true;
+  const GeometryId open = s.add_geometry("open", desc);
+  desc.instances.clear();  // none declared: only added ones will use its records
+  const GeometryId later = s.add_geometry("later", desc);
+  s.add_raygen("rgen");
+  for (GeometryId g : {fixed, open}) s.add_hit(ray, own, g, 0);
+  Scene missing = s;  // `open` and `later` asked for shared records but have no entry for them
+  CHECK_THROWS_WITH_AS(compile(missing), doctest::Contains("(\"r\", \"open\", instances without own entries)"),
+                       MissingEntryError);
+  CHECK_THROWS_WITH_AS(compile(missing), doctest::Contains("(\"r\", \"later\", instances without own entries)"),
+                       MissingEntryError);
+  s.set_default_hit(ray, group);
+  const Plan plan = compile(s);
+  const auto blas_of = [&](GeometryId g) { return plan.blases()[plan.geometry(g).blas]; };
+  CHECK(blas_of(fixed).shared_sbt_offset == no_index);  // not asked, and no instance shares: no block
+  const std::uint32_t open_shared = blas_of(open).shared_sbt_offset;
+  REQUIRE(open_shared != no_index);
+  CHECK(open_shared != plan.instance_sbt_offset(open, 0));  // its instance keeps its own records
+  CHECK(blas_of(later).shared_sbt_offset != no_index);
+  CHECK(blas_of(later).instance_count == 0);
+  const auto records = plan.records(SbtRegionKind::hit);
+  REQUIRE(open_shared < records.size());
+  CHECK(records[open_shared].entry != no_index);
+  CHECK(s.hit_groups().name(s.entries().all()[records[open_shared].entry].hit_group) == "g");  // the default
+}

@@ -88,6 +88,41 @@ TEST_CASE("bad input: a per-instance storage buffer with fewer elements than ins
   r.set_storage(tints, std::span<const renderer_scene::Tint>(three));  // one per instance: accepted
 }
 
+TEST_CASE("bad input: adding an instance a per-instance buffer is too short for, or no record serves, and removing twice") {
+  TestContext t;
+  RendererScene s;
+  const Scene scene = per_instance_scene(s, t.ctx);
+  vk::Renderer r(t.ctx, scene, RendererScene::options());
+  constexpr StorageSlot<renderer_scene::Tint> tints{.binding = 3, .name = "tints", .per_instance = true};
+  const GeometryId floor = scene.geometry_id("floor");
+  const glm::mat4 up = glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, 0.0f});
+  r.set_storage(tints, std::span<const renderer_scene::Tint>(std::vector<renderer_scene::Tint>(3)));
+  CHECK_THROWS_WITH_AS(r.add_instance(floor, up),
+                       Contains("Renderer::add_instance: per-instance storage buffer at set 0 binding 3 holds 3 elements, "
+                                "and the new instance's custom index is 3"),
+                       UsageError);
+  CHECK(r.instances(floor) == std::vector<std::uint32_t>{0});  // refused: nothing changed
+  r.set_storage(tints, std::span<const renderer_scene::Tint>(std::vector<renderer_scene::Tint>(4)));
+  CHECK(r.add_instance(floor, up) == 1);
+  CHECK_THROWS_WITH_AS(r.set_storage(tints, std::span<const renderer_scene::Tint>(std::vector<renderer_scene::Tint>(3))),
+                       Contains("got 3 elements for 4 instances"), UsageError);
+  r.set_storage(tints, std::span<const renderer_scene::Tint>(std::vector<renderer_scene::Tint>(8)));
+  // The balls' instances each have entries of their own: a new one would have no hit record.
+  CHECK_THROWS_WITH_AS(r.add_instance(s.ball(), up),
+                       Contains("geometry \"ball\" has no hit records a new instance could use: every instance has "
+                                "entries of its own"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(r.add_instance(floor, up, 0x100), Contains("mask 0x100"), UsageError);
+  glm::mat4 projective(1.0f);
+  projective[0][3] = 1.0f;
+  CHECK_THROWS_WITH_AS(r.add_instance(floor, projective), Contains("not (0, 0, 0, 1)"), UsageError);
+  r.remove_instance(floor, 1);
+  CHECK_THROWS_WITH_AS(r.remove_instance(floor, 1),
+                       Contains("Renderer::remove_instance: instance 1 of geometry \"floor\" was removed"), UsageError);
+  CHECK_THROWS_WITH_AS(r.remove_instance(floor, 2), Contains("has 2 instances, no instance 2"), InvalidGeometryError);
+  CHECK(r.instances(floor) == std::vector<std::uint32_t>{0});
+}
+
 TEST_CASE("bad input: an empty storage buffer") {
   Built b;
   auto& [t, s, r] = b;

@@ -130,6 +130,52 @@ TEST_CASE("features set_visible hides an instance and its shadow with a TLAS upd
                        doctest::Contains("Renderer::set_visible"), SceneError);
 }
 
+TEST_CASE("features add_instance and remove_instance: copies appear and go with TLAS builds, the others unchanged") {
+  Rendered r;
+  const glm::vec3 red = features_scene::colours[0];
+  const vk::Frame before = r.frame();
+  const std::size_t reds = count(before, red);
+  REQUIRE(reds > 100);
+  const auto placed = [](glm::vec3 at) {
+    return glm::scale(glm::translate(glm::mat4(1.0f), at), glm::vec3(features_scene::radius));
+  };
+  // Two spots on open floor in front of the balls, clear of the slab and of every shadow.
+  const glm::vec3 spots[] = {{0.0f, features_scene::radius, 2.2f}, {1.2f, features_scene::radius, 3.4f}};
+  for (const glm::vec3& p : spots) REQUIRE(near(pixel(before, where(p)), bytes(tinted)));
+
+  // The first add passes the TLAS's capacity: a larger TLAS replaces it and the descriptor follows.
+  const std::uint32_t first = r.renderer.add_instance(r.scene.ball(0), placed(spots[0]));
+  const vk::Frame one = r.frame();
+  CHECK(one.work == vk::FrameWork{.tlas_builds = 1});
+  CHECK(near(pixel(one, where(spots[0])), bytes(red)));  // through ball a's shared record: its colour
+  CHECK(count(one, red) > reds + 50);
+  // The second fits: the TLAS is rebuilt in place.
+  const std::uint32_t second = r.renderer.add_instance(r.scene.ball(0), placed(spots[1]));
+  CHECK(second == first + 1);
+  const vk::Frame two = r.frame();
+  CHECK(two.work == vk::FrameWork{.tlas_builds = 1});
+  CHECK(near(pixel(two, where(spots[1])), bytes(red)));
+  CHECK(r.renderer.instances(r.scene.ball(0)) == std::vector<std::uint32_t>{0, first, second});
+  for (std::size_t i = 1; i < 4; ++i) {  // every other ball looks as it did
+    CHECK(count(two, features_scene::colours[i]) == count(before, features_scene::colours[i]));
+  }
+
+  r.renderer.remove_instance(r.scene.ball(0), second);
+  r.renderer.remove_instance(r.scene.ball(0), first);
+  const vk::Frame back = r.frame();
+  CHECK(back.work == vk::FrameWork{.tlas_builds = 1});  // both removals in one build
+  CHECK(back.rgba == before.rgba);
+  r.renderer.remove_instance(r.scene.ball(0), 0);  // the declared one too: red is gone, its shadow with it
+  const vk::Frame none = r.frame();
+  CHECK(count(none, red) == 0);
+  CHECK(near(pixel(none, where(shadow_point(0))), bytes(tinted)));
+  CHECK(r.renderer.instances(r.scene.ball(0)).empty());
+  CHECK_THROWS_WITH_AS(r.renderer.set_visible(r.scene.ball(0), 0, true), doctest::Contains("was removed"), UsageError);
+  // Removed to none, the BLAS keeps its records: an instance can come back.
+  CHECK(r.renderer.add_instance(r.scene.ball(0), placed(features_scene::centres[0])) == second + 1);
+  CHECK(r.frame().rgba == before.rgba);
+}
+
 TEST_CASE("features a closest-hit that traces rays: the depth is derived, and a smaller declared one refused") {
   TestContext t;
   // floor.rchit calls traceRayEXT (shadow rays); depth 1 would make lavapipe die at the nested trace.

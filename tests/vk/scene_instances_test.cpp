@@ -1,5 +1,6 @@
 // vk/scene_instances.hpp: what hiding, showing, masking and moving instances ask of the TLAS, without
 // a trace (the pixels are renderer_features_test's).
+#include "features_scene.hpp"
 #include "renderer_scene.hpp"
 #include "test_context.hpp"
 
@@ -66,7 +67,7 @@ TEST_CASE("scene instances: BLAS changes and moves ask for the TLAS work they ne
   in.set_visible(s.ball(), 0, false, "test");
   const vk::AccelerationStructure rebuilt;  // empty: only its address is kept
   const PlannedBlas& ball_blas = plan.blases()[plan.geometry(s.ball()).blas];
-  in.blas_rebuilt(ball_blas, rebuilt);
+  in.blas_rebuilt(plan.geometry(s.ball()).blas, rebuilt);
   CHECK(in.take() == vk::TlasWork::build);  // a build covers the update
   for (std::uint32_t i = 0; i < ball_blas.instance_count; ++i) {
     CHECK(in.list()[ball_blas.first_instance + i].blas == &rebuilt);
@@ -81,4 +82,58 @@ TEST_CASE("scene instances: BLAS changes and moves ask for the TLAS work they ne
                        doctest::Contains("is Static"), UsageError);
   still.set_visible(fixed.ball(), 0, false, "Renderer::set_visible");
   CHECK(still.take() == vk::TlasWork::update);
+}
+
+TEST_CASE("scene instances: adds and removes are TLAS builds that keep every other instance's records and index") {
+  TestContext t;
+  features_scene::FeaturesScene s;  // each ball its own geometry with geometry-wide entries
+  const Plan plan = compile(s.table(t.ctx));
+  vk::SceneInstances in(plan, instances_of(plan));
+  const auto before = std::vector<vk::Instance>(in.list().begin(), in.list().end());
+  const PlannedBlas& ball_blas = plan.blases()[plan.geometry(s.ball(0)).blas];
+  REQUIRE(ball_blas.shared_sbt_offset != no_index);
+  const vk::AccelerationStructure blas;  // empty: only its address is kept
+  const glm::mat4 moved = glm::translate(glm::mat4(1.0f), {0.0f, 0.6f, 2.0f});
+
+  const std::uint32_t added = in.add(s.ball(0), moved, 0x3, blas, "test");
+  CHECK(added == 1);
+  CHECK(in.take() == vk::TlasWork::build);
+  REQUIRE(in.list().size() == before.size() + 1);
+  const vk::Instance& fresh = in.list().back();
+  CHECK(fresh.blas == &blas);
+  CHECK(fresh.sbt_offset == ball_blas.shared_sbt_offset);  // the geometry's shared records
+  CHECK(fresh.sbt_offset == before[plan.tlas_index(s.ball(0), 0)].sbt_offset);
+  CHECK(fresh.custom_index == before.size());  // one past every custom index so far
+  CHECK(fresh.mask == 0x3);
+  CHECK(fresh.transform.rows[2][3] == 2.0f);
+  for (std::size_t k = 0; k < before.size(); ++k) {  // nothing else moved or changed records
+    CHECK(in.list()[k].sbt_offset == before[k].sbt_offset);
+    CHECK(in.list()[k].custom_index == before[k].custom_index);
+  }
+  CHECK(in.instances(s.ball(0), "test") == std::vector<std::uint32_t>{0, 1});
+  CHECK(in.tlas_index(s.ball(0), 1, "test") == before.size());
+  in.set_visible(s.ball(0), added, false, "test");  // an added instance is like any other
+  CHECK(in.list().back().mask == 0);
+  CHECK(in.take() == vk::TlasWork::update);
+
+  // Removing the declared instance: the last entry (the added one) takes its place in the list.
+  const std::uint32_t k0 = plan.tlas_index(s.ball(0), 0);
+  in.remove(s.ball(0), 0, "test");
+  CHECK(in.take() == vk::TlasWork::build);
+  CHECK(in.list().size() == before.size());
+  CHECK(in.tlas_index(s.ball(0), 1, "test") == k0);
+  CHECK(in.list()[k0].custom_index == before.size());
+  CHECK_FALSE(in.visible(s.ball(0), 1, "test"));  // its state moved with it
+  CHECK(in.instances(s.ball(0), "test") == std::vector<std::uint32_t>{1});
+  CHECK_THROWS_WITH_AS(in.remove(s.ball(0), 0, "Renderer::remove_instance"),
+                       doctest::Contains("Renderer::remove_instance: instance 0 of geometry \"a\" was removed"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(in.set_transform(s.ball(0), 0, moved, "Renderer::set_transform"), doctest::Contains("was removed"),
+                       UsageError);
+  CHECK(in.add(s.ball(0), moved, 0xFF, blas, "test") == 2);  // indices are never reused
+  CHECK(in.list().back().custom_index == before.size() + 1);
+  const vk::AccelerationStructure rebuilt;
+  in.blas_rebuilt(plan.geometry(s.ball(0)).blas, rebuilt);  // reaches the added instances too
+  CHECK(in.list()[in.tlas_index(s.ball(0), 1, "test")].blas == &rebuilt);
+  CHECK(in.list()[in.tlas_index(s.ball(0), 2, "test")].blas == &rebuilt);
 }

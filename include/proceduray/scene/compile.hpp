@@ -146,13 +146,15 @@ struct PlanBuilder {
   /// Hit records: per BLAS a shared block, then one block per instance with its own entries.
   void hit_records() {
     std::vector<SbtRecord>& hit = out.m_records[2];
-    for (const PlannedBlas& b : out.m_blases) {
+    for (PlannedBlas& b : out.m_blases) {
       const std::uint32_t first = b.first_instance;
       bool any_shared = false;
       for (std::uint32_t i = 0; i < b.instance_count; ++i) any_shared |= specific_start[first + i] == specific_start[first + i + 1];
+      // Instances added at run time use the block too: kept when a geometry asks, even if unused now.
+      for (std::uint32_t g : b.geometries) any_shared |= s.geometries().entities()[g].desc.may_add_instances;
       const std::uint64_t shared_offset = hit.size();
       if (any_shared) {
-        block_offset(b, shared_offset);
+        b.shared_sbt_offset = block_offset(b, shared_offset);
         fill_block(b, no_index);
       }
       for (std::uint32_t i = 0; i < b.instance_count; ++i) {

@@ -98,6 +98,10 @@ struct GeometryDesc {
   std::uint8_t mask = 0xFF;                      ///< instance mask of every instance (Layers bits); default all
   std::vector<std::uint8_t> instance_masks;      ///< per-instance masks overriding `mask`; empty or one per instance
   UpdatePolicy update = UpdatePolicy::Static;    ///< what may change after the build; default Static
+  /// Keep hit records for instances added at run time (Renderer::add_instance) even when every
+  /// declared instance has entries of its own, or none is declared; they then need entries for
+  /// the whole geometry or a default hit. Instances without own entries share them anyway.
+  bool may_add_instances = false;
 
   /// A procedural geometry.
   static GeometryDesc procedural(std::vector<Aabb> aabbs, std::vector<InstanceTransform> instances = {identity_transform()}) {

@@ -80,6 +80,9 @@ struct PlannedBlas {
   std::vector<std::uint32_t> geometries;       ///< geometry indices, in geometry-index order
   std::uint32_t first_instance = 0;            ///< its first TLAS instance
   std::uint32_t instance_count = 0;            ///< how many
+  /// The hit records of instances without entries of their own and of instances added at run
+  /// time; no_index when every instance has its own and no geometry set may_add_instances.
+  std::uint32_t shared_sbt_offset = no_index;
   friend bool operator==(const PlannedBlas&, const PlannedBlas&) = default;
 };
 

@@ -107,6 +107,20 @@ class Bindings {
     return false;
   }
 
+  /// Writes a new TLAS (a larger one replaced the old) to the acceleration-structure bindings; no
+  /// submitted frame may be using the sets.
+  void write_tlas(const AccelerationStructure& tlas) {
+    for (const auto& [set, binding] : m_tlas_bindings) m_sets[set]->write(binding, tlas);
+  }
+  /// Throws UsageError naming `op` when a per-instance storage buffer was set with fewer than
+  /// `count` elements (an instance is about to be added).
+  void check_instance_count(std::uint32_t count, std::string_view op) const;
+  /// From now on per-instance storage buffers need `count` elements (instances were added); checks first.
+  void set_instance_count(std::uint32_t count, std::string_view op) {
+    check_instance_count(count, op);
+    m_instance_count = count;
+  }
+
   /// The sets, in set-number order (a gap in the numbers is an empty set).
   std::span<const VkDescriptorSet> sets() const { return m_handles; }
   /// Their layouts, for the pipeline layout.
@@ -134,6 +148,7 @@ class Bindings {
     const TypeOps* type = nullptr;
     std::unique_ptr<Buffer> buffer;
     bool per_instance = false;
+    std::size_t count = 0;  // elements given
   };
   Uniform& uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op);
   void set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes, std::string_view op);
@@ -163,6 +178,7 @@ class Bindings {
   std::vector<Uniform> m_uniforms;
   std::vector<Storage> m_storage;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_images;  // (set, binding) of storage images
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> m_tlas_bindings;  // (set, binding) of the TLAS
   PushConstantBlock m_push_block;
   std::uint32_t m_push_size = 0;
   std::vector<std::byte> m_push;
@@ -206,7 +222,10 @@ PROCEDURAY_DECL Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc
   }
   for (const proceduray::Binding& b : desc->bindings) {
     switch (b.kind) {
-      case BindingKind::acceleration_structure: m_sets[b.set]->write(b.binding, tlas); break;
+      case BindingKind::acceleration_structure:
+        m_sets[b.set]->write(b.binding, tlas);
+        m_tlas_bindings.emplace_back(b.set, b.binding);
+        break;
       case BindingKind::storage_image: m_images.emplace_back(b.set, b.binding); break;
       case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false, 0}); break;
       case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr, b.per_instance}); break;
@@ -256,10 +275,21 @@ PROCEDURAY_DECL void Bindings::set_storage_bytes(const proceduray::Binding& slot
       m_sets[s.set]->write(s.binding, *s.buffer);
     }
     s.buffer->write(bytes);
+    s.count = count;
     return;
   }
   throw UsageError(std::string(op) + ": " + where(slot) + " is not a storage buffer of the global signature; "
                    "declare it there (a StorageSlot converts to its Binding)");
+}
+
+PROCEDURAY_DECL void Bindings::check_instance_count(std::uint32_t count, std::string_view op) const {
+  for (const Storage& s : m_storage) {
+    if (!s.per_instance || !s.buffer || s.count >= count) continue;
+    throw UsageError(std::string(op) + ": per-instance storage buffer at set " + std::to_string(s.set) + " binding " +
+                     std::to_string(s.binding) + " holds " + std::to_string(s.count) + " elements, and the new instance's "
+                     "custom index is " + std::to_string(count - 1) + " (it would read past the end); call set_storage "
+                     "with at least " + std::to_string(count) + " elements first");
+  }
 }
 
 PROCEDURAY_DECL void Bindings::set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,

@@ -9,6 +9,8 @@
 //   renderer.set_push(knobs_slot, knobs);             // typed push constants, recorded with the next trace
 //   renderer.set_transform(pacman, 1, moved);         // DynamicTransform: TLAS refit, no BLAS work
 //   renderer.set_visible(pacman, 0, false);           // hidden until shown again: a TLAS update
+//   std::uint32_t i = renderer.add_instance(pacman, placed);   // any policy: a TLAS build
+//   renderer.remove_instance(pacman, i);               // a TLAS build; the index is not reused
 //   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
@@ -72,6 +74,7 @@ class Renderer {
   Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options = {});
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
+  ~Renderer();  // out of line: a program compiles the parts' destruction once
 
   /// Sets a uniform's value; it is uploaded before the next trace. Other types do not compile.
   template <class T>
@@ -113,6 +116,21 @@ class Renderer {
   void set_visible(GeometryId geometry, std::uint32_t instance, bool visible) {
     m_ring->wait_all();
     m_structures->set_visible(geometry, instance, visible, "Renderer::set_visible");
+  }
+  /// Adds an instance of `geometry` (of its BLAS: every geometry sharing it), any policy, with the
+  /// hit records of the geometry's instances without entries of their own; no other instance's SBT
+  /// offset changes. A TLAS build before the next trace. Returns its instance index (indices are
+  /// never reused); its gl_InstanceCustomIndexEXT is one past every custom index so far, so a
+  /// per-instance storage buffer must hold that many elements first (else UsageError).
+  std::uint32_t add_instance(GeometryId geometry, const glm::mat4& object_to_world, std::uint32_t mask = 0xFF);
+  /// Removes one instance: a TLAS build. Throws UsageError for one removed already.
+  void remove_instance(GeometryId geometry, std::uint32_t instance) {
+    m_ring->wait_all();
+    m_structures->remove_instance(geometry, instance, "Renderer::remove_instance");
+  }
+  /// The instance indices `geometry` has now, in order.
+  std::vector<std::uint32_t> instances(GeometryId geometry) const {
+    return m_structures->instances().instances(geometry, "Renderer::instances");
   }
   /// Replaces a DynamicGeometry procedural geometry's boxes: the same count refits its BLAS before
   /// the next trace, another count rebuilds it. Throws for other policies, triangles or bad boxes.
@@ -318,70 +336,18 @@ PROCEDURAY_DECL FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32
   return {m_ring->submit(slot)};
 }
 
-PROCEDURAY_DECL std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(FrameTicket frame, std::string_view op) {
-  FrameSlot& slot = m_ring->slot_of(frame.number, op);
-  m_ring->wait(slot);
-  SlotFrame& info = m_slot_frames[slot.index];
-  if (!info.timed) {
-    info.frame.trace_ms = m_ctx->timestamp_period_ns() > 0 ? m_ring->trace_ms(slot) : ms_since(info.submitted);
-    info.timed = true;
-  }
-  return {&slot, &info};
-}
+PROCEDURAY_DECL Renderer::~Renderer() = default;
 
-PROCEDURAY_DECL Frame Renderer::wait(FrameTicket frame) { return finished(frame, "Renderer::wait").second->frame; }
-
-PROCEDURAY_DECL std::span<const std::uint8_t> Renderer::rgba(FrameTicket frame) {
-  auto [slot, info] = finished(frame, "Renderer::rgba");
-  if (info->readback == Readback::none) {
-    throw UsageError("Renderer::rgba: frame " + std::to_string(frame.number) +
-                     " was submitted with Readback::none; submit it with Readback::rgba (the default) to read it");
-  }
-  const std::size_t bytes = std::size_t{info->frame.width} * info->frame.height * 4;
-  return {static_cast<const std::uint8_t*>(slot->readback->data()), bytes};
-}
-
-PROCEDURAY_DECL void Renderer::read_rgba(FrameTicket frame, std::span<std::uint8_t> out) {
-  const std::span<const std::uint8_t> pixels = rgba(frame);
-  if (out.size() < pixels.size()) {
-    const Frame& f = m_slot_frames[m_ring->slot_of(frame.number, "Renderer::read_rgba").index].frame;
-    throw UsageError("Renderer::read_rgba: the span holds " + std::to_string(out.size()) + " bytes but frame " +
-                     std::to_string(frame.number) + " (" + std::to_string(f.width) + "x" + std::to_string(f.height) +
-                     ") needs " + std::to_string(pixels.size()) + " (width * height * 4); give a span of at least that");
-  }
-  std::memcpy(out.data(), pixels.data(), pixels.size());
-}
-
-PROCEDURAY_DECL std::span<const std::uint8_t> Renderer::output_bytes(FrameTicket frame, Output which, std::string_view op) {
-  auto [slot, info] = finished(frame, op);
-  if (info->readback != Readback::all) {
-    throw UsageError(std::string(op) + ": frame " + std::to_string(frame.number) +
-                     " was not submitted with Readback::all; submit it so to read its outputs");
-  }
-  // The outputs follow the image, in the plan's order, each width * height pixels of its format.
-  const std::size_t pixels = std::size_t{info->frame.width} * info->frame.height;
-  std::size_t at = pixels * 4;
-  for (const PlannedOutput& p : m_plan.outputs()) {
-    const std::size_t bytes = pixels * storage_pixel_bytes(output_format(p.output));
-    if (p.output == which) return {static_cast<const std::uint8_t*>(slot->readback->data()) + at, bytes};
-    at += bytes;
-  }
-  throw UsageError(std::string(op) + ": the scene does not ask for output '" + std::string(proceduray::name(which)) +
-                   "'; add it with Scene::set_outputs");
-}
-
-PROCEDURAY_DECL Frame Renderer::render(std::uint32_t width, std::uint32_t height, bool readback) {
-  const FrameTicket ticket = submit_as(width, height, readback ? Readback::all : Readback::none, "Renderer::render");
-  Frame frame = wait(ticket);
-  if (readback) {
-    const std::span<const std::uint8_t> pixels = rgba(ticket);
-    frame.rgba.assign(pixels.begin(), pixels.end());
-    if (!m_outputs->empty()) {
-      frame.outputs = m_outputs->read(static_cast<const std::uint8_t*>(m_ring->slot_of(ticket.number, "Renderer::render")
-                                                                          .readback->data()) + pixels.size());
-    }
-  }
-  return frame;
+PROCEDURAY_DECL std::uint32_t Renderer::add_instance(GeometryId geometry, const glm::mat4& object_to_world,
+                                                     std::uint32_t mask) {
+  constexpr std::string_view op = "Renderer::add_instance";
+  m_ring->wait_all();
+  const std::uint32_t custom = m_structures->instances().next_custom_index();
+  m_bindings->check_instance_count(custom + 1, op);  // throws before any change
+  const std::uint32_t instance = m_structures->add_instance(geometry, object_to_world, mask, op);
+  m_bindings->set_instance_count(custom + 1, op);
+  if (m_structures->take_tlas_replaced()) m_bindings->write_tlas(m_structures->tlas().structure());
+  return instance;
 }
 
 PROCEDURAY_DECL const StorageImage& Renderer::image() const {
@@ -397,3 +363,5 @@ PROCEDURAY_DECL double Renderer::warm_up() {
 #endif  // PROCEDURAY_BODIES
 
 }  // namespace proceduray::vk
+
+#include <proceduray/vk/renderer_readback.hpp>  // the bodies of reading frames back

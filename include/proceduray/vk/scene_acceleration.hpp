@@ -25,11 +25,13 @@
 #include <proceduray/vk/scene_instances.hpp>
 #include <proceduray/vk/tlas.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace proceduray::vk {
@@ -62,6 +64,19 @@ class SceneAcceleration {
                    std::string_view op = "SceneAcceleration::set_visible") {
     m_instances->set_visible(geometry, instance, visible, op);
   }
+  /// Adds an instance of `geometry`'s BLAS, or removes one (SceneInstances::add, remove): a TLAS
+  /// build at the next record(). An add past the TLAS's capacity replaces it now with one of twice
+  /// the room (built and waited for; no frame may be using the old one), and take_tlas_replaced()
+  /// says so once, for the descriptor sets that hold its handle.
+  std::uint32_t add_instance(GeometryId geometry, const glm::mat4& object_to_world, std::uint32_t mask = 0xFF,
+                             std::string_view op = "SceneAcceleration::add_instance");
+  void remove_instance(GeometryId geometry, std::uint32_t instance, std::string_view op = "SceneAcceleration::remove_instance") {
+    m_instances->remove(geometry, instance, op);
+  }
+  /// True once after add_instance replaced the TLAS (its handle changed).
+  bool take_tlas_replaced() noexcept { return std::exchange(m_tlas_replaced, false); }
+  /// The instances, their indices and TLAS places.
+  const SceneInstances& instances() const noexcept { return *m_instances; }
   /// New boxes for a DynamicGeometry procedural geometry: refit for the same count, else rebuild.
   void set_aabbs(GeometryId geometry, std::span<const Aabb> boxes, std::string_view op = "SceneAcceleration::set_aabbs");
   /// New positions (same count) for a DynamicGeometry triangle geometry: refit.
@@ -75,7 +90,7 @@ class SceneAcceleration {
   /// for ray tracing. Returns the work; FrameWork{} when nothing changed.
   FrameWork record(VkCommandBuffer cmd);
 
-  /// The TLAS (its handle stays the same across updates and rebuilds).
+  /// The TLAS (its handle stays the same across updates and rebuilds, not across a replacement).
   const Tlas& tlas() const noexcept { return m_tlas; }
   /// Bytes of every BLAS (Static ones after compaction).
   VkDeviceSize blas_bytes() const noexcept {
@@ -110,6 +125,7 @@ class SceneAcceleration {
   std::vector<BlasSlot> m_blases;  // index = planned BLAS; never reallocated (instances point into it)
   std::unique_ptr<SceneInstances> m_instances;  // its list points into m_blases
   Tlas m_tlas;
+  bool m_tlas_replaced = false;
 };
 
 // An Aabb goes to the BLAS build as it is: six floats, min then max, like VkAabbPositionsKHR.
@@ -135,6 +151,19 @@ PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const p
   m_instances = std::make_unique<SceneInstances>(*m_plan, std::move(list));
   // Always refittable, so showing and hiding instances (a mask) is an update, never a rebuild.
   m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true});
+}
+
+PROCEDURAY_DECL std::uint32_t SceneAcceleration::add_instance(GeometryId geometry, const glm::mat4& object_to_world,
+                                                             std::uint32_t mask, std::string_view op) {
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);
+  const std::uint32_t instance = m_instances->add(geometry, object_to_world, mask, m_blases[g.blas].get(), op);
+  const auto count = static_cast<std::uint32_t>(m_instances->list().size());
+  if (count > m_tlas.capacity()) {
+    // Twice the room, so a run of adds replaces the TLAS a logarithmic number of times.
+    m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true}, std::max<std::uint32_t>(16, 2 * count));
+    m_tlas_replaced = true;
+  }
+  return instance;
 }
 
 PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::Scene& scene, const BuildOptions& options) {
@@ -291,7 +320,7 @@ PROCEDURAY_DECL std::vector<std::uint32_t> SceneAcceleration::prepare_blases(Fra
       // A new structure (the old one is freed whole, handle before memory); its instances point at it.
       slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes))
                                 : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes));
-      m_instances->blas_rebuilt(m_plan->blases()[b], slot.dynamic->structure());
+      m_instances->blas_rebuilt(b, slot.dynamic->structure());
       ++work.blas_builds;
     }
   }

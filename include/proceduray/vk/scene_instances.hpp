@@ -1,13 +1,18 @@
 // The instances of a compiled scene's TLAS and what their changes need: moves (DynamicTransform
-// geometry) and visibility are a TLAS update, a mask change is a TLAS build. SceneAcceleration
-// owns one; take() tells it what to record before the next trace.
+// geometry) and visibility are a TLAS update; a mask change, an added or a removed instance is a
+// TLAS build. SceneAcceleration owns one; take() tells it what to record before the next trace.
 //
 //   proceduray::vk::SceneInstances instances(plan, list);      // the plan's instances, in TLAS order
 //   instances.set_visible(ball, 1, false, "my_call");           // hidden: mask 0, the TLAS updated
 //   instances.set_transform(ball, 0, moved, "my_call");         // DynamicTransform geometry only
+//   std::uint32_t i = instances.add(ball, moved, 0xFF, blas, "my_call");   // instance index 2: a build
+//   instances.remove(ball, 0, "my_call");                        // index 0 is never used again
 //   if (instances.take() == proceduray::vk::TlasWork::update) tlas.record_update(ctx, cmd, instances.list());
 //
-// `op` names the call the user made, for messages. `plan` must outlive it.
+// An instance keeps its index (a geometry's instances: GeometryDesc::instances, then the added
+// ones) and its custom index (gl_InstanceCustomIndexEXT) for life; its place in the TLAS list
+// (gl_InstanceID) may change when another is removed. `op` names the user's call, for messages.
+// `plan` must outlive it.
 #pragma once
 
 #include <proceduray/config.hpp>
@@ -32,35 +37,47 @@ enum class TlasWork { none, update, build };
 class SceneInstances {
  public:
   /// `list`: the plan's instances in TLAS order (Plan::instances), each pointing at its BLAS.
-  SceneInstances(const proceduray::Plan& plan, std::vector<Instance> list)
-      : m_plan(&plan), m_list(std::move(list)), m_hidden(m_list.size(), false) {
-    for (const Instance& i : m_list) m_masks.push_back(i.mask);
-  }
+  SceneInstances(const proceduray::Plan& plan, std::vector<Instance> list);
 
   /// Moves one instance of a DynamicTransform geometry: a TLAS update. Throws for a Static geometry,
-  /// a bad index, or a matrix that is not finite and affine.
+  /// a bad or removed index, or a matrix that is not finite and affine.
   void set_transform(GeometryId geometry, std::uint32_t instance, const glm::mat4& object_to_world, std::string_view op);
-  /// Moves every instance (one matrix each, in order): one TLAS update; nothing moves if one is bad.
+  /// Moves every instance there is (instances(geometry) order, one matrix each): one TLAS update;
+  /// nothing moves if one is bad.
   void set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world, std::string_view op);
   /// Changes one instance's mask, any policy: a TLAS build. A hidden instance keeps it for when it is shown.
   void set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask, std::string_view op);
   /// Hides (mask 0: no ray's cull mask meets it) or shows one instance, any policy: a TLAS update,
   /// no rebuild. Setting what it already is does nothing.
   void set_visible(GeometryId geometry, std::uint32_t instance, bool visible, std::string_view op);
-  /// Whether one instance is shown; throws for a bad index.
+  /// Whether one instance is shown; throws for a bad or removed index.
   bool visible(GeometryId geometry, std::uint32_t instance, std::string_view op) const {
-    return !m_hidden[m_plan->tlas_index(geometry, instance, op)];
+    return !m_hidden[tlas_index(geometry, instance, op)];
   }
+
+  /// Adds an instance of the BLAS `geometry` lives in (every geometry of a shared BLAS gets it),
+  /// using the BLAS's shared hit records, so no other instance's SBT offset changes: a TLAS build.
+  /// `blas` is that BLAS's structure. Returns the new instance index. Throws UsageError when the
+  /// BLAS has no shared records (every instance has entries of its own), InvalidGeometryError for
+  /// a bad matrix or a mask over 0xFF.
+  std::uint32_t add(GeometryId geometry, const glm::mat4& object_to_world, std::uint32_t mask,
+                    const AccelerationStructure& blas, std::string_view op);
+  /// Removes one instance: a TLAS build. Its index is never reused; removing it again throws UsageError.
+  void remove(GeometryId geometry, std::uint32_t instance, std::string_view op);
+  /// The instance indices `geometry` has now, in order (removed ones left out).
+  std::vector<std::uint32_t> instances(GeometryId geometry, std::string_view op) const;
+  /// The TLAS list index (gl_InstanceID) of one instance; throws for a bad or removed index.
+  std::uint32_t tlas_index(GeometryId geometry, std::uint32_t instance, std::string_view op) const;
+  /// The custom index (gl_InstanceCustomIndexEXT) the next add() gives: one past every index so far,
+  /// so per-instance storage buffers need this many elements then.
+  std::uint32_t next_custom_index() const noexcept { return m_next_custom; }
 
   /// The instances as the TLAS takes them (hidden ones with mask 0).
   std::span<const Instance> list() const noexcept { return m_list; }
   /// A BLAS was refit: the TLAS holds its old bounds and needs an update.
   void blas_refit() noexcept { m_update = true; }
-  /// A BLAS was rebuilt: its instances point at `structure` and the TLAS is built again.
-  void blas_rebuilt(const PlannedBlas& blas, const AccelerationStructure& structure) {
-    for (std::uint32_t k = 0; k < blas.instance_count; ++k) m_list[blas.first_instance + k].blas = &structure;
-    m_rebuild = true;
-  }
+  /// BLAS `blas` (Plan::blases index) was rebuilt: its instances point at `structure`, the TLAS is built again.
+  void blas_rebuilt(std::uint32_t blas, const AccelerationStructure& structure);
   /// What the changes since the last call need (a build covers an update), and forgets them.
   TlasWork take() noexcept {
     const TlasWork work = m_rebuild ? TlasWork::build : m_update ? TlasWork::update : TlasWork::none;
@@ -69,22 +86,126 @@ class SceneInstances {
   }
 
  private:
+  static constexpr std::uint32_t removed = 0xFFFF'FFFFu;
+  /// Which (BLAS, instance index) a TLAS list entry is.
+  struct Owner {
+    std::uint32_t blas = 0;
+    std::uint32_t instance = 0;
+  };
   void check_movable(GeometryId geometry, std::string_view operation) const;
   /// The TLAS index of (geometry, instance) of a movable geometry; throws InvalidGeometryError or UsageError.
   std::uint32_t movable_instance(GeometryId geometry, std::uint32_t instance, std::string_view op) const;
   /// InvalidGeometryError naming `op`, the geometry and the instance for a non-finite or singular matrix.
   void check_transform(GeometryId geometry, std::uint32_t instance, const InstanceTransform& t, std::string_view op) const;
   void check_affine(GeometryId geometry, std::uint32_t instance, const glm::mat4& m, std::string_view op) const;
+  void check_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask, std::string_view op) const;
 
   const proceduray::Plan* m_plan;
   std::vector<Instance> m_list;       // index = TLAS index
-  std::vector<std::uint8_t> m_masks;  // as set: a hidden instance's mask waits here
-  std::vector<bool> m_hidden;
+  std::vector<Owner> m_owners;        // index = TLAS index
+  std::vector<std::uint8_t> m_masks;  // index = TLAS index; as set: a hidden instance's mask waits here
+  std::vector<bool> m_hidden;         // index = TLAS index
+  std::vector<std::vector<std::uint32_t>> m_slots;  // [BLAS][instance index] -> TLAS index, or `removed`
+  std::uint32_t m_next_custom = 0;
   bool m_update = false;
   bool m_rebuild = false;
 };
 
 #if PROCEDURAY_BODIES
+
+PROCEDURAY_DECL SceneInstances::SceneInstances(const proceduray::Plan& plan, std::vector<Instance> list)
+    : m_plan(&plan), m_list(std::move(list)), m_hidden(m_list.size(), false),
+      m_slots(plan.blases().size()), m_next_custom(static_cast<std::uint32_t>(m_list.size())) {
+  const auto planned = plan.instances();
+  for (std::uint32_t k = 0; k < m_list.size(); ++k) {
+    m_masks.push_back(m_list[k].mask);
+    const std::uint32_t blas = k < planned.size() ? planned[k].blas : 0;
+    m_owners.push_back({blas, static_cast<std::uint32_t>(m_slots[blas].size())});
+    m_slots[blas].push_back(k);
+  }
+}
+
+PROCEDURAY_DECL std::uint32_t SceneInstances::tlas_index(GeometryId geometry, std::uint32_t instance,
+                                                         std::string_view op) const {
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);  // UnknownIdError for another scene's id
+  const std::vector<std::uint32_t>& slots = m_slots[g.blas];
+  if (instance >= slots.size()) {
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name + "\" has " + std::to_string(slots.size()) +
+                               " instances, no instance " + std::to_string(instance) + "; pass an instance index below " +
+                               std::to_string(slots.size()) + " (GeometryDesc::instances, then the added ones)");
+  }
+  if (slots[instance] == removed) {
+    throw UsageError(std::string(op) + ": instance " + std::to_string(instance) + " of geometry \"" + g.name +
+                     "\" was removed (remove_instance), and an index is never reused; use one of its instances "
+                     "(instances(geometry)), or add_instance for a new one");
+  }
+  return slots[instance];
+}
+
+PROCEDURAY_DECL std::vector<std::uint32_t> SceneInstances::instances(GeometryId geometry, std::string_view op) const {
+  const std::vector<std::uint32_t>& slots = m_slots[m_plan->geometry(geometry, op).blas];
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t i = 0; i < slots.size(); ++i) {
+    if (slots[i] != removed) out.push_back(i);
+  }
+  return out;
+}
+
+PROCEDURAY_DECL std::uint32_t SceneInstances::add(GeometryId geometry, const glm::mat4& object_to_world, std::uint32_t mask,
+                                                  const AccelerationStructure& blas, std::string_view op) {
+  const PlannedGeometry& g = m_plan->geometry(geometry, op);
+  const PlannedBlas& planned = m_plan->blases()[g.blas];
+  std::vector<std::uint32_t>& slots = m_slots[g.blas];
+  const auto instance = static_cast<std::uint32_t>(slots.size());
+  if (planned.shared_sbt_offset == no_index) {
+    throw UsageError(std::string(op) + ": geometry \"" + g.name + "\" has no hit records a new instance could use: " +
+                     (planned.instance_count == 0 ? "it declares no instances" : "every instance has entries of its own") +
+                     "; set GeometryDesc::may_add_instances = true and give the geometry entries of its own "
+                     "(Scene::add_hit without an instance) or a default hit per ray");
+  }
+  check_mask(geometry, instance, mask, op);
+  check_affine(geometry, instance, object_to_world, op);
+  const InstanceTransform rows = instance_transform(object_to_world);
+  check_transform(geometry, instance, rows, op);
+  if (!fits_instance_field(m_next_custom)) {
+    throw DeviceLimitError(std::string(op) + ": instance custom index " + std::to_string(m_next_custom) +
+                           " would pass the 24 bits of instanceCustomIndex; the scene has added too many instances");
+  }
+  const auto k = static_cast<std::uint32_t>(m_list.size());
+  m_list.push_back({.blas = &blas, .transform = rows, .custom_index = m_next_custom++,
+                    .sbt_offset = planned.shared_sbt_offset, .mask = static_cast<std::uint8_t>(mask)});
+  m_owners.push_back({g.blas, instance});
+  m_masks.push_back(static_cast<std::uint8_t>(mask));
+  m_hidden.push_back(false);
+  slots.push_back(k);
+  m_rebuild = true;
+  return instance;
+}
+
+PROCEDURAY_DECL void SceneInstances::remove(GeometryId geometry, std::uint32_t instance, std::string_view op) {
+  const std::uint32_t k = tlas_index(geometry, instance, op);  // throws for a bad or removed index
+  const auto last = static_cast<std::uint32_t>(m_list.size() - 1);
+  // The last entry takes the hole, so the list stays dense; only its gl_InstanceID changes.
+  m_list[k] = m_list[last];
+  m_owners[k] = m_owners[last];
+  m_masks[k] = m_masks[last];
+  m_hidden[k] = m_hidden[last];
+  m_slots[m_owners[k].blas][m_owners[k].instance] = k;
+  m_list.pop_back();
+  m_owners.pop_back();
+  m_masks.pop_back();
+  m_hidden.pop_back();
+  m_slots[m_plan->geometry(geometry).blas][instance] = removed;
+  m_rebuild = true;
+}
+
+PROCEDURAY_DECL void SceneInstances::blas_rebuilt(std::uint32_t blas, const AccelerationStructure& structure) {
+  for (std::uint32_t k : m_slots[blas]) {
+    if (k != removed) m_list[k].blas = &structure;
+  }
+  m_rebuild = true;
+}
+
 
 PROCEDURAY_DECL void SceneInstances::check_movable(GeometryId geometry, std::string_view operation) const {
   const PlannedGeometry& g = m_plan->geometry(geometry, operation);
@@ -97,7 +218,7 @@ PROCEDURAY_DECL void SceneInstances::check_movable(GeometryId geometry, std::str
 
 PROCEDURAY_DECL std::uint32_t SceneInstances::movable_instance(GeometryId geometry, std::uint32_t instance,
                                                                std::string_view op) const {
-  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
+  const std::uint32_t k = tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
   check_movable(geometry, op);
   return k;
 }
@@ -123,33 +244,38 @@ PROCEDURAY_DECL void SceneInstances::check_transform(GeometryId geometry, std::u
 PROCEDURAY_DECL void SceneInstances::set_transforms(GeometryId geometry, std::span<const glm::mat4> object_to_world,
                                                     std::string_view op) {
   check_movable(geometry, op);
-  const PlannedGeometry& g = m_plan->geometry(geometry, op);
-  const PlannedBlas& blas = m_plan->blases()[g.blas];
-  if (object_to_world.size() != blas.instance_count) {
-    throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name + "\" has " +
-                               std::to_string(blas.instance_count) + " instances, " +
-                               std::to_string(object_to_world.size()) + " transforms given; give one per instance");
+  const std::vector<std::uint32_t> live = instances(geometry, op);
+  if (object_to_world.size() != live.size()) {
+    throw InvalidGeometryError(std::string(op) + ": geometry \"" + m_plan->geometry(geometry).name + "\" has " +
+                               std::to_string(live.size()) + " instances, " + std::to_string(object_to_world.size()) +
+                               " transforms given; give one per instance (SceneInstances::instances order)");
   }
-  // A BLAS's instances are consecutive in the TLAS. All are checked (and converted, once, into Vulkan's
-  // rows) before any moves, so a bad matrix leaves every instance where it was.
-  std::vector<InstanceTransform> rows(blas.instance_count);
-  for (std::uint32_t i = 0; i < blas.instance_count; ++i) {
-    check_affine(geometry, i, object_to_world[i], op);
+  // All are checked (and converted, once, into Vulkan's rows) before any moves, so a bad matrix
+  // leaves every instance where it was.
+  std::vector<InstanceTransform> rows(live.size());
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    check_affine(geometry, live[i], object_to_world[i], op);
     rows[i] = instance_transform(object_to_world[i]);
-    check_transform(geometry, i, rows[i], op);
+    check_transform(geometry, live[i], rows[i], op);
   }
-  for (std::uint32_t i = 0; i < blas.instance_count; ++i) m_list[blas.first_instance + i].transform = rows[i];
+  const std::vector<std::uint32_t>& slots = m_slots[m_plan->geometry(geometry).blas];
+  for (std::size_t i = 0; i < live.size(); ++i) m_list[slots[live[i]]].transform = rows[i];
   m_update = true;
 }
 
-PROCEDURAY_DECL void SceneInstances::set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
-                                              std::string_view op) {
-  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);
+PROCEDURAY_DECL void SceneInstances::check_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
+                                                std::string_view op) const {
   if (mask > 0xFF) {  // an int would otherwise lose its high bits and could become 0: the instance vanishes
     throw UsageError(std::string(op) + ": mask 0x" + proceduray::detail::hex(mask) + " of geometry \"" +
                      m_plan->geometry(geometry).name + "\" instance " + std::to_string(instance) +
                      " has more than Vulkan's 8 instance-mask bits; use layer bits (Scene::layer_mask), 0..0xFF");
   }
+}
+
+PROCEDURAY_DECL void SceneInstances::set_mask(GeometryId geometry, std::uint32_t instance, std::uint32_t mask,
+                                              std::string_view op) {
+  const std::uint32_t k = tlas_index(geometry, instance, op);
+  check_mask(geometry, instance, mask, op);
   if (m_masks[k] == mask) return;
   m_masks[k] = static_cast<std::uint8_t>(mask);
   if (m_hidden[k]) return;  // shown with it later
@@ -159,7 +285,7 @@ PROCEDURAY_DECL void SceneInstances::set_mask(GeometryId geometry, std::uint32_t
 
 PROCEDURAY_DECL void SceneInstances::set_visible(GeometryId geometry, std::uint32_t instance, bool visible,
                                                  std::string_view op) {
-  const std::uint32_t k = m_plan->tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
+  const std::uint32_t k = tlas_index(geometry, instance, op);  // InvalidGeometryError for a bad index
   if (m_hidden[k] == !visible) return;
   m_hidden[k] = !visible;
   // Mask 0 meets no ray's cull mask; the instance keeps its place, so the TLAS is only updated.

@@ -71,10 +71,14 @@ PROCEDURAY_DECL void pack_instances(std::span<const Instance> instances, std::sp
 class Tlas {
  public:
   Tlas() = default;
-  /// Builds over `instances` (an empty list gives a TLAS that every ray misses) and waits.
-  Tlas(const Context& ctx, std::span<const Instance> instances, const BuildOptions& options = {})
-      : m_count(static_cast<std::uint32_t>(instances.size())), m_flags(detail::build_flags(options, false)),
-        m_instances(ctx, std::max<VkDeviceSize>(1, instances.size()) * sizeof(VkAccelerationStructureInstanceKHR),
+  /// Builds over `instances` (an empty list gives a TLAS that every ray misses) and waits. Sized
+  /// for `capacity` instances (at least the list's), so record_build may later take up to that many.
+  Tlas(const Context& ctx, std::span<const Instance> instances, const BuildOptions& options = {},
+       std::uint32_t capacity = 0)
+      : m_count(static_cast<std::uint32_t>(instances.size())),
+        m_capacity(std::max(capacity, static_cast<std::uint32_t>(instances.size()))),
+        m_flags(detail::build_flags(options, false)),
+        m_instances(ctx, std::max<VkDeviceSize>(1, m_capacity) * sizeof(VkAccelerationStructureInstanceKHR),
                     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
     write(instances, "Tlas");
@@ -83,7 +87,9 @@ class Tlas {
     m_geometry.geometry.instances = make<VkAccelerationStructureGeometryInstancesDataKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
     m_geometry.geometry.instances.data.deviceAddress = m_instances.address();
-    const auto sizes = detail::build_sizes(ctx, command(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR));
+    detail::BuildCommand sizing = command(VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
+    sizing.counts = {&m_capacity, 1};
+    const auto sizes = detail::build_sizes(ctx, sizing);
     m_structure = AccelerationStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, sizes.accelerationStructureSize);
     // Kept for refits: an update needs scratch of updateScratchSize, a build of buildScratchSize.
     m_scratch = detail::Scratch(ctx, std::max(sizes.buildScratchSize, sizes.updateScratchSize));
@@ -93,6 +99,8 @@ class Tlas {
   const AccelerationStructure& structure() const noexcept { return m_structure; }
   VkAccelerationStructureKHR get() const noexcept { return m_structure.get(); }
   std::uint32_t instance_count() const noexcept { return m_count; }
+  /// The most instances record_build takes without a new Tlas.
+  std::uint32_t capacity() const noexcept { return m_capacity; }
   bool updatable() const noexcept { return (m_flags & VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR) != 0; }
 
   /// Refits for new transforms (same instances, same BLASes): records into `cmd` with a barrier for tracing.
@@ -104,19 +112,20 @@ class Tlas {
     if (instances.size() != m_count) {
       throw UsageError("Tlas::update: " + std::to_string(instances.size()) + " instances given, the TLAS has " +
                        std::to_string(m_count) + "; an update may move instances, not add or remove them "
-                       "(build a new Tlas for that)");
+                       "(record_build does, up to capacity())");
     }
     write(instances, "Tlas::update");
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
   }
-  /// Rebuilds in place for instances whose BLASes were replaced (same count): records into `cmd`.
+  /// Rebuilds in place (the handle stays) over up to capacity() instances: BLASes replaced, masks
+  /// changed, instances added or removed. Records into `cmd`.
   void record_build(const Context& ctx, VkCommandBuffer cmd, std::span<const Instance> instances) {
-    if (instances.size() != m_count) {
-      throw UsageError("Tlas::record_build: " + std::to_string(instances.size()) +
-                       " instances given, the TLAS has " + std::to_string(m_count) +
-                       "; build a new Tlas to add or remove instances");
+    if (instances.size() > m_capacity) {
+      throw UsageError("Tlas::record_build: " + std::to_string(instances.size()) + " instances given, the TLAS has " +
+                       "room for " + std::to_string(m_capacity) + "; build a new Tlas with a larger capacity");
     }
     write(instances, "Tlas::record_build");
+    m_count = static_cast<std::uint32_t>(instances.size());
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR);
   }
   /// Refits and waits.
@@ -141,6 +150,7 @@ class Tlas {
   }
 
   std::uint32_t m_count = 0;
+  std::uint32_t m_capacity = 0;
   VkBuildAccelerationStructureFlagsKHR m_flags = 0;
   Buffer m_instances;
   AccelerationStructure m_structure;
