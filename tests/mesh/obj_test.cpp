@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -95,6 +96,30 @@ TEST_CASE("mesh: an OBJ cube with a normal per face has 24 vertices and the file
   const proceduray::TriangleMesh tri = m.triangles();
   CHECK(tri.vertices == m.positions);
   CHECK(tri.indices == m.indices);
+}
+
+TEST_CASE("mesh: vertex_data gives one ObjVertex per vertex, for a MeshRef to read") {
+  const proceduray::ObjMesh m = proceduray::parse_obj(cube_with_normals, "cube");
+  const proceduray::VertexData d = m.vertex_data();
+  CHECK(d.type == &proceduray::type_ops<proceduray::ObjVertex>);
+  REQUIRE(d.count == m.positions.size());
+  REQUIRE(d.bytes.size() == d.count * sizeof(proceduray::ObjVertex));
+  for (std::size_t i = 0; i < d.count; ++i) {
+    proceduray::ObjVertex v;
+    std::memcpy(&v, d.bytes.data() + i * sizeof(v), sizeof(v));
+    CHECK(v.position == m.positions[i]);
+    CHECK(v.normal == m.normals[i]);
+    CHECK(v.uv == m.uvs[i]);
+  }
+  // Without texture coordinates the uv member is zero, not garbage.
+  const proceduray::ObjMesh bare = proceduray::parse_obj(cube_positions + "f 1 2 3\n", "triangle");
+  const proceduray::VertexData b = bare.vertex_data();
+  proceduray::ObjVertex first;
+  std::memcpy(&first, b.bytes.data(), sizeof(first));
+  CHECK(first.uv == glm::vec2(0.0f));
+  proceduray::GeometryDesc desc = proceduray::GeometryDesc::triangles(m.triangles());
+  desc.vertex_data = d;
+  CHECK_NOTHROW(proceduray::validate(desc, "cube", "test"));  // one per position
 }
 
 TEST_CASE("mesh: an OBJ without normals gets smooth angle-weighted ones, shared across its faces") {

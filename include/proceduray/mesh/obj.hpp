@@ -7,6 +7,8 @@
 //   mesh.normals[i];          // unit length, one per vertex (computed when the file has none)
 //   if (mesh.has_uvs()) mesh.uvs[i];
 //   proceduray::ObjMesh quad = proceduray::parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "quad");
+//   proceduray::GeometryDesc smooth = proceduray::GeometryDesc::triangles(mesh.triangles());
+//   smooth.vertex_data = mesh.vertex_data();   // ObjVertex per vertex: MeshRef<ObjVertex> in its records
 //
 // A vertex is one distinct (position, normal, texture coordinate) triple of the file, so a cube
 // with a normal per face has 24 vertices. Normals the file lacks (any corner without `vn`) are
@@ -19,6 +21,8 @@
 #include <proceduray/config.hpp>
 
 #include <proceduray/scene/geometry.hpp>
+#include <proceduray/scene/vertex_data.hpp>
+#include <proceduray/shader/field_list.hpp>
 
 #include <glm/glm.hpp>
 
@@ -28,6 +32,14 @@
 #include <vector>
 
 namespace proceduray {
+
+/// One vertex of an ObjMesh as hit shaders read it (GLSL struct ObjVertex, through MeshRef<ObjVertex>).
+struct ObjVertex {
+  glm::vec3 position;
+  glm::vec3 normal;  ///< unit length
+  glm::vec2 uv;      ///< (0, 0) when the file has no texture coordinates
+};
+PROCEDURAY_STRUCT(ObjVertex, scalar, position, normal, uv);
 
 /// A triangle mesh with per-vertex normals and (when the file has them) texture coordinates.
 struct ObjMesh {
@@ -41,6 +53,12 @@ struct ObjMesh {
   std::uint32_t triangle_count() const noexcept { return static_cast<std::uint32_t>(indices.size() / 3); }
   /// The positions and indices, for the BLAS (GeometryDesc::triangles).
   TriangleMesh triangles() const { return {positions, indices}; }
+  /// Position, normal and texture coordinate per vertex, for GeometryDesc::vertex_data.
+  VertexData vertex_data() const {
+    std::vector<ObjVertex> v(positions.size());
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = {positions[i], normals[i], has_uvs() ? uvs[i] : glm::vec2(0.0f)};
+    return VertexData::of(std::span<const ObjVertex>(v));
+  }
 };
 
 /// Reads an OBJ file (materials are ignored); polygons are split into triangles.

@@ -63,7 +63,8 @@ struct PlanBuilder {
     for (std::uint32_t r = 0; r < rays; ++r) out.m_ray_names.push_back(s.rays().name(r));
     for (std::uint32_t g = 0; g < s.geometries().size(); ++g) {
       const Geometry& geometry = s.geometries().entities()[g];
-      out.m_geometries.push_back({s.geometries().name(g), geometry.blas, geometry.geometry_index, geometry.desc.opaque});
+      out.m_geometries.push_back({s.geometries().name(g), geometry.blas, geometry.geometry_index, geometry.desc.opaque,
+                                  geometry.desc.vertex_data.type, geometry.desc.vertex_data.count});
     }
     for (std::uint32_t b = 0; b < s.blases().size(); ++b) {
       const Blas& blas = s.blases()[b];
@@ -193,6 +194,43 @@ struct PlanBuilder {
     throw MissingEntryError(std::string(op) + ": " + std::to_string(count) +
                             " hit records have no entry (ray, geometry, instance): " + list +
                             "; add them with Scene::add_hit or declare Scene::set_default_hit for the ray");
+  }
+
+  /// Hit records whose root arguments hold a MeshRef: where it is, after checking that the
+  /// geometry has vertex data of the MeshRef's vertex type.
+  void meshes() {
+    for (SbtRecord& record : out.m_records[2]) {
+      if (record.entry == no_index || entry(record.entry).local_signature == no_index) continue;
+      const TypeOps* args = s.local_signatures().entities()[entry(record.entry).local_signature].arguments_glsl;
+      const Field* ref = nullptr;
+      for (std::size_t i = 0; args != nullptr && i < args->field_count; ++i) {
+        if (args->fields[i].type->mesh_vertex == nullptr) continue;
+        if (ref != nullptr) {
+          throw SceneError(std::string(op) + ": root arguments " + std::string(args->glsl_name) + " hold two MeshRefs (" +
+                           std::string(ref->name) + ", " + std::string(args->fields[i].name) + "); a record reads one "
+                           "geometry's mesh: keep one");
+        }
+        ref = &args->fields[i];
+      }
+      if (ref == nullptr) continue;
+      const Geometry& g = s.geometries().entities()[record.geometry];
+      const std::string where = std::string(op) + ": ray " + ray_name(record.ray) + " on geometry " +
+                                geometry_name(record.geometry) + " has root arguments " + std::string(args->glsl_name) +
+                                " whose member " + std::string(ref->name) + " reads " +
+                                std::string(ref->type->mesh_vertex->glsl_name) + " vertices, ";
+      if (g.desc.kind != GeometryKind::triangles) {
+        throw SceneError(where + "but the geometry is procedural; give its records a local signature without a MeshRef");
+      }
+      if (!g.desc.vertex_data) {
+        throw SceneError(where + "but the geometry has no vertex data; set GeometryDesc::vertex_data = "
+                         "VertexData::of(std::span<const " + std::string(ref->type->mesh_vertex->glsl_name) + ">(...))");
+      }
+      if (g.desc.vertex_data.type != ref->type->mesh_vertex) {
+        throw SceneError(where + "but the geometry's vertex data is " + std::string(g.desc.vertex_data.type->glsl_name) +
+                         "; make the two the same struct");
+      }
+      record.mesh_offset = static_cast<std::uint32_t>(ref->offset);
+    }
   }
 
   void pipeline();
@@ -339,6 +377,7 @@ PROCEDURAY_DECL Plan compile(const Scene& scene) {
   b.instances();
   b.sort_entries();
   b.hit_records();
+  b.meshes();
   b.pipeline();
   b.declarations();
   return std::move(b.out);

@@ -31,6 +31,7 @@
 #include <glm/glm.hpp>
 
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/vertex_data.hpp"
 
 namespace proceduray {
 
@@ -91,6 +92,7 @@ PROCEDURAY_DECL glm::mat4 matrix_of(const InstanceTransform& t);
 struct GeometryDesc {
   GeometryKind kind = GeometryKind::procedural;  ///< default: procedural
   TriangleMesh mesh;                             ///< triangles only
+  VertexData vertex_data;                        ///< triangles only: what hit shaders read per vertex (MeshRef)
   std::vector<Aabb> aabbs;                       ///< procedural only: one or more boxes
   std::vector<InstanceTransform> instances;      ///< TLAS instances of its BLAS; empty = inherit from the BLAS
   bool opaque = true;                            ///< VK_GEOMETRY_OPAQUE_BIT; default on (any-hit skipped)
@@ -291,8 +293,9 @@ PROCEDURAY_DECL void validate(const GeometryDesc& desc, std::string_view id, std
     if (desc.aabbs.empty()) {
       throw InvalidGeometryError(place() + " is procedural with no AABB; give it at least one box");
     }
-    if (!desc.mesh.vertices.empty() || !desc.mesh.indices.empty()) {
-      throw InvalidGeometryError(place() + " is procedural but has a triangle mesh; use kind = triangles or drop the mesh");
+    if (!desc.mesh.vertices.empty() || !desc.mesh.indices.empty() || desc.vertex_data) {
+      throw InvalidGeometryError(place() + " is procedural but has a triangle mesh or vertex data; use kind = triangles "
+                                 "or drop them");
     }
     for (std::size_t i = 0; i < desc.aabbs.size(); ++i) {
       if (!detail::valid_box(desc.aabbs[i])) validate(desc.aabbs[i], place() + " AABB " + std::to_string(i));
@@ -305,6 +308,11 @@ PROCEDURAY_DECL void validate(const GeometryDesc& desc, std::string_view id, std
     }
     if (!desc.aabbs.empty()) {
       throw InvalidGeometryError(place() + " is triangles but has AABBs; use kind = procedural or drop the AABBs");
+    }
+    if (desc.vertex_data && desc.vertex_data.count != m.vertices.size()) {
+      throw InvalidGeometryError(place() + " has vertex data for " + std::to_string(desc.vertex_data.count) +
+                                 " vertices but " + std::to_string(m.vertices.size()) + " positions; give one " +
+                                 std::string(desc.vertex_data.type->glsl_name) + " per position, in the same order");
     }
     for (std::size_t i = 0; i < m.indices.size(); ++i) {
       if (m.indices[i] >= m.vertices.size()) {

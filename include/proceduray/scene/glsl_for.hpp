@@ -15,7 +15,9 @@
 //                 image, typed uniform, or a readonly storage buffer of T[] read as `<name>.data[i]`),
 //                 and its named push constant block (`<name>.member`); the per-pixel output
 //                 helpers output_t/normal/ids/steps/flags (outputs_glsl.hpp: empty macros for
-//                 outputs not asked for), and output_hit(n) in closest-hit and any-hit stages
+//                 outputs not asked for), and output_hit(n) in closest-hit and any-hit stages;
+//                 for each MeshRef<V> in root arguments, vertex(m, i), triangle_indices(m, prim) and
+//                 interpolate(m, prim, barycentrics) (shader/mesh_ref.hpp)
 //   tracing stages (raygen, miss, closest hit: the ones Vulkan lets trace)
 //                 `rayPayloadEXT <Payload> <ray>` for every ray type, at location = ray index,
 //                 and per ray type (when the global signature names an acceleration structure)
@@ -51,6 +53,7 @@
 #include "proceduray/scene/plan.hpp"
 #include "proceduray/scene/scene.hpp"
 #include "proceduray/shader/glsl_codegen.hpp"
+#include "proceduray/shader/mesh_ref.hpp"
 
 #include <algorithm>
 #include <set>
@@ -168,6 +171,14 @@ PROCEDURAY_DECL std::string common_declarations(const Scene& scene, const Plan& 
     add_root(global->push_constants.type);
   }
   std::string out = glsl_declarations(std::span<const TypeOps* const>(roots), true);
+  std::vector<const TypeOps*> meshes;  // MeshRef members of root arguments: their accessors
+  for (const LocalSignature& l : scene.local_signatures().entities()) {
+    for (std::size_t i = 0; l.arguments_glsl != nullptr && i < l.arguments_glsl->field_count; ++i) {
+      const TypeOps* t = l.arguments_glsl->fields[i].type;
+      if (t->mesh_vertex != nullptr && std::find(meshes.begin(), meshes.end(), t) == meshes.end()) meshes.push_back(t);
+    }
+  }
+  for (const TypeOps* m : meshes) out += glsl_mesh_functions(*m);
   for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
     const std::string name = glsl_identifier(scene.rays().name(r));
     const RayDesc& desc = scene.ray(RayId<>(r)).desc;

@@ -50,7 +50,14 @@ struct SbtRecord {
   std::uint32_t ray = no_index;       ///< ray index (miss, hit)
   std::uint32_t geometry = no_index;  ///< geometry registry index (hit)
   std::uint32_t instance = no_index;  ///< BLAS instance (hit); no_index = shared by instances without own entries
+  std::uint32_t mesh_offset = no_index;  ///< hit: where in the root arguments the MeshRef is; no_index = none
   friend bool operator==(const SbtRecord&, const SbtRecord&) = default;
+};
+
+/// Device addresses of one geometry's vertex and triangle buffers: what a MeshRef holds.
+struct MeshAddresses {
+  std::uint64_t vertices = 0;   ///< VertexData's bytes
+  std::uint64_t triangles = 0;  ///< TriangleMesh::indices, three per triangle
 };
 
 /// One TLAS instance; its position in Plan::instances() is its instanceCustomIndex.
@@ -69,6 +76,8 @@ struct PlannedGeometry {
   std::uint32_t blas = 0;            ///< index into Plan::blases()
   std::uint32_t geometry_index = 0;  ///< Vulkan's geometryIndex in its BLAS
   bool opaque = true;                ///< VK_GEOMETRY_OPAQUE_BIT
+  const TypeOps* vertex_type = nullptr;  ///< GeometryDesc::vertex_data's struct; nullptr: none
+  std::uint32_t vertex_count = 0;        ///< its vertices
   friend bool operator==(const PlannedGeometry&, const PlannedGeometry&) = default;
 };
 
@@ -183,8 +192,18 @@ class Plan {
   SbtLayout layout(const DeviceLimits& limits) const;
   /// Writes every record into `buffer` (at least layout.size bytes, placed at a multiple of
   /// base_alignment): the handle of its group from `group_handles` (handle_size bytes per
-  /// planned group), then its root arguments. Padding and null handles are zeroed.
-  void write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> group_handles) const;
+  /// planned group), then its root arguments, with `meshes[geometry]` (by geometry index) in
+  /// the MeshRef of those that hold one. Padding and null handles are zeroed. Throws UsageError
+  /// when a MeshRef's geometry has no entry in `meshes`.
+  void write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> group_handles,
+             std::span<const MeshAddresses> meshes = {}) const;
+  /// True when some hit record holds a MeshRef (write needs the geometries' mesh addresses).
+  bool reads_meshes() const {
+    for (const SbtRecord& r : records(SbtRegionKind::hit)) {
+      if (r.mesh_offset != no_index) return true;
+    }
+    return false;
+  }
 
   friend bool operator==(const Plan&, const Plan&) = default;
 
@@ -268,7 +287,8 @@ PROCEDURAY_DECL SbtLayout Plan::layout(const DeviceLimits& limits) const {
   return layout_sbt(limits.sbt, counts);
 }
 
-PROCEDURAY_DECL void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> handles) const {
+PROCEDURAY_DECL void Plan::write(const SbtLayout& layout, std::span<std::byte> buffer, std::span<const std::byte> handles,
+                                 std::span<const MeshAddresses> meshes) const {
   const std::uint32_t handle = layout.properties.handle_size;
   if (buffer.size() < layout.size) {
     throw UsageError("Plan::write: buffer has " + std::to_string(buffer.size()) + " bytes, the table needs " +
@@ -290,6 +310,15 @@ PROCEDURAY_DECL void Plan::write(const SbtLayout& layout, std::span<std::byte> b
       }
       const auto data = root_arguments(list[i]);
       if (!data.empty()) std::memcpy(buffer.data() + at + handle, data.data(), data.size());
+      if (list[i].mesh_offset == no_index) continue;
+      if (list[i].geometry >= meshes.size()) {
+        throw UsageError("Plan::write: hit record " + std::to_string(i) + " reads geometry \"" +
+                         m_geometries[list[i].geometry].name + "\"'s mesh (a MeshRef), but " +
+                         std::to_string(meshes.size()) + " mesh addresses were given; pass one per geometry "
+                         "(vk::MeshBuffers::addresses)");
+      }
+      static_assert(sizeof(MeshAddresses) == 16, "a MeshRef is two 8-byte addresses");
+      std::memcpy(buffer.data() + at + handle + list[i].mesh_offset, &meshes[list[i].geometry], sizeof(MeshAddresses));
     }
   }
 }

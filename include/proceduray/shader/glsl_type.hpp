@@ -50,7 +50,11 @@ struct TypeOps {
   std::size_t cpp_size = 0;              ///< sizeof on the host
   std::size_t cpp_align = 0;             ///< alignof on the host
   std::string_view (*cpp_name)() = nullptr;  ///< the C++ type's name, for error messages
+  const TypeOps* mesh_vertex = nullptr;  ///< MeshRef<V> (shader/mesh_ref.hpp): V; nullptr for other types
 };
+
+template <class Vertex>
+struct MeshRef;
 
 namespace detail {
 
@@ -97,6 +101,11 @@ template <glm::length_t N, class T, glm::qualifier Q>
 struct IsGlm<glm::vec<N, T, Q>> : std::true_type {};
 template <glm::length_t C, glm::length_t R, class T, glm::qualifier Q>
 struct IsGlm<glm::mat<C, R, T, Q>> : std::true_type {};
+
+template <class T>
+struct IsMeshRef : std::false_type {};
+template <class V>
+struct IsMeshRef<MeshRef<V>> : std::true_type {};
 
 template <class T>
 struct IsAddress : std::false_type {};
@@ -165,6 +174,7 @@ constexpr TypeOps make_type_ops() {
     t.fields = F::fields;
     t.field_count = sizeof(F::fields) / sizeof(Field);
     t.rule = F::rule;
+    if constexpr (IsMeshRef<T>::value) t.mesh_vertex = &type_ops<typename T::vertex_type>;
   } else if constexpr (std::is_class_v<T>) {
     t.kind = TypeKind::unregistered_struct;
   }

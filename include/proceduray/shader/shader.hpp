@@ -22,3 +22,4 @@
 #include <proceduray/shader/layout.hpp>
 #include <proceduray/shader/layout_rule.hpp>
 #include <proceduray/shader/lights.hpp>
+#include <proceduray/shader/mesh_ref.hpp>

@@ -39,6 +39,7 @@
 #include <proceduray/vk/bindings.hpp>
 #include <proceduray/vk/frame.hpp>
 #include <proceduray/vk/frame_ring.hpp>
+#include <proceduray/vk/mesh_buffers.hpp>
 #include <proceduray/vk/output_images.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/scene_acceleration.hpp>
@@ -237,6 +238,7 @@ class Renderer {
   std::unique_ptr<SceneAcceleration> m_structures;
   std::unique_ptr<Bindings> m_bindings;
   std::unique_ptr<Pipeline> m_pipeline;
+  std::unique_ptr<MeshBuffers> m_meshes;  // the vertex and triangle buffers MeshRefs in m_sbt point at
   std::unique_ptr<SbtBuffer> m_sbt;
   std::unique_ptr<StorageImage> m_image;
   std::unique_ptr<OutputImages> m_outputs;
@@ -268,7 +270,8 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::Scene& 
   m_timings.pipeline_cached = pipeline.pipeline_cached;
   m_timings.spirv_cached = pipeline.spirv_cached;
   m_timings.spirv_compiled = pipeline.spirv_compiled;
-  m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout);
+  m_meshes = std::make_unique<MeshBuffers>(ctx, scene, m_plan);
+  m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
   m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
 }
 

@@ -44,8 +44,10 @@ class SbtBuffer {
   SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,
             std::span<const RecordWrite> records);
   /// A compiled scene's table as `layout` places it: its records and data, with `pipeline`'s
-  /// handles in plan.pipeline().groups order.
-  SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan, const SbtLayout& layout);
+  /// handles in plan.pipeline().groups order, and `meshes` (by geometry: MeshBuffers::addresses)
+  /// in the records that hold a MeshRef.
+  SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan, const SbtLayout& layout,
+            std::span<const MeshAddresses> meshes = {});
 
   /// Raygen, miss, hit and callable regions with device addresses, in vkCmdTraceRaysKHR's order.
   const std::array<VkStridedDeviceAddressRegionKHR, 4>& regions() const noexcept { return m_regions; }
@@ -93,7 +95,7 @@ PROCEDURAY_DECL void SbtBuffer::place(const Context& ctx) {
 }
 
 PROCEDURAY_DECL SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const proceduray::Plan& plan,
-                                     const SbtLayout& layout)
+                                     const SbtLayout& layout, std::span<const MeshAddresses> meshes)
     : m_layout(layout) {
   place(ctx);
   if (pipeline.group_count() != plan.pipeline().groups.size()) {
@@ -106,7 +108,7 @@ PROCEDURAY_DECL SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipelin
     const auto h = pipeline.group_handle(g);
     handles.insert(handles.end(), h.begin(), h.end());
   }
-  plan.write(m_layout, {static_cast<std::byte*>(m_buffer.data()) + m_start, m_layout.size}, handles);
+  plan.write(m_layout, {static_cast<std::byte*>(m_buffer.data()) + m_start, m_layout.size}, handles, meshes);
 }
 
 PROCEDURAY_DECL SbtBuffer::SbtBuffer(const Context& ctx, const Pipeline& pipeline, const SbtLayout& layout,

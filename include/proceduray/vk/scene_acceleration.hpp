@@ -287,6 +287,12 @@ PROCEDURAY_DECL void SceneAcceleration::set_mesh(GeometryId geometry, TriangleMe
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
   GeometryDesc check = GeometryDesc::triangles(mesh, {});
   validate(check, g.name, op);  // throws InvalidGeometryError naming the geometry
+  if (g.vertex_type != nullptr && mesh.vertices.size() != g.vertex_count) {
+    throw UsageError(std::string(op) + ": geometry \"" + g.name + "\" has vertex data for " + std::to_string(g.vertex_count) +
+                     " vertices (" + std::string(g.vertex_type->glsl_name) + ", uploaded once at the build), not " +
+                     std::to_string(mesh.vertices.size()) + "; keep the vertex count, or give the new mesh its own "
+                     "geometry");
+  }
   BlasSlot& slot = m_blases[g.blas];
   slot.meshes[g.geometry_index] = std::move(mesh);
   slot.changed = true;
