@@ -13,6 +13,7 @@
 
 #include <proceduray/error.hpp>
 #include <proceduray/image/png.hpp>
+#include <proceduray/image/texture_data.hpp>
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/march/sphere_set.hpp>

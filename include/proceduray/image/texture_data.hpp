@@ -1,0 +1,186 @@
+// Texture pixels on the host, before any device sees them: read from PNG, JPEG or HDR files
+// through stb_image (Debian's libstb), or made from pixels in memory; 2D or a cube of six faces;
+// with the mip chain length they get on the device.
+//
+//   proceduray::TextureData ground = proceduray::load_texture("textures/ground.png");   // RGBA8, sRGB
+//   proceduray::TextureData sky = proceduray::load_cube({"px.hdr", "nx.hdr", "py.hdr", "ny.hdr", "pz.hdr", "nz.hdr"});
+//   std::vector<std::uint8_t> grey(16 * 16, 128);
+//   proceduray::TextureData made = proceduray::TextureData::from_pixels(16, 16, 1, grey);   // 1 to 4 channels
+//   ground.mip_levels();   // 1 + floor(log2(max(width, height)))
+//
+// PNG and JPEG give 8-bit RGBA, treated as sRGB colour (TextureData::srgb; clear it for data such
+// as normal maps); HDR files give 32-bit float RGBA, linear. Grey, grey+alpha and RGB are
+// expanded to RGBA. Rows are top to bottom, as the files store them. A file that cannot be read
+// or decoded throws EnvironmentError naming it and stb's reason; other bad input (a channel count
+// outside 1..4, pixels that do not fill the size, cube faces of different or non-square sizes)
+// throws UsageError naming the value and the fix. The device's size limit is checked when the
+// texture is uploaded (vk/texture.hpp).
+#pragma once
+
+#include <proceduray/config.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace proceduray {
+
+/// How texels are stored: 8-bit unsigned normalised or 32-bit float, four channels each.
+enum class TexelFormat : std::uint32_t { rgba8, rgba32f };
+
+/// Bytes of one texel.
+constexpr std::uint32_t texel_bytes(TexelFormat f) { return f == TexelFormat::rgba8 ? 4 : 16; }
+
+/// A 2D texture or a cube map's six faces, RGBA, rows top to bottom.
+struct TextureData {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t faces = 1;                 ///< 1 (2D) or 6 (cube: +X, -X, +Y, -Y, +Z, -Z)
+  TexelFormat format = TexelFormat::rgba8;
+  bool srgb = true;                        ///< rgba8 only: colour in sRGB, read back linear by the sampler
+  std::vector<std::byte> pixels;           ///< faces * height * width texels, face after face
+
+  bool cube() const noexcept { return faces == 6; }
+  /// Bytes of one face.
+  std::size_t face_bytes() const noexcept { return std::size_t{width} * height * texel_bytes(format); }
+  /// Levels of the full mip chain: 1 + floor(log2(max(width, height))).
+  std::uint32_t mip_levels() const noexcept {
+    std::uint32_t levels = 1;
+    for (std::uint32_t size = width > height ? width : height; size > 1; size /= 2) ++levels;
+    return levels;
+  }
+
+  /// A 2D texture from 8-bit pixels of 1 (grey), 2 (grey, alpha), 3 (RGB) or 4 (RGBA) channels,
+  /// expanded to RGBA; throws UsageError for another channel count or a size the pixels do not fill.
+  static TextureData from_pixels(std::uint32_t width, std::uint32_t height, std::uint32_t channels,
+                                 std::span<const std::uint8_t> pixels);
+  /// The same from 32-bit float pixels: a linear, rgba32f texture.
+  static TextureData from_pixels(std::uint32_t width, std::uint32_t height, std::uint32_t channels,
+                                 std::span<const float> pixels);
+};
+
+/// Reads a PNG, JPEG (rgba8, sRGB) or Radiance HDR (rgba32f) file; throws EnvironmentError.
+PROCEDURAY_DECL TextureData load_texture(const std::filesystem::path& path);
+/// Makes a cube map of six square 2D textures of one size and format, in +X, -X, +Y, -Y, +Z, -Z order.
+PROCEDURAY_DECL TextureData make_cube(std::span<const TextureData> faces);
+/// Reads six files (+X, -X, +Y, -Y, +Z, -Z) into a cube map.
+PROCEDURAY_DECL TextureData load_cube(const std::array<std::filesystem::path, 6>& paths);
+
+}  // namespace proceduray
+
+#if PROCEDURAY_BODIES
+
+#include <proceduray/error.hpp>
+
+#include <stb_image.h>
+
+#include <cstring>
+#include <memory>
+
+namespace proceduray {
+namespace detail {
+
+/// Channels 1..4 of `count` texels of T into RGBA: grey fills RGB, a missing alpha is `one`.
+template <class T>
+std::vector<std::byte> expand_rgba(std::span<const T> in, std::uint32_t channels, std::size_t count, T one) {
+  std::vector<std::byte> out(count * 4 * sizeof(T));
+  T* o = reinterpret_cast<T*>(out.data());
+  for (std::size_t i = 0; i < count; ++i) {
+    const T* p = in.data() + i * channels;
+    const T r = p[0], g = channels >= 3 ? p[1] : p[0], b = channels >= 3 ? p[2] : p[0];
+    const T a = channels == 2 ? p[1] : channels == 4 ? p[3] : one;
+    o[4 * i] = r;
+    o[4 * i + 1] = g;
+    o[4 * i + 2] = b;
+    o[4 * i + 3] = a;
+  }
+  return out;
+}
+
+template <class T>
+TextureData texture_from(std::uint32_t width, std::uint32_t height, std::uint32_t channels, std::span<const T> pixels,
+                         TexelFormat format, T one) {
+  if (channels < 1 || channels > 4) {
+    throw UsageError("TextureData::from_pixels: " + std::to_string(channels) + " channels; a texture takes 1 (grey), "
+                     "2 (grey, alpha), 3 (RGB) or 4 (RGBA): convert the pixels to one of these");
+  }
+  const std::size_t count = std::size_t{width} * height;
+  if (width == 0 || height == 0 || pixels.size() != count * channels) {
+    throw UsageError("TextureData::from_pixels: " + std::to_string(pixels.size()) + " values for " +
+                     std::to_string(width) + "x" + std::to_string(height) + " texels of " + std::to_string(channels) +
+                     " channels (need " + std::to_string(count * channels) + ", and a size of at least 1x1); give "
+                     "width * height * channels values");
+  }
+  return {width, height, 1, format, format == TexelFormat::rgba8, expand_rgba(pixels, channels, count, one)};
+}
+
+}  // namespace detail
+
+PROCEDURAY_DECL TextureData TextureData::from_pixels(std::uint32_t width, std::uint32_t height, std::uint32_t channels,
+                                            std::span<const std::uint8_t> pixels) {
+  return detail::texture_from<std::uint8_t>(width, height, channels, pixels, TexelFormat::rgba8, 255);
+}
+
+PROCEDURAY_DECL TextureData TextureData::from_pixels(std::uint32_t width, std::uint32_t height, std::uint32_t channels,
+                                            std::span<const float> pixels) {
+  return detail::texture_from<float>(width, height, channels, pixels, TexelFormat::rgba32f, 1.0f);
+}
+
+PROCEDURAY_DECL TextureData load_texture(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw EnvironmentError("load_texture: '" + name + "' is not a file (missing, or a folder); check the path");
+  }
+  int w = 0, h = 0, channels = 0;
+  const bool hdr = stbi_is_hdr(name.c_str()) != 0;
+  // stb converts to four channels as it decodes; the file's own count comes back in `channels`.
+  std::unique_ptr<void, void (*)(void*)> data(hdr ? static_cast<void*>(stbi_loadf(name.c_str(), &w, &h, &channels, 4))
+                                                  : static_cast<void*>(stbi_load(name.c_str(), &w, &h, &channels, 4)),
+                                              stbi_image_free);
+  if (!data) {
+    const char* reason = stbi_failure_reason();
+    throw EnvironmentError("load_texture: cannot decode '" + name + "' (" + (reason ? reason : "unknown reason") +
+                           "); give a PNG, JPEG or Radiance HDR file");
+  }
+  TextureData t{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), 1,
+                hdr ? TexelFormat::rgba32f : TexelFormat::rgba8, !hdr, {}};
+  t.pixels.resize(t.face_bytes());
+  std::memcpy(t.pixels.data(), data.get(), t.pixels.size());
+  return t;
+}
+
+PROCEDURAY_DECL TextureData make_cube(std::span<const TextureData> faces) {
+  if (faces.size() != 6) {
+    throw UsageError("make_cube: " + std::to_string(faces.size()) + " faces; a cube map has six (+X, -X, +Y, -Y, +Z, -Z)");
+  }
+  const TextureData& first = faces[0];
+  for (std::size_t i = 0; i < 6; ++i) {
+    const TextureData& f = faces[i];
+    if (f.faces != 1 || f.width != f.height || f.width != first.width || f.format != first.format ||
+        f.srgb != first.srgb) {
+      throw UsageError("make_cube: face " + std::to_string(i) + " is " + std::to_string(f.width) + "x" +
+                       std::to_string(f.height) + (f.format == TexelFormat::rgba8 ? " rgba8" : " rgba32f") +
+                       (f.faces != 1 ? " and itself a cube" : "") + ", face 0 is " + std::to_string(first.width) + "x" +
+                       std::to_string(first.height) + (first.format == TexelFormat::rgba8 ? " rgba8" : " rgba32f") +
+                       "; cube faces are square 2D textures of one size, format and colour space");
+    }
+  }
+  TextureData cube{first.width, first.height, 6, first.format, first.srgb, {}};
+  cube.pixels.reserve(6 * first.face_bytes());
+  for (const TextureData& f : faces) cube.pixels.insert(cube.pixels.end(), f.pixels.begin(), f.pixels.end());
+  return cube;
+}
+
+PROCEDURAY_DECL TextureData load_cube(const std::array<std::filesystem::path, 6>& paths) {
+  std::vector<TextureData> faces;
+  for (const auto& p : paths) faces.push_back(load_texture(p));
+  return make_cube(faces);
+}
+
+}  // namespace proceduray
+#endif  // PROCEDURAY_BODIES
