@@ -50,6 +50,7 @@
 #include <proceduray/vk/pipeline_cache.hpp>
 #include <proceduray/vk/renderer.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
+#include <proceduray/vk/texture.hpp>
 #include <proceduray/vk/scene_acceleration.hpp>
 #include <proceduray/vk/scene_instances.hpp>
 #include <proceduray/vk/shader_compiler.hpp>

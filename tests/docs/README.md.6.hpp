@@ -1,9 +1,11 @@
-// README.md's sixth ```cpp block (far from the origin: WorldOrigin).
-#include <proceduray/scene/world_origin.hpp>
+// README.md's sixth ```cpp block (layers, update policies, any-hit and callable shaders).
+#include "tests/docs/vk/vk_names.hpp"
+namespace pr = proceduray;
+using namespace doc_vk;
 // @declarations
-void usage(glm::dvec3 camera_eye, const glm::dmat4& world_from_object, glm::dvec3 new_eye, double pixel_angle,
-           double nearest_t) {
+void usage(pr::Scene& scene, pr::vk::Renderer& renderer, const pr::Aabb& box,
+           const std::vector<pr::InstanceTransform>& transforms, pr::LocalSignatureId<TintArgs> tint_signature,
+           pr::GeometryId ball_id, pr::GeometryId blob_id, const glm::mat4& moved, const glm::mat4& placed, const std::vector<pr::Aabb>& boxes,
+           std::uint32_t w, std::uint32_t h) {
   // @statements
-  (void)t;
-  (void)eye;
 }

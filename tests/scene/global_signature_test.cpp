@@ -1,4 +1,5 @@
 #include "proceduray/scene/global_signature.hpp"
+#include "proceduray/scene/glsl_for.hpp"
 
 #include <doctest/doctest.h>
 
@@ -50,4 +51,26 @@ TEST_CASE("global_signature typed push constants set the size and exclude an unt
                        doctest::Contains("declares push_constant_size 16 and typed push constants (Knobs); declare one"),
                        SceneError);
   CHECK(GlobalSignatureDesc{.push_constant_size = 8}.push_bytes() == 8);
+}
+
+TEST_CASE("global_signature texture slots: arrays of 2D textures or cube maps, and arrays of nothing else") {
+  constexpr TextureSlot grounds{.binding = 4, .set = 1, .name = "grounds", .count = 3};
+  constexpr TextureSlot sky{.binding = 5, .name = "sky", .cube = true};
+  const Binding g = grounds;
+  CHECK(g.kind == BindingKind::sampled_image);
+  CHECK(g.binding == 4);
+  CHECK(g.set == 1);
+  CHECK(g.count == 3);
+  CHECK(g.name == "grounds");
+  CHECK_FALSE(g.cube);
+  CHECK(static_cast<Binding>(sky).cube);
+  CHECK(std::string(to_string(BindingKind::sampled_image)) == "sampled_image");
+  CHECK(detail::binding_glsl(g) == "layout(set = 1, binding = 4) uniform sampler2D grounds[3];\n");
+  CHECK(detail::binding_glsl(sky) == "layout(set = 0, binding = 5) uniform samplerCube sky;\n");
+  CHECK_NOTHROW(validate(GlobalSignatureDesc{.bindings = {grounds, sky}}, "G", "op"));
+  GlobalSignatureDesc buffers{.bindings = {{.kind = BindingKind::storage_buffer, .binding = 0, .count = 2}}};
+  CHECK_THROWS_WITH_AS(validate(buffers, "G", "op"),
+                       doctest::Contains("binding 0 is storage_buffer with count 2; only textures (sampled_image) come "
+                                         "in arrays"),
+                       SceneError);
 }

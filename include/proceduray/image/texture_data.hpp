@@ -7,6 +7,7 @@
 //   std::vector<std::uint8_t> grey(16 * 16, 128);
 //   proceduray::TextureData made = proceduray::TextureData::from_pixels(16, 16, 1, grey);   // 1 to 4 channels
 //   ground.mip_levels();   // 1 + floor(log2(max(width, height)))
+//   proceduray::SamplerDesc pixelated{.filter = proceduray::TextureFilter::nearest, .mipmaps = false};
 //
 // PNG and JPEG give 8-bit RGBA, treated as sRGB colour (TextureData::srgb; clear it for data such
 // as normal maps); HDR files give 32-bit float RGBA, linear. Grey, grey+alpha and RGB are
@@ -31,6 +32,17 @@ namespace proceduray {
 
 /// How texels are stored: 8-bit unsigned normalised or 32-bit float, four channels each.
 enum class TexelFormat : std::uint32_t { rgba8, rgba32f };
+
+/// How a sampler reads between texels, and past the edges.
+enum class TextureFilter : std::uint32_t { linear, nearest };
+enum class TextureWrap : std::uint32_t { repeat, clamp, mirror };
+
+/// A texture's sampler: filter (also between mip levels), wrap, and whether the mip chain is made.
+struct SamplerDesc {
+  TextureFilter filter = TextureFilter::linear;
+  TextureWrap wrap = TextureWrap::repeat;
+  bool mipmaps = true;  ///< the full chain, made on the device by successive halving
+};
 
 /// Bytes of one texel.
 constexpr std::uint32_t texel_bytes(TexelFormat f) { return f == TexelFormat::rgba8 ? 4 : 16; }

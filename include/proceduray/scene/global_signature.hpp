@@ -27,8 +27,11 @@ namespace proceduray {
 
 /// What a descriptor binding holds. output_image: a per-pixel output's storage image, added by
 /// compile() for Scene::set_outputs (never declared by the user); the renderer binds its own
-/// image there, not the colour image.
-enum class BindingKind : std::uint32_t { acceleration_structure, storage_image, uniform_buffer, storage_buffer, output_image };
+/// image there, not the colour image. sampled_image: textures with their samplers (combined
+/// image samplers: TextureSlot, set with Renderer::set_texture), 2D or cube, `count` of them.
+enum class BindingKind : std::uint32_t {
+  acceleration_structure, storage_image, uniform_buffer, storage_buffer, output_image, sampled_image
+};
 
 PROCEDURAY_DECL const char* to_string(BindingKind kind);
 
@@ -43,6 +46,7 @@ struct Binding {
   /// A storage buffer indexed by the TLAS instance (gl_InstanceCustomIndexEXT): the renderer
   /// refuses fewer elements than the scene has instances (StorageSlot::per_instance sets it).
   bool per_instance = false;
+  bool cube = false;  ///< sampled_image: cube maps (samplerCube) rather than 2D textures (sampler2D)
   friend bool operator==(const Binding&, const Binding&) = default;
 };
 
@@ -82,7 +86,7 @@ namespace proceduray {
 
 PROCEDURAY_DECL const char* to_string(BindingKind kind) {
   constexpr const char* names[] = {"acceleration_structure", "storage_image", "uniform_buffer", "storage_buffer",
-                                   "output_image"};
+                                   "output_image", "sampled_image"};
   return names[static_cast<std::uint32_t>(kind)];
 }
 
@@ -96,6 +100,11 @@ PROCEDURAY_DECL void validate(const GlobalSignatureDesc& desc, std::string_view 
     }
     if (b.count == 0) {
       throw SceneError(where + " binding " + std::to_string(b.binding) + " has count 0; use count >= 1");
+    }
+    if (b.count != 1 && b.kind != BindingKind::sampled_image) {
+      throw SceneError(where + " binding " + std::to_string(b.binding) + " is " + to_string(b.kind) + " with count " +
+                       std::to_string(b.count) + "; only textures (sampled_image) come in arrays: use count 1, or "
+                       "one binding each");
     }
     for (std::size_t j = 0; j < i; ++j) {
       if (desc.bindings[j].set == b.set && desc.bindings[j].binding == b.binding) {

@@ -144,6 +144,9 @@ PROCEDURAY_DECL std::string binding_glsl(const Binding& b) {
     case BindingKind::acceleration_structure: return where + ") uniform accelerationStructureEXT " + name + ";\n";
     case BindingKind::storage_image: return where + ", rgba8) uniform image2D " + name + ";\n";
     case BindingKind::output_image: return {};  // declared with its format by glsl_outputs
+    case BindingKind::sampled_image:
+      return where + ") uniform " + (b.cube ? "samplerCube " : "sampler2D ") + name +
+             (b.count > 1 ? "[" + std::to_string(b.count) + "]" : std::string()) + ";\n";
     case BindingKind::uniform_buffer:
     case BindingKind::storage_buffer:
       if (b.type == nullptr) {

@@ -9,6 +9,10 @@
 //   constexpr proceduray::StorageSlot<Tint> tints{.binding = 3, .name = "tints", .per_instance = true};
 //   renderer.set_storage(tints, std::span<const Tint>(per_instance));  // GLSL: tints.data[gl_InstanceCustomIndexEXT]
 //
+//   constexpr proceduray::TextureSlot ground{.binding = 4, .name = "ground"};            // sampler2D ground
+//   constexpr proceduray::TextureSlot skies{.binding = 5, .name = "skies", .count = 2, .cube = true};   // samplerCube skies[2]
+//   renderer.set_texture(ground, proceduray::load_texture("ground.png"));   // vk/texture.hpp: mips, sampler
+//
 //   constexpr proceduray::PushConstantSlot<FrameKnobs> knobs{.name = "knobs"};
 //   scene.add_global_signature("global", {.bindings = {...}, .push_constants = knobs});
 //   renderer.set_push(knobs, frame_knobs);  // recorded with the next trace; GLSL: knobs.member
@@ -46,6 +50,19 @@ struct StorageSlot {
 
   /// The binding as the global signature declares it.
   operator Binding() const { return {BindingKind::storage_buffer, binding, set, 1, name, &type_ops<T>, per_instance}; }
+};
+
+/// Textures with their samplers (combined image samplers): `count` 2D textures, or cube maps,
+/// sampled in GLSL as `name` (count 1) or `name[i]`, and set with Renderer::set_texture.
+struct TextureSlot {
+  std::uint32_t binding = 0;  ///< layout(binding = N)
+  std::uint32_t set = 0;      ///< layout(set = N); default 0
+  const char* name = "";      ///< GLSL name glsl_for declares it under; empty: declared by hand
+  std::uint32_t count = 1;    ///< array size; default one texture
+  bool cube = false;          ///< samplerCube (cube maps) rather than sampler2D
+
+  /// The binding as the global signature declares it.
+  operator Binding() const { return {BindingKind::sampled_image, binding, set, count, name, nullptr, false, cube}; }
 };
 
 /// Push constants holding one T (GLSL: `name.member`), T registered with the shader layer. Cheaper

@@ -21,6 +21,7 @@
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/descriptors.hpp>
+#include <proceduray/vk/texture.hpp>
 
 #include <cstddef>
 #include <cstring>
@@ -112,6 +113,11 @@ class Bindings {
   void write_tlas(const AccelerationStructure& tlas) {
     for (const auto& [set, binding] : m_tlas_bindings) m_sets[set]->write(binding, tlas);
   }
+  /// Uploads a texture (mips and sampler per `sampler`) into element `index` of a sampled-image
+  /// binding; throws UsageError for another kind of binding, an index past its count, or a cube
+  /// map for 2D textures and the reverse. No submitted frame may be using the sets.
+  void set_texture(const proceduray::Binding& slot, std::uint32_t index, const TextureData& data,
+                   const SamplerDesc& sampler, std::string_view op = "Bindings::set_texture");
   /// Throws UsageError naming `op` when a per-instance storage buffer was set with fewer than
   /// `count` elements (an instance is about to be added).
   void check_instance_count(std::uint32_t count, std::string_view op) const;
@@ -150,6 +156,11 @@ class Bindings {
     bool per_instance = false;
     std::size_t count = 0;  // elements given
   };
+  struct Sampled {
+    std::uint32_t set = 0, binding = 0;
+    bool cube = false;
+    std::vector<std::unique_ptr<Texture>> textures;  // one per array element; null until set
+  };
   Uniform& uniform(const proceduray::Binding& slot, const TypeOps* type, std::size_t size, std::string_view op);
   void set_storage_bytes(const proceduray::Binding& slot, const TypeOps* type, std::span<const std::byte> bytes, std::string_view op);
   void set_push_bytes(const PushConstantBlock& slot, const TypeOps* type, std::span<const std::byte> bytes,
@@ -177,6 +188,7 @@ class Bindings {
   std::vector<VkDescriptorSet> m_handles;              // their handles, bound every frame
   std::vector<Uniform> m_uniforms;
   std::vector<Storage> m_storage;
+  std::vector<Sampled> m_sampled;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_images;  // (set, binding) of storage images
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_tlas_bindings;  // (set, binding) of the TLAS
   PushConstantBlock m_push_block;
@@ -205,14 +217,15 @@ PROCEDURAY_DECL Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc
   std::map<std::uint32_t, std::vector<vk::Binding>> by_set;
   std::uint32_t last_set = 0;
   for (const proceduray::Binding& b : desc->bindings) {
-    if (b.count != 1) {
+    if (b.count != 1 && b.kind != BindingKind::sampled_image) {
       throw UsageError("Renderer: " + where(b) + " is an array of " + std::to_string(b.count) +
-                       "; descriptor arrays are not supported yet: use one binding per resource");
+                       "; only textures come in arrays: use one binding per resource");
     }
     static constexpr VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR,
                                                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    by_set[b.set].push_back({b.binding, types[static_cast<std::uint32_t>(b.kind)]});
+                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                                 VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+    by_set[b.set].push_back({b.binding, types[static_cast<std::uint32_t>(b.kind)], all_ray_tracing_stages, b.count});
     last_set = std::max(last_set, b.set);
   }
   // Set numbers in the pipeline layout are positions: a gap gets an empty set.
@@ -230,6 +243,11 @@ PROCEDURAY_DECL Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc
       case BindingKind::uniform_buffer: m_uniforms.push_back({b.set, b.binding, b.type, {}, nullptr, false, 0}); break;
       case BindingKind::storage_buffer: m_storage.push_back({b.set, b.binding, b.type, nullptr, b.per_instance}); break;
       case BindingKind::output_image: break;  // the renderer binds each output's image (bind_output)
+      case BindingKind::sampled_image: {
+        Sampled& t = m_sampled.emplace_back(Sampled{b.set, b.binding, b.cube, {}});
+        t.textures.resize(b.count);
+        break;
+      }
     }
   }
 }
@@ -307,11 +325,41 @@ PROCEDURAY_DECL void Bindings::set_push_bytes(const PushConstantBlock& slot, con
   m_push.assign(bytes.begin(), bytes.end());
 }
 
+PROCEDURAY_DECL void Bindings::set_texture(const proceduray::Binding& slot, std::uint32_t index, const TextureData& data,
+                                           const SamplerDesc& sampler, std::string_view op) {
+  for (Sampled& t : m_sampled) {
+    if (t.set != slot.set || t.binding != slot.binding) continue;
+    if (index >= t.textures.size()) {
+      throw UsageError(std::string(op) + ": element " + std::to_string(index) + " of " + where(slot) + ", which holds " +
+                       std::to_string(t.textures.size()) + " textures; use an index below that");
+    }
+    if (data.cube() != t.cube) {
+      throw UsageError(std::string(op) + ": " + where(slot) + " holds " + (t.cube ? "cube maps" : "2D textures") +
+                       " (TextureSlot::cube), given a " + (data.cube() ? "cube map" : "2D texture") +
+                       (t.cube ? "; make one with make_cube or load_cube" : "; give it a 2D texture"));
+    }
+    auto texture = std::make_unique<Texture>(*m_ctx, data, sampler, op);  // throws before any change
+    m_sets[t.set]->write(t.binding, index, texture->view(), texture->sampler());
+    t.textures[index] = std::move(texture);
+    return;
+  }
+  throw UsageError(std::string(op) + ": " + where(slot) + " is not a texture binding of the global signature; "
+                   "declare it there with a TextureSlot");
+}
+
 PROCEDURAY_DECL void Bindings::check_ready(std::string_view op) const {
   for (const Uniform& u : m_uniforms) {
     if (!u.buffer) {
       throw UsageError(std::string(op) + ": the uniform at set " + std::to_string(u.set) + " binding " +
                        std::to_string(u.binding) + " was never given a value; call set(slot, value) first");
+    }
+  }
+  for (const Sampled& t : m_sampled) {
+    for (std::size_t i = 0; i < t.textures.size(); ++i) {
+      if (t.textures[i]) continue;
+      throw UsageError(std::string(op) + ": texture " + std::to_string(i) + " at set " + std::to_string(t.set) +
+                       " binding " + std::to_string(t.binding) + " was never given; call set_texture(slot, texture" +
+                       (t.textures.size() > 1 ? ", sampler, " + std::to_string(i) : std::string()) + ") first");
     }
   }
   for (const Storage& s : m_storage) {

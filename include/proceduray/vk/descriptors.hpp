@@ -28,6 +28,7 @@ struct Binding {
   std::uint32_t binding = 0;                        ///< layout(binding = N)
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;  ///< required
   VkShaderStageFlags stages = all_ray_tracing_stages;   ///< default: every ray-tracing stage
+  std::uint32_t count = 1;                              ///< descriptors in the binding (an array past 1)
 };
 
 /// A descriptor set layout, a pool sized for it, and the one set allocated from it.
@@ -43,6 +44,8 @@ class DescriptorSet {
   void write(std::uint32_t binding, const AccelerationStructure& tlas);
   void write(std::uint32_t binding, VkImageView storage_image);
   void write(std::uint32_t binding, const Buffer& buffer);
+  /// A texture and its sampler into element `element` of a combined-image-sampler binding.
+  void write(std::uint32_t binding, std::uint32_t element, VkImageView view, VkSampler sampler);
 
  private:
   VkDescriptorType type_of(std::uint32_t binding, const char* what) const;
@@ -71,8 +74,8 @@ PROCEDURAY_DECL DescriptorSet::DescriptorSet(const Context& ctx, const std::vect
       throw UsageError("DescriptorSet: binding " + std::to_string(b.binding) +
                        " is listed twice; give each binding its own number");
     }
-    described.push_back({b.binding, b.type, 1, b.stages, nullptr});
-    ++counts[b.type];
+    described.push_back({b.binding, b.type, b.count, b.stages, nullptr});
+    counts[b.type] += b.count;
   }
   auto info = make<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   info.bindingCount = static_cast<std::uint32_t>(described.size());
@@ -135,6 +138,15 @@ PROCEDURAY_DECL void DescriptorSet::write(std::uint32_t binding, const Accelerat
 PROCEDURAY_DECL void DescriptorSet::write(std::uint32_t binding, VkImageView storage_image) {
   const VkDescriptorImageInfo image{VK_NULL_HANDLE, storage_image, VK_IMAGE_LAYOUT_GENERAL};
   auto write = write_info(binding, "a storage image", {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+  write.pImageInfo = &image;
+  vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
+}
+
+PROCEDURAY_DECL void DescriptorSet::write(std::uint32_t binding, std::uint32_t element, VkImageView view,
+                                          VkSampler sampler) {
+  const VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  auto write = write_info(binding, "a texture", {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+  write.dstArrayElement = element;
   write.pImageInfo = &image;
   vkUpdateDescriptorSets(m_ctx->device(), 1, &write, 0, nullptr);
 }

@@ -7,6 +7,7 @@
 //   renderer.set(constants_slot, constants);          // typed uniform, uploaded before the next trace
 //   renderer.set_storage(tints_slot, tints);          // typed storage buffer (an array)
 //   renderer.set_push(knobs_slot, knobs);             // typed push constants, recorded with the next trace
+//   renderer.set_texture(ground_slot, ground);        // a TextureData (image/texture_data.hpp): mips, sampler
 //   renderer.set_transform(pacman, 1, moved);         // DynamicTransform: TLAS refit, no BLAS work
 //   renderer.set_visible(pacman, 0, false);           // hidden until shown again: a TLAS update
 //   std::uint32_t i = renderer.add_instance(pacman, placed);   // any policy: a TLAS build
@@ -88,6 +89,14 @@ class Renderer {
   void set_storage(StorageSlot<T> slot, std::span<const std::type_identity_t<T>> values) {
     m_ring->wait_all();  // written in place (and maybe reallocated): no frame in flight may read it
     m_bindings->set_storage(slot, values, "Renderer::set_storage");
+  }
+  /// Uploads a texture (with its mips, per `sampler`) into element `index` of a TextureSlot; throws
+  /// UsageError for a bad index or a cube map for a 2D slot (and the reverse), DeviceLimitError
+  /// for a size past the device's limit. Waits for the frames in flight.
+  void set_texture(const TextureSlot& slot, const TextureData& data, const SamplerDesc& sampler = {},
+                   std::uint32_t index = 0) {
+    m_ring->wait_all();  // the descriptor set is written in place
+    m_bindings->set_texture(slot, index, data, sampler, "Renderer::set_texture");
   }
   /// Sets the push constants, recorded with the next trace. Other types do not compile; a slot of
   /// another type than the global signature's throws.
