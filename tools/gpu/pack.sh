@@ -14,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(proceduray_vk_tests proceduray_examples_tests bench_frame_loop 02_paper_scene 04_cis565_scene bench_soak)
+  targets=(proceduray_vk_tests proceduray_examples_tests bench_frame_loop 02_paper_scene 04_cis565_scene 05_textured_scene bench_soak)
 fi
 
 build=${BUILD:-build/gpu}

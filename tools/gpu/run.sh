@@ -54,6 +54,12 @@ if [ "$what" = all ] || [ "$what" = bench ]; then
     step cis565_depth_sweep gpu/04_cis565_scene --device gpu --size 1920x1080 --frames 100 --depth-sweep --out /tmp/cis565.png
     grep -A6 "^depth" "$out/cis565_depth_sweep.txt" >> "$log"
   fi
+  # The textured scene with validation on: textures, meshes and beads added and removed each frame.
+  if [ -x gpu/05_textured_scene ]; then
+    step textured_scene gpu/05_textured_scene --device gpu --size 1920x1080 --frames 60 --validation \
+      --out "$out/05_textured_scene.png"
+    grep -E "^trace|^beads" "$out/textured_scene.txt" >> "$log"
+  fi
   [ -x gpu/bench_soak ] && step bench_soak gpu/bench_soak --device gpu --frames 2000 --every 500
 fi
 cat "$out/gpu.txt" "$log"
