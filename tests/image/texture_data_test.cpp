@@ -64,6 +64,24 @@ TEST_CASE("texture data: an HDR file reads back as linear float RGBA") {
   CHECK(texel32(t, 1, 3) == 1.0f);  // alpha added
 }
 
+TEST_CASE("texture data: a JPEG reads back as RGBA8 sRGB, within its compression's error") {
+  const auto path = scratch_dir() / "flat.jpg";
+  std::vector<std::uint8_t> rgb;
+  for (int i = 0; i < 16 * 16; ++i) rgb.insert(rgb.end(), {200, 120, 40});
+  REQUIRE(stbi_write_jpg(path.string().c_str(), 16, 16, 3, rgb.data(), 95) != 0);
+  const TextureData t = load_texture(path);
+  CHECK(t.format == TexelFormat::rgba8);
+  CHECK(t.srgb);
+  REQUIRE(t.width == 16);
+  REQUIRE(t.pixels.size() == 16 * 16 * 4);
+  for (std::size_t texel : {std::size_t{0}, std::size_t{137}, std::size_t{255}}) {
+    CHECK(std::abs(int{texel8(t, texel, 0)} - 200) <= 4);  // a flat block survives JPEG almost exactly
+    CHECK(std::abs(int{texel8(t, texel, 1)} - 120) <= 4);
+    CHECK(std::abs(int{texel8(t, texel, 2)} - 40) <= 4);
+    CHECK(texel8(t, texel, 3) == 255);
+  }
+}
+
 TEST_CASE("texture data: 1 to 4 channels expand to RGBA, others are refused") {
   const std::uint8_t grey[] = {10, 20};
   const TextureData g = TextureData::from_pixels(2, 1, 1, grey);
