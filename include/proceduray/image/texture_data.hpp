@@ -91,6 +91,8 @@ PROCEDURAY_DECL TextureData load_cube(const std::array<std::filesystem::path, 6>
 #include <stb_image.h>
 
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 namespace proceduray {
@@ -148,12 +150,18 @@ PROCEDURAY_DECL TextureData load_texture(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw EnvironmentError("load_texture: '" + name + "' is not a file (missing, or a folder); check the path");
   }
+  // Read once: stb's file functions would open it twice (once to tell HDR from the rest).
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
+  const int size = static_cast<int>(file.size());
   int w = 0, h = 0, channels = 0;
-  const bool hdr = stbi_is_hdr(name.c_str()) != 0;
+  const bool hdr = stbi_is_hdr_from_memory(bytes, size) != 0;
   // stb converts to four channels as it decodes; the file's own count comes back in `channels`.
-  std::unique_ptr<void, void (*)(void*)> data(hdr ? static_cast<void*>(stbi_loadf(name.c_str(), &w, &h, &channels, 4))
-                                                  : static_cast<void*>(stbi_load(name.c_str(), &w, &h, &channels, 4)),
-                                              stbi_image_free);
+  std::unique_ptr<void, void (*)(void*)> data(
+      hdr ? static_cast<void*>(stbi_loadf_from_memory(bytes, size, &w, &h, &channels, 4))
+          : static_cast<void*>(stbi_load_from_memory(bytes, size, &w, &h, &channels, 4)),
+      stbi_image_free);
   if (!data) {
     const char* reason = stbi_failure_reason();
     throw EnvironmentError("load_texture: cannot decode '" + name + "' (" + (reason ? reason : "unknown reason") +

@@ -102,8 +102,7 @@ inline std::string glsl_mesh_functions(const TypeOps& mesh) {
   out += "uvec3 triangle_indices(" + m + " m, uint primitive) { return m.triangles.data[primitive]; }\n";
   out += vt + " interpolate(" + vt + " a, " + vt + " b, " + vt + " c, vec3 w) {\n    " + vt + " o;\n";
   for (std::size_t i = 0; i < v.field_count; ++i) {
-    const TypeOps& f = *v.fields[i].type;
-    out += detail::mixed_member(f.kind == TypeKind::array ? TypeOps{} : f, v.fields[i].name);
+    out += detail::mixed_member(*v.fields[i].type, v.fields[i].name);  // an array's kind is array: kept whole
   }
   out += "    return o;\n}\n";
   out += vt + " interpolate(" + m + " m, uint primitive, vec2 barycentrics) {\n"

@@ -44,6 +44,7 @@ class MeshBuffers {
 
 PROCEDURAY_DECL MeshBuffers::MeshBuffers(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan)
     : m_addresses(scene.geometries().size()) {
+  if (!plan.reads_meshes()) return;  // most scenes: no buffers, no per-record scan
   std::vector<bool> read(scene.geometries().size(), false);
   for (const SbtRecord& r : plan.records(SbtRegionKind::hit)) {
     if (r.mesh_offset != no_index) read[r.geometry] = true;

@@ -117,9 +117,13 @@ PROCEDURAY_DECL SceneInstances::SceneInstances(const proceduray::Plan& plan, std
     : m_plan(&plan), m_list(std::move(list)), m_hidden(m_list.size(), false),
       m_slots(plan.blases().size()), m_next_custom(static_cast<std::uint32_t>(m_list.size())) {
   const auto planned = plan.instances();
+  if (m_list.size() != planned.size()) {
+    throw UsageError("SceneInstances: " + std::to_string(m_list.size()) + " instances given, the plan has " +
+                     std::to_string(planned.size()) + "; give one per Plan::instances() entry, in that order");
+  }
   for (std::uint32_t k = 0; k < m_list.size(); ++k) {
     m_masks.push_back(m_list[k].mask);
-    const std::uint32_t blas = k < planned.size() ? planned[k].blas : 0;
+    const std::uint32_t blas = planned[k].blas;
     m_owners.push_back({blas, static_cast<std::uint32_t>(m_slots[blas].size())});
     m_slots[blas].push_back(k);
   }
