@@ -82,6 +82,10 @@ TEST_CASE("scene instances: BLAS changes and moves ask for the TLAS work they ne
                        doctest::Contains("is Static"), UsageError);
   still.set_visible(fixed.ball(), 0, false, "Renderer::set_visible");
   CHECK(still.take() == vk::TlasWork::update);
+  std::vector<vk::Instance> short_list = instances_of(fixed_plan);
+  short_list.pop_back();  // not the plan's list: refused, never read past the plan's instances
+  CHECK_THROWS_WITH_AS(vk::SceneInstances(fixed_plan, short_list), doctest::Contains("instances given, the plan has"),
+                       UsageError);
 }
 
 TEST_CASE("scene instances: adds and removes are TLAS builds that keep every other instance's records and index") {
