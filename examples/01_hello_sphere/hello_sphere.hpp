@@ -54,31 +54,18 @@ PROCEDURAY_STRUCT(MissRecord, scalar, background);
 using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<pr::Camera>,
                                       pr::RootArguments<HitRecord, MissRecord>, pr::Attributes<SphereHit>>;
 
-/// Generated declarations each stage compiles with (see glsl_codegen.hpp).
-inline std::string raygen_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_push_constant<pr::Camera>("camera") +
-         pr::glsl_ray_payload<Interface, Colour>("payload");
-}
-inline std::string miss_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_root_arguments<Interface, MissRecord>("arguments") +
-         pr::glsl_ray_payload_in<Interface, Colour>("payload");
-}
-inline std::string intersection_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_hit_attribute<Interface, SphereHit>("hit");
-}
-inline std::string closest_hit_declarations() {
-  return pr::glsl_declarations<Interface>() + pr::glsl_root_arguments<Interface, HitRecord>("arguments") +
-         pr::glsl_hit_attribute<Interface, SphereHit>("hit") + pr::glsl_ray_payload_in<Interface, Colour>("payload");
-}
+/// The camera, pushed as push constants (declared in every stage as `camera`).
+inline constexpr pr::PushConstantSlot<pr::Camera> camera_slot{.name = "camera"};
 
+// The shaders' text. Each stage compiles with the declarations compile() derived for it
+// (PlannedStage::declarations: the interface's structs, `tlas`, `image`, `camera`, the payload,
+// hit attributes and root arguments it uses), so none is written here.
 inline const char* const raygen_glsl = R"(#version 460
-layout(set = 0, binding = 0) uniform accelerationStructureEXT tlas;
-layout(set = 0, binding = 1, rgba8) uniform writeonly image2D image;
 void main() {
   vec2 uv = (vec2(gl_LaunchIDEXT.xy) + 0.5) / vec2(gl_LaunchSizeEXT.xy) * 2.0 - 1.0;
   vec3 direction = normalize(camera.forward.xyz + uv.x * camera.right.xyz - uv.y * camera.up.xyz);
-  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, 0, camera.eye.xyz, 0.0, direction, 1e30, 0);
-  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(payload.rgb, 1.0));
+  trace_radiance(camera.eye.xyz, 0.0, direction, 1e30);   // flags, offsets and location from the scene
+  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(radiance.rgb, 1.0));
 }
 )";
 
@@ -126,9 +113,9 @@ inline pr::Camera make_camera(std::uint32_t width, std::uint32_t height) {
 
 /// The scene: one ray type, the spheres' hit group, one geometry of two instances with a hit
 /// record each, and the miss record; compile() derives the groups, records and SBT offsets.
-inline pr::Scene make_scene(std::array<glm::vec4, 2> albedo) {
-  pr::Scene scene;
-  const auto radiance = scene.add_ray<Colour>("radiance", {.miss = "hello_sphere.rmiss"});
+inline pr::Scene<Interface> make_scene(std::array<glm::vec4, 2> albedo) {
+  pr::Scene<Interface> scene;
+  const auto radiance = scene.add_ray<Colour>("radiance", {.miss = "hello_sphere.rmiss", .flags = pr::RayFlags::opaque});
   const auto sphere = scene.add_hit_group<SphereHit>("sphere", {.kind = pr::HitGroupKind::procedural,
                                                                .closest_hit = "hello_sphere.rchit",
                                                                .intersection = "hello_sphere.rint"});
@@ -139,6 +126,9 @@ inline pr::Scene make_scene(std::array<glm::vec4, 2> albedo) {
   }
   const auto spheres = scene.add_geometry("spheres", pr::GeometryDesc::procedural({pr::Aabb{}}, placed));
   const auto hit = scene.add_local_signature<HitRecord>("hit");
+  scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                           {pr::BindingKind::storage_image, 1, 0, 1, "image"}},
+                              .push_constants = camera_slot});
   scene.add_raygen("hello_sphere.rgen");
   scene.add_miss(radiance, scene.add_local_signature<MissRecord>("miss"), MissRecord{Layout::background});
   for (std::uint32_t i = 0; i < 2; ++i) scene.add_hit(radiance, sphere, hit, HitRecord{albedo[i]}, spheres, i);
@@ -192,20 +182,14 @@ class HelloSphere {
   }
   /// Compiles the plan's stages (in its order) and takes its groups.
   static vk::PipelineDesc pipeline_desc(const pr::Plan& plan, const vk::DescriptorSet& set) {
-    struct Source {
-      const char* code;
-      std::string declarations;
-    };
-    const std::map<std::string, Source> sources{
-        {"hello_sphere.rgen", {raygen_glsl, raygen_declarations()}},
-        {"hello_sphere.rmiss", {miss_glsl, miss_declarations()}},
-        {"hello_sphere.rchit", {closest_hit_glsl, closest_hit_declarations()}},
-        {"hello_sphere.rint", {intersection_glsl, intersection_declarations()}}};
+    const std::map<std::string, const char*> sources{{"hello_sphere.rgen", raygen_glsl},
+                                                     {"hello_sphere.rmiss", miss_glsl},
+                                                     {"hello_sphere.rchit", closest_hit_glsl},
+                                                     {"hello_sphere.rint", intersection_glsl}};
     vk::PipelineDesc desc;
     for (const pr::PlannedStage& s : plan.pipeline().stages) {
-      const Source& source = sources.at(s.shader);
-      desc.add_shader(s.stage, vk::compile_glsl({.stage = s.stage, .name = s.shader, .code = source.code,
-                                                 .preamble = source.declarations}));
+      desc.add_shader(s.stage, vk::compile_glsl({.stage = s.stage, .name = s.shader, .code = sources.at(s.shader),
+                                                 .preamble = s.declarations}));
     }
     desc.groups = vk::shader_groups(plan.pipeline());
     desc.set_layouts = {set.layout()};

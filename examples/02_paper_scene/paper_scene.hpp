@@ -23,7 +23,7 @@ namespace paper {
 inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
 /// The scene: its entities and entries, each type from its category of paper::Interface.
-struct PaperScene : pr::SceneOf<Interface> {
+struct PaperScene : pr::Scene<Interface> {
   /// `outputs`: per-pixel outputs besides colour (the accuracy tool asks for t, normal, steps, flags).
   explicit PaperScene(pr::OutputSet outputs = {}, Tracing tracing = Tracing::recursive,
                       std::uint32_t depth_limit = max_depth_limit)

@@ -27,8 +27,8 @@ namespace d3d12 {
 
 inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
-/// The sample's scene: a proceduray::Scene whose types are Interface's categories (SceneOf), and its primitives.
-class D3d12Scene : public pr::SceneOf<Interface> {
+/// The sample's scene, declared from Interface's categories, and its primitives.
+class D3d12Scene : public pr::Scene<Interface> {
  public:
   /// The given primitives (each validated: throws PrimitiveError) placed by `layout`; the
   /// ground only with Layout::sample; per-pixel `outputs` of the camera rays (none: no cost).

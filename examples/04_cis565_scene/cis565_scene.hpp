@@ -74,6 +74,10 @@ PROCEDURAY_STRUCT(Constants, scalar, camera, lights, blob, ambient, sky, time, m
 
 inline constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
 
+/// The shader compatibility layer: each struct in its category (std::variant alternatives).
+using Interface = pr::ShaderInterface<pr::Payload<Radiance, Shadow>, pr::RootComponent<Constants>,
+                                      pr::RootArguments<Material>, pr::Attributes<SurfaceHit>>;
+
 enum ObjectId : std::uint32_t { sky_id = 0, ground_id = 1, sphere0_id = 2, blob_id = 5 };
 
 /// The spheres: centre, radius, material.
@@ -118,7 +122,7 @@ inline Constants default_constants(std::uint32_t width, std::uint32_t height, fl
 }
 
 /// The scene, with recursion for reflections up to `depth_limit` radiance rays per path.
-class Cis565Scene : public pr::Scene {
+class Cis565Scene : public pr::Scene<Interface> {
  public:
   explicit Cis565Scene(std::uint32_t depth_limit = 5) : m_depth_limit(depth_limit) {
     if (depth_limit < 1 || depth_limit > 8) {

@@ -79,6 +79,10 @@ struct Constants {
 PROCEDURAY_STRUCT(Constants, scalar, camera, lights, ambient, max_depth, min_weight, ground_scale, flags);
 
 inline constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
+
+/// The shader compatibility layer: each struct in its category (std::variant alternatives).
+using Interface = pr::ShaderInterface<pr::Payload<Radiance, Shadow>, pr::RootComponent<Constants>,
+                                      pr::RootArguments<Material, MeshMaterial>, pr::Attributes<SurfaceHit>>;
 inline constexpr pr::TextureSlot ground_slot{.binding = 3, .name = "ground"};
 inline constexpr pr::TextureSlot sky_slot{.binding = 4, .name = "sky", .cube = true};
 inline constexpr std::uint32_t max_depth_limit = 3;
@@ -157,7 +161,7 @@ inline pr::TextureData sky_cube(std::uint32_t size = 128) {
 inline std::filesystem::path assets_dir() { return examples::examples_dir() / "05_textured_scene" / "assets"; }
 
 /// The scene: ground, torus, mirror sphere, and the beads' geometry (no instance until added).
-class TexturedScene : public pr::Scene {
+class TexturedScene : public pr::Scene<Interface> {
  public:
   TexturedScene() : m_torus(pr::load_obj(assets_dir() / "torus.obj")) {
     const auto radiance = add_ray<Radiance>("radiance", {.miss = "radiance.rmiss", .flags = pr::RayFlags::opaque});

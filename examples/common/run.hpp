@@ -6,7 +6,7 @@
 //   examples::print_run(run, o);
 //   examples::write_last(run, o);   // PNG, then its path
 //
-//   // or all of the above for a proceduray::Scene type with renderer_options(cache), in one call:
+//   // or all of the above for a proceduray::Scene<Interface> type with renderer_options(cache), in one call:
 //   return examples::run_scene<MyScene>(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
 //                                       [](const examples::Options& o, std::uint32_t frame) { return constants(o, frame); });
 #pragma once
@@ -65,7 +65,7 @@ inline void write_last(const Run& run, const Options& o) {
   std::printf("%s\n", std::filesystem::absolute(o.out).string().c_str());
 }
 
-/// A scene example's whole program: options, device, the renderer of Scene (a proceduray::Scene with
+/// A scene example's whole program: options, device, the renderer of Scene (a proceduray::Scene<Interface> with
 /// renderer_options(cache)), the build report, o.frames frames with `slot` set to constants(o, frame)
 /// before each (and before the warm-up), their medians, the SBT and the PNG. Returns the exit code:
 /// 1 on an exception (printed with the program's name) or a validation message, else 0.

@@ -30,7 +30,6 @@
 #include <proceduray/scene/quad_mesh.hpp>
 #include <proceduray/scene/sbt_layout.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
-#include <proceduray/scene/scene_of.hpp>
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/scene/shader_context.hpp>

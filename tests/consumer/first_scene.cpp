@@ -21,9 +21,12 @@ struct Constants {  // a uniform every shader reads as `constants`
 };
 PROCEDURAY_STRUCT(Constants, scalar, camera, sky);
 constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
+// The shader compatibility layer: each struct in its category.
+using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Constants>, pr::RootArguments<Paint>,
+                                      pr::Attributes<BallHit>>;
 
 int main() {
-  pr::Scene scene;
+  pr::Scene<Interface> scene;
   auto radiance = scene.add_ray<Colour>("radiance", {.miss = "sky.rmiss"});
   scene.set_global_signature(pr::default_global_signature({constants_slot}));  // tlas, image, constants
   scene.add_raygen("camera.rgen");

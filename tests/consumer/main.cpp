@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <string>
 
 namespace pr = proceduray;
@@ -32,58 +33,57 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    using consumer::Colour;
+    using consumer::HitRecord;
+    // The scene, declared from its interface: compile() derives the groups, records and each
+    // stage's declarations (payload, root arguments, tlas, image).
+    pr::Scene<consumer::Interface> scene;
+    const auto ray = scene.add_ray<Colour>("primary", {.miss = "consumer.rmiss", .flags = pr::RayFlags::opaque});
+    const auto group = scene.add_hit_group("sphere", {.kind = pr::HitGroupKind::procedural,
+                                                      .closest_hit = "consumer.rchit", .intersection = "consumer.rint"});
+    const auto sphere = scene.add_geometry("sphere", pr::GeometryDesc::procedural({pr::Aabb{}}));
+    const auto record = scene.add_local_signature<HitRecord>("record");
+    scene.set_global_signature(pr::default_global_signature());
+    scene.add_raygen("consumer.rgen");
+    scene.add_hit(ray, group, record, HitRecord{glm::vec4(0.0f, 1.0f, 0.0f, 1.0f)}, sphere);
+    const pr::Plan plan = pr::compile(scene);
+
+    // The thin layer by hand: one BLAS, the plan's instance, a descriptor set, the pipeline, the SBT.
     vk::Context ctx({.validation = true});
     const VkAabbPositionsKHR box{-1, -1, -1, 1, 1, 1};
     const vk::AabbGeometry geometry{{&box, 1}};
     const auto blas = vk::build_blas(ctx, {&geometry, 1});
-    const vk::Instance instance{.blas = &blas};
+    const vk::Instance instance{.blas = &blas, .sbt_offset = plan.instances()[0].sbt_offset};
     const auto tlas = vk::build_tlas(ctx, {&instance, 1});
     vk::StorageImage image(ctx, 64, 64);
-    vk::DescriptorSet set(ctx, {{0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
-    set.write(0, tlas);
-    set.write(1, image.view());
+    vk::DescriptorSet set(ctx, {{pr::default_tlas_binding, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
+                                {pr::default_image_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+    set.write(pr::default_tlas_binding, tlas);
+    set.write(pr::default_image_binding, image.view());
 
-    using consumer::Colour;
-    using consumer::HitRecord;
-    using consumer::Interface;
-    const std::string declarations = pr::glsl_declarations<Interface>();
-    const std::string rgen =
-        "#version 460\n"
-        "layout(binding = 0) uniform accelerationStructureEXT tlas;\n"
-        "layout(binding = 1, rgba8) uniform writeonly image2D image;\n"
-        "void main() {\n"
-        "  vec2 p = (vec2(gl_LaunchIDEXT.xy) + 0.5) / vec2(gl_LaunchSizeEXT.xy) * 4.0 - 2.0;\n"
-        "  traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, 0, vec3(p, 5.0), 0.0, vec3(0, 0, -1), 100.0, 0);\n"
-        "  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(payload.rgb, 1));\n"
-        "}\n";
-    const std::string miss = "#version 460\nvoid main() { payload.rgb = vec3(0); }\n";
-    const std::string hit = "#version 460\nvoid main() { payload.rgb = arguments.colour.rgb; }\n";
-    const std::string isect = "#version 460\n#include \"primitives/sphere.glsl\"\n"
-        "void main() { float a, b; if (ray_sphere(gl_ObjectRayOriginEXT, gl_ObjectRayDirectionEXT, vec3(0), 1.0, a, b))"
-        " reportIntersectionEXT(a, 0u); }\n";
+    const std::map<std::string, std::string> code{
+        {"consumer.rgen",
+         "#version 460\n"
+         "void main() {\n"
+         "  vec2 p = (vec2(gl_LaunchIDEXT.xy) + 0.5) / vec2(gl_LaunchSizeEXT.xy) * 4.0 - 2.0;\n"
+         "  trace_primary(vec3(p, 5.0), 0.0, vec3(0, 0, -1), 100.0);\n"
+         "  imageStore(image, ivec2(gl_LaunchIDEXT.xy), vec4(primary.rgb, 1));\n"
+         "}\n"},
+        {"consumer.rmiss", "#version 460\nvoid main() { payload.rgb = vec3(0); }\n"},
+        {"consumer.rchit", "#version 460\nvoid main() { payload.rgb = arguments.colour.rgb; }\n"},
+        {"consumer.rint",
+         "#version 460\n#include \"primitives/sphere.glsl\"\n"
+         "void main() { float a, b; if (ray_sphere(gl_ObjectRayOriginEXT, gl_ObjectRayDirectionEXT, vec3(0), 1.0, a, b))"
+         " reportIntersectionEXT(a, 0u); }\n"}};
     vk::PipelineDesc desc;
-    auto add = [&](vk::ShaderStage s, const std::string& code, const std::string& stage_declarations) {
-      return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "consumer", .code = code,
-                                                  .preamble = declarations + stage_declarations}));
-    };
-    const auto r = add(vk::ShaderStage::raygen, rgen, pr::glsl_ray_payload<Interface, Colour>("payload"));
-    const auto m = add(vk::ShaderStage::miss, miss, pr::glsl_ray_payload_in<Interface, Colour>("payload"));
-    const auto h = add(vk::ShaderStage::closest_hit, hit,
-                       pr::glsl_ray_payload_in<Interface, Colour>("payload") +
-                           pr::glsl_root_arguments<Interface, HitRecord>("arguments"));
-    const auto i = add(vk::ShaderStage::intersection, isect, "");
-    desc.groups = {vk::ShaderGroup::general_shader(r), vk::ShaderGroup::general_shader(m),
-                   vk::ShaderGroup::procedural(h, i)};
+    for (const pr::PlannedStage& s : plan.pipeline().stages) {
+      desc.add_shader(s.stage, vk::compile_glsl({.stage = s.stage, .name = s.shader, .code = code.at(s.shader),
+                                                 .preamble = s.declarations}));
+    }
+    desc.groups = vk::shader_groups(plan.pipeline());
     desc.set_layouts = {set.layout()};
     const vk::Pipeline pipeline(ctx, desc);
-
-    const HitRecord green{glm::vec4(0.0f, 1.0f, 0.0f, 1.0f)};
-    const auto layout = pr::layout_sbt(ctx.sbt_properties(),
-                                       {{{1, 0}, {1, 0}, {1, std::uint32_t{sizeof(HitRecord)}}, {}}});
-    const vk::RecordWrite records[] = {{pr::SbtRegionKind::raygen, 0, 0},
-                                       {pr::SbtRegionKind::miss, 0, 1},
-                                       {pr::SbtRegionKind::hit, 0, 2, Interface::root_arguments(green)}};
-    const vk::SbtBuffer sbt(ctx, pipeline, layout, records);
+    const vk::SbtBuffer sbt(ctx, pipeline, plan, plan.layout(ctx.limits()));
     vk::trace(ctx, pipeline, set, sbt, 64, 64);
     const auto rgba = image.read();
     pr::write_png(argv[1], 64, 64, rgba);

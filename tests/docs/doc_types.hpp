@@ -3,6 +3,7 @@
 #pragma once
 
 #include <proceduray/shader/camera.hpp>
+#include <proceduray/shader/categories.hpp>
 #include <proceduray/shader/device_address.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -48,4 +49,8 @@ PROCEDURAY_STRUCT(FrameKnobs, scalar, exposure, frame);
 using Frame = FrameKnobs;
 using Radiance = RadiancePayload;
 using Shadow = ShadowPayload;
+/// The interface the blocks' scenes are declared from: every type above in its category.
+using DocInterface = proceduray::ShaderInterface<
+    proceduray::Payload<RadiancePayload, ShadowPayload, TintCall>, proceduray::RootComponent<SceneConstants, TintArgs, FrameKnobs>,
+    proceduray::RootArguments<Material, SphereRecord, BoxRecord, ProceduralArgs, TintArgs>, proceduray::Attributes<SphereHit>>;
 }  // namespace doc_types

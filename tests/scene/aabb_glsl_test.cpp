@@ -4,9 +4,12 @@
 #include <doctest/doctest.h>
 
 using namespace proceduray;
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 TEST_CASE("aabb glsl declares each procedural geometry's box under its id") {
-  Scene scene;
+  TestScene scene;
   scene.add_geometry("julia", GeometryDesc::procedural({{glm::vec3(-1.5f), glm::vec3(1.5f)}}));
   scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 2, 1}}));
   const Aabb pacman{glm::vec3(-1.0f, -0.25f, -1.0f), glm::vec3(1.0f, 0.75f, 1.0f)};
@@ -20,7 +23,7 @@ TEST_CASE("aabb glsl declares each procedural geometry's box under its id") {
 }
 
 TEST_CASE("aabb glsl declares arrays for a geometry of several boxes") {
-  Scene scene;
+  TestScene scene;
   const Aabb first{glm::vec3(0.0f), glm::vec3(1.0f)}, second{glm::vec3(2.0f), glm::vec3(3.5f)};
   scene.add_geometry("balls", GeometryDesc::procedural({first, second}));
   CHECK(glsl_aabb_consts(scene) == "#ifndef PROCEDURAY_AABB_CONSTS\n#define PROCEDURAY_AABB_CONSTS\n"
@@ -31,11 +34,11 @@ TEST_CASE("aabb glsl declares arrays for a geometry of several boxes") {
 }
 
 TEST_CASE("aabb glsl prints floats that read back exactly") {
-  Scene scene;
+  TestScene scene;
   const float odd = 0.1f + 0.2f;
   scene.add_geometry("odd", GeometryDesc::procedural({{glm::vec3(-odd), glm::vec3(odd)}}));
   const std::string glsl = glsl_aabb_consts(scene);
   CHECK(glsl.find(glsl_const("odd_aabb_max", glm::vec3(odd))) != std::string::npos);
-  CHECK(glsl_aabb_consts(Scene{}).empty());
+  CHECK(glsl_aabb_consts(TestScene{}).empty());
 }
 

@@ -34,17 +34,21 @@ PROCEDURAY_STRUCT(Colour, scalar, colour);
 PROCEDURAY_STRUCT(Big, scalar, values);
 PROCEDURAY_STRUCT(Hit, scalar, normal);
 PROCEDURAY_STRUCT(Tint, scalar, colour);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour, Tint, Big>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace bad_input
 
 namespace {
 using bad_input::Colour;
+using bad_input::TestScene;
 using Contains = doctest::Contains;
 
 constexpr float not_a_number = std::numeric_limits<float>::quiet_NaN();
 
 /// A scene that compiles: one ray, one procedural object, a raygen.
 struct Small {
-  Scene scene;
+  TestScene scene;
   RayId<Colour> ray = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
   HitGroupId group = scene.add_hit_group<bad_input::Hit>(
       "ball", {.kind = HitGroupKind::procedural, .closest_hit = "ball.rchit", .intersection = "ball.rint"});
@@ -60,7 +64,7 @@ struct Small {
 // ---- ids that would not survive the trip to GLSL
 
 TEST_CASE("bad input: two ray ids that mangle to one GLSL name") {
-  Scene s;
+  TestScene s;
   s.add_ray<Colour>("primary-2", {});
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("primary_2", {}),
                        Contains("Scene::add_ray: ray \"primary_2\" and ray \"primary-2\" would both be declared in GLSL as \"primary_2\""),
@@ -69,57 +73,57 @@ TEST_CASE("bad input: two ray ids that mangle to one GLSL name") {
 }
 
 TEST_CASE("bad input: a ray named like the incoming payload") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("payload", {}),
                        Contains("ray \"payload\" would be declared in GLSL as \"payload\", a name the generated declarations use"),
                        SceneError);
 }
 
 TEST_CASE("bad input: a ray named like the hit attributes") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("hit", {}), Contains("\"hit\", a name the generated declarations use"), SceneError);
 }
 
 TEST_CASE("bad input: a ray named with a GLSL keyword") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("sample", {}),
                        Contains("Scene::add_ray: ray \"sample\" would be declared in GLSL as \"sample\", a GLSL reserved word"),
                        SceneError);
 }
 
 TEST_CASE("bad input: a ray named texture2DRect, a type glslang reserves") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("texture2DRect", {}), Contains("a GLSL reserved word"), SceneError);
 }
 
 TEST_CASE("bad input: a ray named itexture2D") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("itexture2D", {}), Contains("a GLSL reserved word"), SceneError);
 }
 
 TEST_CASE("bad input: a ray named devicecoherent") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("devicecoherent", {}), Contains("a GLSL reserved word"), SceneError);
 }
 
 TEST_CASE("bad input: a ray named pervertexEXT") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("pervertexEXT", {}), Contains("a GLSL reserved word"), SceneError);
 }
 
 TEST_CASE("bad input: a ray id with the gl_ prefix") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("gl_ray", {}), Contains("gl_ prefix or double underscore"), SceneError);
 }
 
 TEST_CASE("bad input: a ray id that mangles to a double underscore") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("a -b", {}), Contains("as \"a__b\", a GLSL reserved word (or a gl_ prefix or double underscore)"),
                        SceneError);
 }
 
 TEST_CASE("bad input: two layers that mangle to one GLSL name") {
-  Scene s;
+  TestScene s;
   s.add_layer("casts_shadow");
   CHECK_THROWS_WITH_AS(s.add_layer("casts shadow"),
                        Contains("Scene::add_layer: layer \"casts shadow\" and layer \"casts_shadow\" would both be declared "
@@ -129,7 +133,7 @@ TEST_CASE("bad input: two layers that mangle to one GLSL name") {
 }
 
 TEST_CASE("bad input: two callables that mangle to one GLSL name") {
-  Scene s;
+  TestScene s;
   s.add_callable<bad_input::Tint>("tint-1", {.shader = "tint.rcall"});
   CHECK_THROWS_WITH_AS(s.add_callable<bad_input::Tint>("tint_1", {.shader = "tint.rcall"}),
                        Contains("callable \"tint_1\" and callable \"tint-1\" would both be declared in GLSL as \"tint_1_callable\""),
@@ -137,7 +141,7 @@ TEST_CASE("bad input: two callables that mangle to one GLSL name") {
 }
 
 TEST_CASE("bad input: a ray whose name is a callable's generated name") {
-  Scene s;
+  TestScene s;
   s.add_callable<bad_input::Tint>("x", {.shader = "tint.rcall"});
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("x_call", {}),
                        Contains("ray \"x_call\" and callable \"x\" would both be declared in GLSL as \"x_call\""),
@@ -145,7 +149,7 @@ TEST_CASE("bad input: a ray whose name is a callable's generated name") {
 }
 
 TEST_CASE("bad input: a binding named like a ray") {
-  Scene s;
+  TestScene s;
   s.add_ray<Colour>("radiance", {});
   CHECK_THROWS_WITH_AS(
       s.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "radiance"}}}),
@@ -154,14 +158,14 @@ TEST_CASE("bad input: a binding named like a ray") {
 }
 
 TEST_CASE("bad input: a binding named with a GLSL keyword") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_global_signature("global", {.bindings = {{BindingKind::storage_image, 0, 0, 1, "image2D"}}}),
                        Contains("binding \"image2D\" would be declared in GLSL as \"image2D\", a GLSL reserved word"),
                        SceneError);
 }
 
 TEST_CASE("bad input: a ray named like its payload's struct") {
-  Scene s;
+  TestScene s;
   s.add_ray<bad_input::Tint>("Tint", {});  // the ray declares `Tint Tint`: only compile sees the struct names
   s.add_raygen("camera.rgen");
   CHECK_THROWS_WITH_AS(compile(s), Contains("compile: struct Tint and ray \"Tint\" would both be declared in GLSL as \"Tint\""),
@@ -171,7 +175,7 @@ TEST_CASE("bad input: a ray named like its payload's struct") {
 // ---- ray declarations
 
 TEST_CASE("bad input: ray flags opaque and no_opaque together") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("r", {.flags = RayFlags::opaque | RayFlags::no_opaque}),
                        Contains("Scene::add_ray: ray \"r\" combines more than one of opaque, no_opaque, cull_opaque and "
                                 "cull_no_opaque (flags 0x3)"),
@@ -179,43 +183,43 @@ TEST_CASE("bad input: ray flags opaque and no_opaque together") {
 }
 
 TEST_CASE("bad input: ray flags opaque and cull_opaque together") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("r", {.flags = RayFlags::opaque | RayFlags::cull_opaque}), Contains("(flags 0x41)"),
                        SceneError);
 }
 
 TEST_CASE("bad input: ray culls back and front faces") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("r", {.flags = RayFlags::cull_back_facing | RayFlags::cull_front_facing}),
                        Contains("culls both back- and front-facing triangles (flags 0x30)"), SceneError);
 }
 
 TEST_CASE("bad input: ray flags outside RayFlags") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("r", {.flags = static_cast<RayFlags>(0x104)}),
                        Contains("ray \"r\" has unknown ray flag bits 0x100"), SceneError);
 }
 
 TEST_CASE("bad input: ray cull mask 0") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("r", {.cull_mask = 0}), Contains("ray \"r\" has cull mask 0, which no instance passes"),
                        SceneError);
 }
 
 TEST_CASE("bad input: a payload over the size limit") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<bad_input::Big>("r", {}),
                        Contains("ray \"r\" has a payload of 4800 bytes, over the 4096 the library allows"), SceneError);
 }
 
 TEST_CASE("bad input: a duplicate ray id") {
-  Scene s;
+  TestScene s;
   s.add_ray<Colour>("r", {});
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("r", {}), Contains("Scene::add_ray: duplicate ray id \"r\""), DuplicateIdError);
 }
 
 TEST_CASE("bad input: an empty ray id") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_ray<Colour>("", {}), Contains("Scene::add_ray: empty ray id"), SceneError);
 }
 
@@ -282,7 +286,7 @@ TEST_CASE("bad input: a triangle geometry bound to a procedural hit group") {
 }
 
 TEST_CASE("bad input: a scene without raygen") {
-  Scene s;
+  TestScene s;
   s.add_ray<Colour>("r", {});
   CHECK_THROWS_WITH_AS(compile(s), Contains("compile: no raygen entry; add one with Scene::add_raygen"), SceneError);
 }
@@ -295,18 +299,18 @@ TEST_CASE("bad input: a geometry no entry covers") {
 }
 
 TEST_CASE("bad input: recursion depth 0") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.set_max_recursion_depth(0), Contains("depth 0 allows no traceRayEXT at all; use >= 1"), SceneError);
 }
 
 TEST_CASE("bad input: a ninth layer") {
-  Scene s;
+  TestScene s;
   for (int i = 0; i < 8; ++i) s.add_layer("l" + std::to_string(i));
   CHECK_THROWS_WITH_AS(s.add_layer("l8"), Contains("would be the ninth; an instance mask has 8 bits"), SceneError);
 }
 
 TEST_CASE("bad input: a callable without a shader") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_callable<bad_input::Tint>("tint", {}), Contains("has no shader; set .shader"), SceneError);
 }
 
@@ -319,13 +323,13 @@ TEST_CASE("bad input: a procedural object without an intersection shader") {
 }
 
 TEST_CASE("bad input: an inverted AABB") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_geometry("box", GeometryDesc::procedural({Aabb{{1, 1, 1}, {0, 0, 0}}})), Contains("box"),
                        InvalidGeometryError);
 }
 
 TEST_CASE("bad input: a triangle index past the vertices") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_AS(s.add_geometry("tri", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 7}})),
                   InvalidGeometryError);
 }
@@ -357,7 +361,7 @@ TEST_CASE("bad input: an unknown march knob") {
 }
 
 TEST_CASE("bad input: two bindings of one global signature with one name") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                                                       {BindingKind::storage_image, 1, 0, 1, "tlas"}}}),
                        Contains("binding \"tlas\" and binding \"tlas\" would both be declared in GLSL as \"tlas\""),
@@ -365,7 +369,7 @@ TEST_CASE("bad input: two bindings of one global signature with one name") {
 }
 
 TEST_CASE("bad input: a ray registered after a global signature with a binding of its name") {
-  Scene s;
+  TestScene s;
   s.set_global_signature({.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}});
   s.add_ray<Colour>("tlas", {});  // registration does not see signatures: only one of them is declared
   s.add_raygen("camera.rgen");
@@ -374,7 +378,7 @@ TEST_CASE("bad input: a ray registered after a global signature with a binding o
 }
 
 TEST_CASE("glsl names: two global signatures may reuse binding names") {
-  Scene s;  // not an error: only the pipeline's signature is declared
+  TestScene s;  // not an error: only the pipeline's signature is declared
   s.add_global_signature("a", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}});
   CHECK_NOTHROW(s.add_global_signature("b", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}}));
 }

@@ -32,6 +32,9 @@ struct TintArgs {
   glm::vec4 factor;
 };
 PROCEDURAY_STRUCT(TintArgs, scalar, factor);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Light, TintCall, NoiseCall>, proceduray::RootComponent<>, proceduray::RootArguments<TintArgs>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace callable_test
 
 using namespace callable_test;
@@ -39,7 +42,7 @@ using namespace callable_test;
 namespace {
 /// One ray, one triangle, two callables ("tint" with root arguments, "noise" without).
 struct Fixture {
-  Scene scene;
+  TestScene scene;
   std::optional<Plan> sbt;
   CallableId<TintCall> tint;
   CallableId<NoiseCall> noise;

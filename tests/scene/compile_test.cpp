@@ -19,7 +19,7 @@ namespace {
 
 // An entry whose arguments type differs from its local signature's does not compile.
 template <class Signature, class Arguments>
-concept CanAddHit = requires(Scene t, RayId<> r, HitGroupId h, Signature s, Arguments a, GeometryId g) {
+concept CanAddHit = requires(Scene<ReportInterface> t, RayId<> r, HitGroupId h, Signature s, Arguments a, GeometryId g) {
   t.add_hit(r, h, s, a, g);
 };
 struct OtherArgs { std::uint32_t x; };
@@ -30,7 +30,7 @@ static_assert(!CanAddHit<LocalSignatureId<OtherArgs>, std::uint32_t>);
 static_assert(!CanAddHit<LocalSignatureId<>, OtherArgs>);  // an untyped id cannot carry data
 
 template <class Signature, class Arguments>
-concept CanAddMiss = requires(Scene t, RayId<> r, Signature s, Arguments a) { t.add_miss(r, s, a); };
+concept CanAddMiss = requires(Scene<ReportInterface> t, RayId<> r, Signature s, Arguments a) { t.add_miss(r, s, a); };
 static_assert(CanAddMiss<LocalSignatureId<OtherArgs>, OtherArgs>);
 static_assert(!CanAddMiss<LocalSignatureId<OtherArgs>, TriangleRootArguments>);
 
@@ -132,6 +132,9 @@ PROCEDURAY_STRUCT(Args4, scalar, tag);
 PROCEDURAY_STRUCT(Args16, scalar, tag, pad);
 PROCEDURAY_STRUCT(Args40, scalar, tag, values);
 PROCEDURAY_STRUCT(TestPayload, scalar, value);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<TestPayload>, proceduray::RootComponent<>, proceduray::RootArguments<Args4, Args16, Args40>,
+                                   proceduray::Attributes<Args16>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 struct Key {
   std::uint32_t ray, geometry, instance;
@@ -143,7 +146,7 @@ struct Key {
 std::uint64_t check_random_scene(std::uint32_t seed) {
   std::mt19937 rng(seed);
   auto pick = [&](std::uint32_t n) { return static_cast<std::uint32_t>(rng() % n); };
-  Scene s;
+  TestScene s;
   const std::uint32_t ray_count = 1 + pick(4);
   std::vector<RayId<TestPayload>> rays;
   for (std::uint32_t r = 0; r < ray_count; ++r) rays.push_back(s.add_ray<TestPayload>("ray" + std::to_string(r), {.miss = "miss" + std::to_string(pick(2))}));
@@ -213,7 +216,7 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   }
   std::shuffle(plan.begin(), plan.end(), rng);
 
-  Scene& t = s;  // the entries, added after every entity
+  TestScene& t = s;  // the entries, added after every entity
   t.add_raygen("rgen");
   if (pick(2)) t.add_miss(rays[0], sig4, Args4{0xABCDu});
   std::map<Key, std::uint32_t> wide_tag, specific_tag;
@@ -315,7 +318,7 @@ TEST_CASE("compile 1000 random scenes resolve every ray geometry and instance to
 TEST_CASE("compile missing pairs are listed unless a default entry exists") {
   ReportScene r;
   build_report_scene(r);
-  Scene& t = r.scene;
+  auto& t = r.scene;
   t.add_raygen("Raygen");
   const auto sig = r.scene.local_signature_id<TriangleRootArguments>("Triangle");
   t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), sig, TriangleRootArguments{}, r.plane);
@@ -360,7 +363,7 @@ TEST_CASE("compile duplicate bindings name both entries") {
                        DuplicateIdError);
   ReportScene w;
   build_report_scene(w);
-  Scene& v = w.scene;
+  auto& v = w.scene;
   const auto w_sig = v.local_signature_id<ProceduralRootArguments>("Procedural");  // sig is r's: another scene
   v.add_miss(w.radiance, w_sig, ProceduralRootArguments{});
   CHECK_THROWS_WITH_AS(v.add_miss(w.radiance, w_sig, ProceduralRootArguments{}),
@@ -369,7 +372,7 @@ TEST_CASE("compile duplicate bindings name both entries") {
 }
 
 TEST_CASE("compile one block per BLAS and the instance limit") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<TestPayload>("r", {.miss = "m"});
   const auto group = s.add_hit_group("g", {.closest_hit = "c"});
   TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
@@ -395,7 +398,7 @@ TEST_CASE("compile refuses a scene without a raygen entry") {
 }
 
 TEST_CASE("compile keeps a BLAS's shared block for instances added at run time only when asked") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<TestPayload>("r", {.miss = "m"});
   const auto group = s.add_hit_group("g", {.closest_hit = "c"});
   const auto own = s.add_hit_group("own", {.closest_hit = "own"});
@@ -408,7 +411,7 @@ TEST_CASE("compile keeps a BLAS's shared block for instances added at run time o
   const GeometryId later = s.add_geometry("later", desc);
   s.add_raygen("rgen");
   for (GeometryId g : {fixed, open}) s.add_hit(ray, own, g, 0);
-  Scene missing = s;  // `open` and `later` asked for shared records but have no entry for them
+  TestScene missing = s;  // `open` and `later` asked for shared records but have no entry for them
   CHECK_THROWS_WITH_AS(compile(missing), doctest::Contains("(\"r\", \"open\", instances without own entries)"),
                        MissingEntryError);
   CHECK_THROWS_WITH_AS(compile(missing), doctest::Contains("(\"r\", \"later\", instances without own entries)"),

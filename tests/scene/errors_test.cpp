@@ -8,6 +8,9 @@
 #include <type_traits>
 
 using namespace proceduray;
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 TEST_CASE("errors edit distance and nearest ids") {
   CHECK(detail::edit_distance("kitten", "sitting") == 3);
@@ -23,14 +26,14 @@ TEST_CASE("errors edit distance and nearest ids") {
   CHECK(detail::quote_list({}) == "(none)");
 }
 
-// Scene errors are usage errors (bugs in the calling code); a device limit is a runtime error, not a SceneError.
+// TestScene errors are usage errors (bugs in the calling code); a device limit is a runtime error, not a SceneError.
 static_assert(std::is_base_of_v<UsageError, SceneError> && std::is_base_of_v<std::logic_error, SceneError>);
 static_assert(std::is_base_of_v<SceneError, UnknownIdError> && std::is_base_of_v<SceneError, MissingEntryError>);
 static_assert(std::is_base_of_v<std::runtime_error, DeviceLimitError> && !std::is_base_of_v<SceneError, DeviceLimitError>);
 static_assert(std::is_base_of_v<Error, SceneError> && std::is_base_of_v<Error, DeviceLimitError>);
 
 TEST_CASE("errors a scene call's error is caught as SceneError, UsageError, std::logic_error and Error alike") {
-  Scene scene;
+  TestScene scene;
   scene.add_geometry("Pacman", GeometryDesc::procedural({{glm::vec3(-1.0f), glm::vec3(1.0f)}}));
   const Aabb inverted{glm::vec3(1.0f), glm::vec3(-1.0f)};
   auto bad_box = [&] { scene.add_geometry("Bad", GeometryDesc::procedural({inverted})); };
@@ -49,7 +52,7 @@ TEST_CASE("errors a scene call's error is caught as SceneError, UsageError, std:
 }
 
 TEST_CASE("errors a library call's message names the call, the id, the nearest ids and the fix") {
-  Scene scene;
+  TestScene scene;
   scene.add_geometry("Pacman", GeometryDesc::procedural({{glm::vec3(-1.0f), glm::vec3(1.0f)}}));
   scene.add_geometry("Plane", GeometryDesc::procedural({{glm::vec3(-2.0f), glm::vec3(2.0f)}}));
   CHECK_THROWS_WITH_AS(scene.geometry_id("Pacmn"),

@@ -36,6 +36,9 @@ struct Globals {
   glm::vec4 sky;
 };
 PROCEDURAY_STRUCT(Globals, std430, sky);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Light, Shadow>, proceduray::RootComponent<Globals, Other>, proceduray::RootArguments<Material, Other>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace glsl_for_test
 
 using namespace proceduray;
@@ -53,7 +56,7 @@ enum class Misuse { none, two_payloads, two_records };
 /// closest hit to the shadow ray too; two_records gives the ball's shadow entry another record type:
 /// compile() refuses both.
 struct Scenes {
-  Scene scene;
+  TestScene scene;
 
   explicit Scenes(Misuse misuse = Misuse::none) {
     const bool second_payload = misuse == Misuse::two_payloads;
@@ -157,7 +160,7 @@ TEST_CASE("glsl_for gives tracing stages a trace function per ray type") {
 }
 
 TEST_CASE("glsl_for declares no trace functions without a named acceleration structure") {
-  Scene scene;
+  TestScene scene;
   auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
   auto group = scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
   scene.add_geometry("floor", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {0, 1, 2}}));
@@ -233,10 +236,12 @@ struct Knobs {
   float exposure;
 };
 PROCEDURAY_STRUCT(Knobs, scalar, tint, exposure);
+using KnobsScene = proceduray::Scene<proceduray::ShaderInterface<proceduray::Payload<Light>, proceduray::RootComponent<Knobs>,
+                                                                 proceduray::RootArguments<>, proceduray::Attributes<>>>;
 }  // namespace glsl_for_test
 
 TEST_CASE("glsl_for declares a named push constant block in every stage") {
-  Scene scene;
+  KnobsScene scene;
   constexpr PushConstantSlot<Knobs> knobs{.name = "knobs"};
   auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
   auto group = scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});

@@ -15,7 +15,11 @@ struct Light {
   float value;
 };
 PROCEDURAY_STRUCT(Light, scalar, value);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Light>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace layers_test
+using layers_test::TestScene;
 
 TEST_CASE("layers give each name its own bit and masks are unions") {
   Layers layers;
@@ -44,7 +48,7 @@ TEST_CASE("layers refuse a ninth layer duplicates and unknown names") {
 }
 
 TEST_CASE("scene layers name the operation and reach the shaders and the instances") {
-  Scene scene;
+  TestScene scene;
   CHECK_THROWS_WITH_AS(scene.layer_mask({"visible"}), doctest::Contains("Scene::layer_mask: no layer \"visible\"; the known "
                                                                         "layers are (none)"),
                        UnknownIdError);
@@ -84,7 +88,7 @@ TEST_CASE("scene layers name the operation and reach the shaders and the instanc
 }
 
 TEST_CASE("instance masks must match the instances and belong to them") {
-  Scene scene;
+  TestScene scene;
   const TriangleMesh mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
   GeometryDesc wrong = GeometryDesc::triangles(mesh, {identity_transform(), identity_transform()});
   wrong.instance_masks = {1};

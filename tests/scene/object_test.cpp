@@ -24,10 +24,13 @@ PROCEDURAY_STRUCT(Payload, scalar, colour);
 PROCEDURAY_STRUCT(Occlusion, scalar, occluded);
 PROCEDURAY_STRUCT(Hit, scalar, normal, steps);
 PROCEDURAY_STRUCT(Material, scalar, albedo, id);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Payload, Occlusion>, proceduray::RootComponent<>, proceduray::RootArguments<Material>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 /// Two rays and a material signature, as every test here starts.
 struct Rays {
-  Scene scene;
+  TestScene scene;
   RayId<Payload> radiance = scene.add_ray<Payload>("radiance", {.miss = "radiance.rmiss"});
   RayId<Occlusion> shadow = scene.add_ray<Occlusion>("shadow", {.miss = "shadow.rmiss"});
   LocalSignatureId<Material> material = scene.add_local_signature<Material>("material");
@@ -49,7 +52,7 @@ ObjectDesc spheres_desc(const Rays& r) {
 }
 
 /// What a hit record holds, by name: group, ray, geometry, instance and material id.
-std::vector<std::string> describe(const Scene& s, const Plan& sbt) {
+std::vector<std::string> describe(const TestScene& s, const Plan& sbt) {
   std::vector<std::string> out;
   for (const SbtRecord& rec : sbt.records(SbtRegionKind::hit)) {
     Material m{};
@@ -194,7 +197,7 @@ TEST_CASE("add_object rejects a bad object before changing the scene or its entr
 }
 
 TEST_CASE("add_object needs the rays first") {
-  Scene scene;
+  TestScene scene;
   const ObjectDesc early{.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "x.rint"};
   CHECK_THROWS_WITH_AS(add_object(scene, "early", early), doctest::Contains("register the rays first"), SceneError);
   CHECK(scene.geometries().size() == 0);

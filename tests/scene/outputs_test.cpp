@@ -25,6 +25,9 @@ struct Globals {
   glm::vec4 sky;
 };
 PROCEDURAY_STRUCT(Globals, std430, sky);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Light>, proceduray::RootComponent<Globals>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace outputs_test
 
 using namespace proceduray;
@@ -32,8 +35,8 @@ using namespace outputs_test;
 
 namespace {
 /// One ray, one procedural object; `extra` global bindings beside the TLAS (0) and image (1).
-Scene scene_with(OutputSet outputs, std::vector<Binding> extra = {}) {
-  Scene s;
+TestScene scene_with(OutputSet outputs, std::vector<Binding> extra = {}) {
+  TestScene s;
   const auto ray = s.add_ray<Light>("light", {.miss = "sky.rmiss"});
   s.set_global_signature(default_global_signature(std::move(extra)));
   s.add_raygen("cam.rgen");
@@ -76,8 +79,8 @@ TEST_CASE("outputs get set 0 bindings after the highest one the global signature
 }
 
 TEST_CASE("outputs without a global signature get one of their own") {
-  Scene s = scene_with({Output::normal});
-  Scene bare;
+  TestScene s = scene_with({Output::normal});
+  TestScene bare;
   const auto ray = bare.add_ray<Light>("light", {.miss = "sky.rmiss"});
   bare.add_raygen("cam.rgen");
   add_object<Hit>(bare, "ball", {.geometry = GeometryDesc::procedural({Aabb{}}), .intersection = "ball.rint",
@@ -99,7 +102,7 @@ TEST_CASE("outputs change the plan but not its payloads, records or groups") {
 }
 
 TEST_CASE("outputs binding declared by the user is refused, naming Scene::set_outputs") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.set_global_signature({.bindings = {{BindingKind::output_image, 3, 0, 1, "", nullptr}}}),
                        doctest::Contains("Scene::set_outputs"), SceneError);
 }

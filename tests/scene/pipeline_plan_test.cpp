@@ -11,6 +11,9 @@
 
 using namespace proceduray;
 using namespace proceduray::test;
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<RayPayload, ShadowPayload>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<FractalAttributes>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 TEST_CASE("pipeline_plan report scene holds exactly the used stages and groups") {
   ReportScene r;
@@ -68,7 +71,7 @@ TEST_CASE("pipeline_plan report scene holds exactly the used stages and groups")
 }
 
 TEST_CASE("pipeline_plan triangles only scene reports the built-in attribute size") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<ShadowPayload>("r", {.miss = "m"});
   const auto group = s.add_hit_group("g", {.closest_hit = "c", .any_hit = "a"});
   s.add_hit_group<FractalAttributes>("p", {.kind = HitGroupKind::procedural, .intersection = "i"});
@@ -91,7 +94,7 @@ TEST_CASE("pipeline_plan triangles only scene reports the built-in attribute siz
 }
 
 TEST_CASE("pipeline_plan ray without miss shader gets a null miss record") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<ShadowPayload>("r", {});
   const auto group = s.add_hit_group("g", {.closest_hit = "c"});
   const auto plane = s.add_geometry("plane", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}));
@@ -113,7 +116,7 @@ TEST_CASE("pipeline_plan ray without miss shader gets a null miss record") {
 }
 
 TEST_CASE("pipeline_plan gives an intersection shader one stage per any-hit it is paired with") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<RayPayload>("ray", {.miss = "miss"});
   const auto plain = s.add_hit_group<FractalAttributes>("plain", {.kind = HitGroupKind::procedural, .closest_hit = "hit",
                                                                .intersection = "ball.rint"});
@@ -146,7 +149,7 @@ TEST_CASE("pipeline_plan gives an intersection shader one stage per any-hit it i
 }
 
 TEST_CASE("pipeline_plan recursion depth is declared only by set_max_recursion_depth") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<ShadowPayload>("r", {.miss = "m"});
   const auto group = s.add_hit_group("g", {.closest_hit = "c"});
   s.add_geometry("plane", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}));
@@ -169,7 +172,7 @@ TEST_CASE("pipeline_plan recursion depth is declared only by set_max_recursion_d
 }
 
 TEST_CASE("pipeline_plan max payload size ignores a ray type no record uses") {
-  Scene s;
+  TestScene s;
   // "big" has no miss shader, and no geometry has instances: no record uses it.
   s.add_ray<RayPayload>("big", {});
   const auto small = s.add_ray<ShadowPayload>("small", {.miss = "small.rmiss"});

@@ -8,6 +8,9 @@
 #include <array>
 
 using namespace proceduray;
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 namespace {
 /// Where an instance transform takes a local point.
@@ -42,7 +45,7 @@ TEST_CASE("transforms keeps the placements order") {
 }
 
 TEST_CASE("a zero scale placement is rejected by the geometry naming the instance") {
-  Scene scene;
+  TestScene scene;
   const Placement flat{.scale = 0.0f};
   const GeometryDesc desc = GeometryDesc::procedural({Aabb{}}, transforms(std::array{Placement{}, flat}));
   CHECK_THROWS_WITH_AS(scene.add_geometry("flat", desc),

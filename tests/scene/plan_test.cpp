@@ -25,10 +25,13 @@ struct Tint { glm::vec3 rgb; float alpha; };
 PROCEDURAY_STRUCT(Payload, scalar, colour);
 PROCEDURAY_STRUCT(Hit, scalar, normal, t);
 PROCEDURAY_STRUCT(Tint, scalar, rgb, alpha);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Payload>, proceduray::RootComponent<>, proceduray::RootArguments<Tint>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 /// A one-ray, one-object scene written as the examples write theirs: two sphere instances, one record.
-Scene spheres() {
-  Scene scene;
+TestScene spheres() {
+  TestScene scene;
   const auto radiance = scene.add_ray<Payload>("radiance", {.miss = "miss.rmiss"});
   const auto tint = scene.add_local_signature<Tint>("tint");
   scene.set_global_signature(default_global_signature());
@@ -42,7 +45,7 @@ Scene spheres() {
 
 /// The plan of a scene that is gone by the time the caller reads it.
 Plan plan_of_spheres() {
-  const Scene scene = spheres();
+  const TestScene scene = spheres();
   return compile(scene);
 }
 
@@ -86,7 +89,7 @@ TEST_CASE("plan is a value that outlives its scene and equals a copy") {
   CHECK(assigned == plan);
   CHECK(compile(spheres()) == plan);
   CHECK_FALSE(Plan{} == plan);
-  Scene deeper = spheres();
+  TestScene deeper = spheres();
   deeper.set_max_recursion_depth(2);
   CHECK_FALSE(compile(deeper) == plan);
   // A copy lays out and writes the same table.
@@ -99,7 +102,7 @@ TEST_CASE("plan is a value that outlives its scene and equals a copy") {
 }
 
 TEST_CASE("plan does not change when the scene changes after compile") {
-  Scene scene = spheres();
+  TestScene scene = spheres();
   const Plan plan = compile(scene);
   const Plan before = plan;
   const auto radiance = scene.ray_id<plan_test::Payload>("radiance");
@@ -129,7 +132,7 @@ TEST_CASE("plan does not change when the scene changes after compile") {
 }
 
 TEST_CASE("plan records the global signature and the root arguments sizes") {
-  const Scene scene = spheres();
+  const TestScene scene = spheres();
   const Plan plan = compile(scene);
   CHECK(plan.records(SbtRegionKind::hit).size() == 1);
   CHECK(plan.pipeline().global_signature == scene.global_signature_id("global"));
@@ -140,7 +143,7 @@ TEST_CASE("plan records the global signature and the root arguments sizes") {
 }
 
 TEST_CASE("plan that does not fit a device throws from layout and stays as it was") {
-  Scene scene = spheres();
+  TestScene scene = spheres();
   const Plan first = compile(scene);
   scene.set_max_recursion_depth(5);
   const Plan deep = compile(scene);

@@ -19,14 +19,18 @@ struct Hit {
 };
 PROCEDURAY_STRUCT(Colour, scalar, rgba);
 PROCEDURAY_STRUCT(Hit, scalar, normal);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace recursion_test
 
 namespace {
 using recursion_test::Colour;
+using recursion_test::TestScene;
 
 /// Rays radiance (0) and shadow (1), a mirror ball whose closest hit may trace, a callable.
 struct Mirror {
-  Scene scene;
+  TestScene scene;
   Plan plan;
   std::vector<StageTraces> traces;
   Mirror() {

@@ -12,9 +12,12 @@
 
 using namespace proceduray;
 using namespace proceduray::test;
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<RayPayload, ShadowPayload>, proceduray::RootComponent<>, proceduray::RootArguments<ShadowPayload>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 
 TEST_CASE("sbt_printer small scene prints the exact table") {
-  Scene s;
+  TestScene s;
   const auto radiance = s.add_ray<RayPayload>("Radiance", {.miss = "miss"});
   const auto shadow = s.add_ray<ShadowPayload>("Shadow", {.miss = "miss_shadow"});
   const auto tri = s.add_hit_group("Tri", {.closest_hit = "chit"});
@@ -22,7 +25,7 @@ TEST_CASE("sbt_printer small scene prints the exact table") {
   const auto plane = s.add_geometry("Plane", GeometryDesc::triangles({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}},
                                                                      {identity_transform(), identity_transform()}));
   const auto sig = s.add_local_signature<ShadowPayload>("Color");
-  Scene& t = s;
+  TestScene& t = s;
   t.add_raygen("rgen");
   t.add_hit(radiance, tri, sig, ShadowPayload{1}, plane);
   t.add_hit(shadow, tri_shadow, plane);

@@ -112,9 +112,12 @@ PROCEDURAY_STRUCT(FractalAttributes, scalar, normal, distance);
 PROCEDURAY_STRUCT(MaterialCb, scalar, albedo, reflectance, diffuse, specular, power);
 PROCEDURAY_STRUCT(TriangleRootArguments, scalar, material);
 PROCEDURAY_STRUCT(ProceduralRootArguments, scalar, material, instance_index, primitive_type);
+using ReportInterface = ShaderInterface<Payload<RayPayload, ShadowPayload>, RootComponent<>,
+                                        RootArguments<TriangleRootArguments, ProceduralRootArguments>,
+                                        Attributes<FractalAttributes>>;
 
 struct ReportScene {
-  Scene scene;
+  Scene<ReportInterface> scene;
   RayId<RayPayload> radiance;
   RayId<ShadowPayload> shadow;
   GeometryId plane, julia, pacman, mandelbulb;
@@ -130,7 +133,7 @@ inline std::vector<InstanceTransform> translations(std::uint32_t count, float y)
 }
 
 inline void build_report_scene(ReportScene& r) {
-  Scene& s = r.scene;
+  Scene<ReportInterface>& s = r.scene;
   r.radiance = s.add_ray<RayPayload>("Radiance", {.miss = "Miss"});
   r.shadow = s.add_ray<ShadowPayload>("Shadow", {.miss = "Miss_Shadow"});
   s.add_hit_group("Triangle", {.closest_hit = "ClosestHit_Triangle"});
@@ -157,7 +160,7 @@ inline void build_report_scene(ReportScene& r) {
 
 /// The report's Listing 10 through the string-id API: common triangle entries, per-instance procedural ones.
 inline void add_report_entries(ReportScene& r) {
-  Scene& s = r.scene;
+  Scene<ReportInterface>& s = r.scene;
   s.add_raygen("Raygen");
   const TriangleRootArguments plane_args{{{0.9f, 0.9f, 0.9f, 1.0f}, 0.25f, 1.0f, 0.4f, 50.0f}};
   s.add_hit("Radiance", "Triangle", "Triangle", plane_args, "GlobalGeometry");
@@ -187,6 +190,8 @@ PROCEDURAY_STRUCT(PrimitiveConstantBuffer, scalar, albedo, reflectance, diffuse,
 PROCEDURAY_STRUCT(PrimitiveInstanceConstantBuffer, scalar, instance_index, primitive_type);
 PROCEDURAY_STRUCT(D3D12RootArguments, scalar, material, aabb);
 PROCEDURAY_STRUCT(D3D12Attributes, scalar, normal);
+using D3D12Interface = ShaderInterface<Payload<RayPayload, ShadowPayload>, RootComponent<>,
+                                       RootArguments<D3D12RootArguments>, Attributes<D3D12Attributes>>;
 
 inline const std::array<const char*, 10> d3d12_aabb_geometries{
     "AnalyticAABB", "AnalyticSpheres", "Metaballs", "MiniSpheres", "IntersectedRoundCube",
@@ -198,7 +203,7 @@ inline const char* d3d12_group_of(std::uint32_t aabb) {
 }
 
 struct D3D12Scene {
-  Scene scene;
+  Scene<D3D12Interface> scene;
   RayId<RayPayload> radiance;
   RayId<ShadowPayload> shadow;
   GeometryId plane;
@@ -206,7 +211,7 @@ struct D3D12Scene {
 };
 
 inline void build_d3d12_scene(D3D12Scene& d) {
-  Scene& s = d.scene;
+  Scene<D3D12Interface>& s = d.scene;
   d.radiance = s.add_ray<RayPayload>("Radiance", {.miss = "MyMissShader"});
   d.shadow = s.add_ray<ShadowPayload>("Shadow", {.miss = "MyMissShader_ShadowRay"});
   s.add_hit_group("MyHitGroup_Triangle", {.closest_hit = "MyClosestHitShader_Triangle"});
@@ -244,7 +249,7 @@ inline std::vector<std::byte> fake_handles(const Plan& plan, const SbtLayout& la
 
 /// The sample's entries, added in `order` (a permutation of 0..21 over the 22 (geometry, ray) slots).
 inline void add_d3d12_entries(D3D12Scene& d, const std::vector<std::uint32_t>& order) {
-  Scene& s = d.scene;
+  Scene<D3D12Interface>& s = d.scene;
   s.add_raygen("MyRaygenShader");
   const auto tri = s.local_signature_id<D3D12RootArguments>("Triangle");
   const auto aabb = s.local_signature_id<D3D12RootArguments>("AABB");

@@ -5,6 +5,7 @@
 
 #include "proceduray/scene/compile.hpp"
 #include "proceduray/scene/default_global_signature.hpp"
+#include "proceduray/scene/object.hpp"
 #include "proceduray/shader/field_list.hpp"
 #include "scene_fixtures.hpp"
 
@@ -25,11 +26,14 @@ PROCEDURAY_STRUCT(TestPayload, scalar, value);
 PROCEDURAY_STRUCT(OtherPayload, scalar, hit);
 PROCEDURAY_STRUCT(Arguments, scalar, index);
 PROCEDURAY_STRUCT(TestAttributes, scalar, normal);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<TestPayload, OtherPayload>, proceduray::RootComponent<>, proceduray::RootArguments<Arguments>,
+                                   proceduray::Attributes<TestAttributes>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 TriangleMesh triangle() { return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}}; }
 }  // namespace
 
 TEST_CASE("scene entities register by id and return typed ids") {
-  Scene s;
+  TestScene s;
   const RayId<TestPayload> radiance = s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   const RayId<OtherPayload> shadow = s.add_ray<OtherPayload>("Shadow", {.miss = "miss_shadow"});
   const HitGroupId tri = s.add_hit_group("Triangle", {.closest_hit = "chit"});
@@ -55,7 +59,7 @@ TEST_CASE("scene entities register by id and return typed ids") {
 }
 
 TEST_CASE("scene find returns a pointer or nullptr") {
-  Scene s;
+  TestScene s;
   s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   s.add_hit_group("Triangle", {});
   s.add_geometry("Plane", GeometryDesc::triangles(triangle()));
@@ -74,7 +78,7 @@ TEST_CASE("scene find returns a pointer or nullptr") {
 }
 
 TEST_CASE("scene duplicate ids throw naming the id") {
-  Scene s;
+  TestScene s;
   s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   CHECK_THROWS_WITH_AS(s.add_ray<TestPayload>("Radiance", {.miss = "other"}),
                        doctest::Contains("Scene::add_ray: duplicate ray id \"Radiance\""), DuplicateIdError);
@@ -89,7 +93,7 @@ TEST_CASE("scene duplicate ids throw naming the id") {
 }
 
 TEST_CASE("scene unknown ids name the nearest known ids") {
-  Scene s;
+  TestScene s;
   for (const char* name : {"Pacman", "Pacman_Shadow", "Mandelbulb", "Julia"}) {
     s.add_hit_group<TestAttributes>(name, {.kind = HitGroupKind::procedural, .intersection = "isect"});
   }
@@ -104,7 +108,7 @@ TEST_CASE("scene unknown ids name the nearest known ids") {
 }
 
 TEST_CASE("scene typed lookups check the registered type") {
-  Scene s;
+  TestScene s;
   s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   s.add_local_signature<Arguments>("Local");
   CHECK_NOTHROW(s.ray_id<TestPayload>("Radiance"));
@@ -115,7 +119,7 @@ TEST_CASE("scene typed lookups check the registered type") {
 }
 
 TEST_CASE("scene hit group kinds are checked when registered") {
-  Scene s;
+  TestScene s;
   CHECK_THROWS_WITH_AS(s.add_hit_group("Tri", {.closest_hit = "c", .intersection = "isect"}),
                        doctest::Contains("triangle hit group \"Tri\" has intersection shader \"isect\""), HitGroupKindError);
   CHECK_THROWS_WITH_AS(s.add_hit_group("Proc", {.kind = HitGroupKind::procedural, .closest_hit = "c"}),
@@ -126,7 +130,7 @@ TEST_CASE("scene hit group kinds are checked when registered") {
 }
 
 TEST_CASE("scene geometries sharing a BLAS get consecutive geometry indices") {
-  Scene s;
+  TestScene s;
   GeometryDesc a = GeometryDesc::procedural({Aabb{}}, {identity_transform(), identity_transform()});
   a.blas = "Shared";
   GeometryDesc b = GeometryDesc::procedural({Aabb{}}, {});
@@ -151,7 +155,7 @@ TEST_CASE("scene geometries sharing a BLAS get consecutive geometry indices") {
 }
 
 TEST_CASE("scene add_geometry refuses a tiny scale, a NaN transform and an inverted AABB naming call, id, index, fix") {
-  Scene s;
+  TestScene s;
   const InstanceTransform ok = identity_transform();
   const InstanceTransform tiny = instance_transform(glm::scale(glm::mat4(1.0f), glm::vec3(1e-11f)));
   InstanceTransform nan = identity_transform();
@@ -179,7 +183,7 @@ TEST_CASE("scene add_geometry refuses a tiny scale, a NaN transform and an inver
 }
 
 TEST_CASE("scene add_geometry that throws leaves the scene unchanged") {
-  Scene s;
+  TestScene s;
   GeometryDesc a = GeometryDesc::procedural({Aabb{}}, {identity_transform(), identity_transform()});
   a.blas = "Shared";
   s.add_geometry("A", a);
@@ -205,7 +209,7 @@ TEST_CASE("scene add_geometry that throws leaves the scene unchanged") {
 }
 
 TEST_CASE("scene geometries sharing a BLAS shares its update policy") {
-  Scene scene;
+  TestScene scene;
   const TriangleMesh mesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
   GeometryDesc moving = GeometryDesc::triangles(mesh);
   moving.blas = "shared";
@@ -231,7 +235,7 @@ TEST_CASE("scene geometries sharing a BLAS shares its update policy") {
 TEST_CASE("scene add_hit: hit group kind must match the geometry") {
   test::ReportScene r;
   test::build_report_scene(r);
-  Scene& t = r.scene;
+  auto& t = r.scene;
   CHECK_THROWS_WITH_AS(t.add_hit(r.radiance, r.scene.hit_group_id("Triangle"), r.pacman),
                        doctest::Contains("Scene::add_hit: procedural geometry \"Pacman\" bound to triangles hit group "
                                          "\"Triangle\", which has no intersection shader"),
@@ -244,7 +248,7 @@ TEST_CASE("scene add_hit: hit group kind must match the geometry") {
 TEST_CASE("scene add_hit: string ids are checked at run time") {
   test::ReportScene r;
   test::build_report_scene(r);
-  Scene& t = r.scene;
+  auto& t = r.scene;
   CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacman", "Procedural", test::TriangleRootArguments{}, "Pacman"),
                        doctest::Contains("local signature \"Procedural\" has root arguments type"), TypeMismatchError);
   CHECK_THROWS_WITH_AS(t.add_hit("Radiance", "Pacmam", "Procedural", test::ProceduralRootArguments{}, "Pacman"),
@@ -257,7 +261,7 @@ TEST_CASE("scene add_hit: string ids are checked at run time") {
 }
 
 TEST_CASE("scene entries keep the order they were added in and copies of their root arguments") {
-  Scene s;
+  TestScene s;
   const auto ray = s.add_ray<TestPayload>("Radiance", {.miss = "miss"});
   const auto group = s.add_hit_group("Triangle", {.closest_hit = "chit"});
   const auto plane = s.add_geometry("Plane", GeometryDesc::triangles(triangle(), {identity_transform(), identity_transform()}));
@@ -300,7 +304,7 @@ TEST_CASE("scene entries keep the order they were added in and copies of their r
 }
 
 TEST_CASE("scene set_max_recursion_depth refuses 0 and keeps what was declared") {
-  Scene s;
+  TestScene s;
   CHECK_FALSE(s.max_recursion_depth().has_value());
   CHECK_THROWS_WITH_AS(s.set_max_recursion_depth(0), doctest::Contains("Scene::set_max_recursion_depth: depth 0"), SceneError);
   CHECK_FALSE(s.max_recursion_depth().has_value());
@@ -312,7 +316,7 @@ TEST_CASE("scene set_global_signature with a desc registers it and selects it") 
   test::ReportScene r;
   test::build_report_scene(r);
   test::add_report_entries(r);  // selects "Global"
-  Scene& s = r.scene;
+  auto& s = r.scene;
   const auto signatures = s.global_signatures().size();
   const GlobalSignatureId g = s.set_global_signature(default_global_signature());
   CHECK(s.global_signatures().size() == signatures + 1);
@@ -350,4 +354,76 @@ TEST_CASE("scene without a global signature compiles to a plan without one") {
   const Plan plan = compile(r.scene);
   CHECK_FALSE(plan.pipeline().global_signature.valid());
   CHECK(plan.global_signature() == nullptr);
+}
+
+// ---- The interface: each registration's type is an alternative of its category (the rest do not
+// compile: compile_fail/scene_*.cpp); the maxima come from what the records use.
+namespace scene_interface_test {
+struct Radiance {
+  glm::vec4 colour;
+};
+PROCEDURAY_STRUCT(Radiance, scalar, colour);
+struct Big {  // a payload alternative no ray of the scene below uses
+  glm::vec4 a, b, c, d;
+};
+PROCEDURAY_STRUCT(Big, scalar, a, b, c, d);
+struct Material {
+  glm::vec4 albedo;
+};
+PROCEDURAY_STRUCT(Material, scalar, albedo);
+struct Huge {  // root arguments no entry uses
+  glm::mat4 m[4];
+};
+PROCEDURAY_STRUCT(Huge, scalar, m);
+struct Hit {
+  glm::vec3 normal;
+};
+PROCEDURAY_STRUCT(Hit, scalar, normal);
+struct Wide {  // attributes of a hit group no record uses
+  glm::vec4 a, b;
+};
+PROCEDURAY_STRUCT(Wide, scalar, a, b);
+using Interface = proceduray::ShaderInterface<proceduray::Payload<Radiance, Big>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<Material, Huge>,
+                                              proceduray::Attributes<Hit, Wide>>;
+}  // namespace scene_interface_test
+
+using namespace scene_interface_test;
+namespace pr = proceduray;
+
+
+
+// What the interface lists: the largest alternatives, which the scene below does not use.
+static_assert(Interface::max_payload_size == sizeof(Big) && Interface::max_root_arguments_size == sizeof(Huge) &&
+              Interface::max_attribute_size == sizeof(Wide));
+
+TEST_CASE("Scene<Interface> registers each category's alternatives and compile() sizes from those records use") {
+  pr::Scene<Interface> scene;
+  const auto radiance = scene.add_ray<Radiance>("radiance", {.miss = "sky.rmiss"});
+  const auto material = scene.add_local_signature<Material>("material");
+  // The report's style: the alternative a RootArguments value holds is the record type.
+  const pr::LocalSignatureId<> huge = scene.add_local_signature("huge", Interface::RootArgumentsSet(Huge{}));
+  CHECK(scene.local_signature(huge).arguments_size == sizeof(Huge));
+  CHECK(scene.local_signature(huge).arguments_type == typeid(Huge));
+  CHECK(scene.local_signature_id<Huge>("huge") == pr::LocalSignatureId<Huge>(huge.index()));
+  scene.add_hit_group<Wide>("unused", {.kind = pr::HitGroupKind::procedural, .intersection = "wide.rint"});
+  scene.add_raygen("camera.rgen");
+  pr::add_object<Hit>(scene, "ball", {.geometry = pr::GeometryDesc::procedural({pr::Aabb{}}), .intersection = "ball.rint",
+                                      .closest_hit = {{radiance, "ball.rchit"}}},
+                      material, {Material{glm::vec4(1.0f)}});
+  const pr::Plan plan = pr::compile(scene);
+  // The maxima come from what the records use, not from every alternative listed (static_assert above).
+  CHECK(plan.pipeline().max_payload_size == sizeof(Radiance));
+  CHECK(plan.pipeline().max_root_arguments_size[2] == sizeof(Material));
+  CHECK(plan.pipeline().max_attribute_size == sizeof(Hit));
+  // Unused entities are not planned.
+  for (const pr::PlannedGroup& g : plan.pipeline().groups) CHECK(g.name != "unused");
+}
+
+TEST_CASE("Scene<Interface> keeps the run-time checks") {
+  pr::Scene<Interface> scene;
+  scene.add_ray<Radiance>("radiance", {.miss = "sky.rmiss"});
+  CHECK_THROWS_AS(scene.add_ray<Radiance>("radiance", {.miss = "sky.rmiss"}), pr::DuplicateIdError);
+  CHECK_THROWS_WITH_AS(scene.add_local_signature("", Interface::RootArgumentsSet(Material{})),
+                       doctest::Contains("empty local signature id"), pr::SceneError);
 }

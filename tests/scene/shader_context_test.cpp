@@ -18,6 +18,9 @@ struct Hit {
   glm::vec3 normal;
 };
 PROCEDURAY_STRUCT(Hit, scalar, normal);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Light>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<Hit>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace shader_context_test
 
 using namespace proceduray;
@@ -28,7 +31,7 @@ namespace {
 /// Rays light and shadow; a procedural ball whose two groups share "ball.rint"; `tlas` names the
 /// acceleration structure binding or leaves it unnamed.
 Plan plan_of(bool tlas = true) {
-  Scene scene;
+  TestScene scene;
   auto light = scene.add_ray<Light>("light", {.miss = "sky.rmiss"});
   auto shadow = scene.add_ray<Light>("shadow", {.miss = "sky.rmiss"});  // one miss shader: one payload type
   scene.add_hit_group<Hit>("ball", {.kind = HitGroupKind::procedural, .closest_hit = "ball.rchit", .intersection = "ball.rint"});

@@ -40,12 +40,16 @@ struct TwoArgs {
   proceduray::MeshRef<Vertex> b;
 };
 PROCEDURAY_STRUCT(TwoArgs, scalar, a, b);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Probe>, proceduray::RootComponent<>, proceduray::RootArguments<MeshArgs, OtherArgs, TwoArgs>,
+                                   proceduray::Attributes<proceduray::test::FractalAttributes>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace vertex_data_test
 
 using namespace proceduray;
 using namespace proceduray::test;
 using vertex_data_test::MeshArgs;
 using vertex_data_test::Vertex;
+using vertex_data_test::TestScene;
 
 namespace {
 
@@ -59,7 +63,7 @@ std::vector<Vertex> corners() {
 
 /// A scene with a quad floor (with vertex data) whose record holds a MeshRef, and a procedural ball.
 struct MeshScene {
-  Scene s;
+  TestScene s;
   RayId<vertex_data_test::Probe> ray = s.add_ray<vertex_data_test::Probe>("r", {.miss = "m"});
   HitGroupId floor_group = s.add_hit_group("floor", {.closest_hit = "floor.rchit"});
   LocalSignatureId<MeshArgs> sig = s.add_local_signature<MeshArgs>("mesh");
@@ -87,7 +91,7 @@ TEST_CASE("vertex_data: of() copies the structs and names their type") {
 }
 
 TEST_CASE("vertex_data: add_geometry refuses it on procedural geometry and with another count") {
-  Scene s;
+  TestScene s;
   const std::vector<Vertex> v = corners();
   GeometryDesc short_by_one = GeometryDesc::triangles(quad);
   short_by_one.vertex_data = VertexData::of(std::span<const Vertex>(v.data(), 3));

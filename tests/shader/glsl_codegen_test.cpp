@@ -49,7 +49,7 @@ PROCEDURAY_STRUCT(FloatRef, scalar, f);
 }  // namespace clash_b
 
 TEST_CASE("interface declarations match the golden text") {
-  CHECK(proceduray::glsl_declarations<Interface>() == read_golden("interface.glsl"));
+  CHECK(proceduray::glsl_declarations(Interface::types) == read_golden("interface.glsl"));
 }
 
 TEST_CASE("nested structs arrays addresses and matrices match the golden text") {
@@ -67,28 +67,28 @@ TEST_CASE("structs come after the structs they contain") {
 }
 
 TEST_CASE("generation is deterministic") {
-  CHECK(proceduray::glsl_declarations<Interface>() == proceduray::glsl_declarations<Interface>());
+  CHECK(proceduray::glsl_declarations(Interface::types) == proceduray::glsl_declarations(Interface::types));
 }
 
 TEST_CASE("payload declarations carry the payload location") {
-  CHECK(proceduray::glsl_ray_payload<Interface, RadiancePayload>("radiance") ==
+  CHECK(proceduray::glsl_ray_payload(Interface::payload_location<RadiancePayload>(), type_ops<RadiancePayload>, "radiance") ==
         "layout(location = 0) rayPayloadEXT RadiancePayload radiance;\n");
-  CHECK(proceduray::glsl_ray_payload<Interface, ShadowPayload>("shadow") ==
+  CHECK(proceduray::glsl_ray_payload(Interface::payload_location<ShadowPayload>(), type_ops<ShadowPayload>, "shadow") ==
         "layout(location = 1) rayPayloadEXT ShadowPayload shadow;\n");
-  CHECK(proceduray::glsl_ray_payload_in<Interface, ShadowPayload>("shadow") ==
+  CHECK(proceduray::glsl_ray_payload(Interface::payload_location<ShadowPayload>(), type_ops<ShadowPayload>, "shadow", true) ==
         "layout(location = 1) rayPayloadInEXT ShadowPayload shadow;\n");
 }
 
 TEST_CASE("hit attributes and shader records are declared from their types") {
-  CHECK(proceduray::glsl_hit_attribute<Interface, SphereHit>("hit") == "hitAttributeEXT SphereHit hit;\n");
-  CHECK(proceduray::glsl_root_arguments<Interface, SphereRecord>("arguments") ==
+  CHECK(proceduray::glsl_hit_attribute(type_ops<SphereHit>, "hit") == "hitAttributeEXT SphereHit hit;\n");
+  CHECK(proceduray::glsl_root_arguments(type_ops<SphereRecord>, "arguments") ==
         "layout(shaderRecordEXT, scalar) buffer SphereRecordRootArguments {\n"
         "    SphereRef spheres;\n"
         "    vec4 albedo;\n"
         "    uint count;\n"
         "    uint pad;\n"
         "} arguments;\n");
-  CHECK(proceduray::glsl_root_arguments<Interface, Material430>("material").starts_with(
+  CHECK(proceduray::glsl_root_arguments(type_ops<Material430>, "material").starts_with(
       "layout(shaderRecordEXT, std430) buffer Material430RootArguments {\n    mat4 transform;\n"));
 }
 

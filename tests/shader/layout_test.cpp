@@ -242,11 +242,11 @@ TEST_CASE("glslang offsets equal the computed and C++ offsets for the interface 
 TEST_CASE("the shaderRecordEXT block of a closest-hit shader has the C++ offsets") {
   static const Glslang process;
   const std::string source =
-      "#version 460\n" + proceduray::glsl_declarations<Interface>() +
-      proceduray::glsl_ray_payload_in<Interface, RadiancePayload>("payload") +
-      proceduray::glsl_ray_payload<Interface, ShadowPayload>("shadow") +
-      proceduray::glsl_hit_attribute<Interface, SphereHit>("hit") +
-      proceduray::glsl_root_arguments<Interface, SphereRecord>("arguments") +
+      "#version 460\n" + proceduray::glsl_declarations(Interface::types) +
+      proceduray::glsl_ray_payload(Interface::payload_location<RadiancePayload>(), type_ops<RadiancePayload>, "payload", true) +
+      proceduray::glsl_ray_payload(Interface::payload_location<ShadowPayload>(), type_ops<ShadowPayload>, "shadow") +
+      proceduray::glsl_hit_attribute(type_ops<SphereHit>, "hit") +
+      proceduray::glsl_root_arguments(type_ops<SphereRecord>, "arguments") +
       "void main() {\n"
       "    payload.color = arguments.albedo.rgb * hit.normal * arguments.spheres.data[arguments.count - 1].radius;\n"
       "    shadow.occluded = 0;\n"

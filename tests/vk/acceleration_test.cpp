@@ -99,7 +99,7 @@ TEST_CASE("build_blases: a scene's Static BLASes cost two submits in all, with t
   // SceneAcceleration builds its Static BLASes with build_blases: K of them, then the TLAS.
   TestContext t;
   renderer_scene::RendererScene s;  // a Static floor (triangles) and Static balls (boxes): 2 BLASes
-  const Scene& scene = s.table(t.ctx);
+  const auto& scene = s.table(t.ctx);
   const Plan plan = compile(scene);
   REQUIRE(plan.blases().size() == 2);
   const std::uint64_t before = t.ctx.submit_count();

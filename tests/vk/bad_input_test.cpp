@@ -37,8 +37,8 @@ struct Built {
 };
 
 /// RendererScene's table with the tints storage buffer indexed per TLAS instance (3 instances).
-Scene per_instance_scene(RendererScene& s, const vk::Context& ctx) {
-  Scene scene = s.table(ctx);
+renderer_scene::Scene per_instance_scene(RendererScene& s, const vk::Context& ctx) {
+  auto scene = s.table(ctx);
   constexpr StorageSlot<renderer_scene::Tint> tints{.binding = 3, .name = "tints", .per_instance = true};
   scene.set_global_signature(scene.add_global_signature(
       "per_instance", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
@@ -77,7 +77,7 @@ TEST_CASE("bad input: a storage buffer set through a slot of another type") {
 TEST_CASE("bad input: a per-instance storage buffer with fewer elements than instances") {
   TestContext t;
   RendererScene s;
-  const Scene scene = per_instance_scene(s, t.ctx);
+  const auto scene = per_instance_scene(s, t.ctx);
   vk::Renderer r(t.ctx, scene, RendererScene::options());
   constexpr StorageSlot<renderer_scene::Tint> tints{.binding = 3, .name = "tints", .per_instance = true};
   const std::vector<renderer_scene::Tint> two(2);
@@ -91,7 +91,7 @@ TEST_CASE("bad input: a per-instance storage buffer with fewer elements than ins
 TEST_CASE("bad input: adding an instance a per-instance buffer is too short for, or no record serves, and removing twice") {
   TestContext t;
   RendererScene s;
-  const Scene scene = per_instance_scene(s, t.ctx);
+  const auto scene = per_instance_scene(s, t.ctx);
   vk::Renderer r(t.ctx, scene, RendererScene::options());
   constexpr StorageSlot<renderer_scene::Tint> tints{.binding = 3, .name = "tints", .per_instance = true};
   const GeometryId floor = scene.geometry_id("floor");
@@ -170,7 +170,7 @@ TEST_CASE("bad input: a NaN instance transform") {
 TEST_CASE("bad input: moving a geometry added to the scene after the renderer was made") {
   TestContext t;
   RendererScene s(UpdatePolicy::DynamicTransform);
-  Scene scene = s.table(t.ctx);
+  auto scene = s.table(t.ctx);
   vk::Renderer r(t.ctx, scene, RendererScene::options());
   GeometryDesc later = GeometryDesc::procedural({Aabb{}});
   later.update = UpdatePolicy::DynamicTransform;
@@ -199,7 +199,7 @@ TEST_CASE("bad input: a Static geometry moved") {
 TEST_CASE("bad input: a second raygen") {
   TestContext t;
   RendererScene s;
-  Scene scene = s.table(t.ctx);
+  auto scene = s.table(t.ctx);
   scene.add_raygen("other.rgen");
   CHECK_THROWS_WITH_AS(vk::Renderer(t.ctx, scene, RendererScene::options()),
                        Contains("Renderer: the scene has 2 raygen entries (first \"scene.rgen\", second \"other.rgen\"); a "
@@ -210,7 +210,7 @@ TEST_CASE("bad input: a second raygen") {
 TEST_CASE("bad input: a shader file that is not in any shader folder") {
   TestContext t;
   RendererScene s;
-  Scene scene = s.scene();
+  auto scene = s.scene();
   scene.add_raygen("missing.rgen");
   scene.add_hit(scene.ray_id("primary"), scene.hit_group_id("floor"), scene.geometry_id("floor"));
   scene.add_hit(scene.ray_id("primary"), scene.hit_group_id("ball"), s.ball());
@@ -262,7 +262,7 @@ TEST_CASE("bad input: changing the scene under a live renderer changes nothing i
   // while it was built: later edits cannot make it read past what it built.
   TestContext t;
   RendererScene s;
-  Scene scene = s.table(t.ctx);
+  auto scene = s.table(t.ctx);
   vk::Renderer r(t.ctx, scene, RendererScene::options());
   renderer_scene::prepare(r, width, height);
   const vk::Frame before = r.render(width, height);

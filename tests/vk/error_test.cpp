@@ -66,7 +66,7 @@ void check_caught(Call call, const std::string& expected) {
 }  // namespace
 
 TEST_CASE("error every library exception is a proceduray::Error and its std base") {
-  proceduray::Scene scene;
+  proceduray::Scene<proceduray::ShaderInterface<proceduray::Payload<>, proceduray::RootComponent<>, proceduray::RootArguments<>, proceduray::Attributes<>>> scene;
   check_caught<std::logic_error>([&] { (void)scene.geometry_id("Pacmn"); },
                                  "Scene::geometry_id: unknown geometry id \"Pacmn\"");
   scene.add_raygen("scene.rgen");

@@ -64,6 +64,9 @@ struct Box {
   glm::vec4 hi;
 };
 PROCEDURAY_STRUCT(Box, scalar, lo, hi);
+using SceneInterface = proceduray::ShaderInterface<proceduray::Payload<Probe, Shadow, TintCall>, proceduray::RootComponent<Constants, Box>, proceduray::RootArguments<Paint, TintArgs>,
+                                   proceduray::Attributes<BallHit>>;
+using Scene = proceduray::Scene<SceneInterface>;
 
 constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
 constexpr pr::StorageSlot<Box> boxes_slot{.binding = 3, .name = "boxes"};
@@ -156,15 +159,15 @@ class FeaturesScene {
     m_tint_args = m_scene.add_local_signature<TintArgs>("tint_args");
   }
 
-  const pr::Scene& scene() const { return m_scene; }
+  const Scene& scene() const { return m_scene; }
   pr::GeometryId ball(std::size_t i) const { return m_balls.at(i); }
   pr::GeometryId slab() const { return m_slab; }
   pr::GeometryId floor() const { return m_floor; }
 
   /// The scene with its entries.
-  const pr::Scene& table(const pr::vk::Context&) {
+  const Scene& table(const pr::vk::Context&) {
     m_entries = m_scene;
-    pr::Scene& t = m_entries;
+    Scene& t = m_entries;
     t.add_raygen("scene.rgen");
     t.set_global_signature(m_scene.global_signature_id("global"));
     if (m_config.recursion_depth != 0) t.set_max_recursion_depth(m_config.recursion_depth);
@@ -187,7 +190,7 @@ class FeaturesScene {
 
  private:
   Config m_config;
-  pr::Scene m_scene;
+  Scene m_scene;
   pr::RayId<Probe> m_primary;
   pr::RayId<Shadow> m_shadow;
   pr::GeometryId m_floor, m_slab;
@@ -195,7 +198,7 @@ class FeaturesScene {
   pr::CallableId<TintCall> m_tint;
   pr::LocalSignatureId<Paint> m_paint;
   pr::LocalSignatureId<TintArgs> m_tint_args;
-  pr::Scene m_entries;  // m_scene and the entries of the last table() call
+  Scene m_entries;  // m_scene and the entries of the last table() call
 };
 
 }  // namespace features_scene

@@ -23,6 +23,9 @@ struct MeshArgs {
   std::uint32_t pad;             // a MeshRef is 8-aligned: the struct's size is a multiple of 8
 };
 PROCEDURAY_STRUCT(MeshArgs, scalar, mesh, mode, pad);
+using MeshInterface =
+    pr::ShaderInterface<pr::Payload<renderer_scene::Colour>, pr::RootComponent<renderer_scene::Constants, renderer_scene::Tint>,
+                        pr::RootArguments<MeshArgs>, pr::Attributes<>>;
 }  // namespace mesh_buffers_test
 
 using namespace proceduray;
@@ -46,7 +49,7 @@ glm::vec3 corner_normal(std::size_t i) {
 /// The renderer over RendererScene's rays, raygen and miss, with the floor's hit record reading its mesh.
 struct MeshRender {
   TestContext t;
-  Scene scene;
+  Scene<mesh_buffers_test::MeshInterface> scene;
   std::optional<vk::Renderer> renderer;
   explicit MeshRender(std::uint32_t mode) {
     const auto primary = scene.add_ray<rs::Colour>("primary", {.miss = "sky.rmiss"});
@@ -138,7 +141,7 @@ TEST_CASE("mesh buffers: only geometries whose records read a mesh get buffers")
   CHECK(buffers.addresses()[0].vertices != 0);
   CHECK(buffers.addresses()[0].triangles != 0);
   CHECK(buffers.bytes() >= 4 * sizeof(MeshVertex) + 6 * sizeof(std::uint32_t));
-  Scene unread = m.scene;  // a geometry with vertex data whose records do not read it
+  auto unread = m.scene;  // a geometry with vertex data whose records do not read it
   GeometryDesc plain = GeometryDesc::triangles(floor_mesh);
   std::vector<MeshVertex> v(4);
   plain.vertex_data = VertexData::of(std::span<const MeshVertex>(v));

@@ -22,10 +22,13 @@ struct BallHit {
   glm::vec3 normal;
 };
 PROCEDURAY_STRUCT(BallHit, scalar, normal);
+using SceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<BallHit>>;
+using Scene = proceduray::Scene<SceneInterface>;
 
 /// One unit ball at the origin, orthographic rays along +z (tests/vk/shaders/outputs).
-pr::Scene ball_scene(pr::OutputSet outputs) {
-  pr::Scene s;
+Scene ball_scene(pr::OutputSet outputs) {
+  Scene s;
   const auto primary = s.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
   s.set_global_signature(pr::default_global_signature());
   s.add_raygen("ortho.rgen");
@@ -50,7 +53,7 @@ using namespace output_images_test;
 TEST_CASE("output images hold the camera ray's t, normal, ids, steps and flags per pixel") {
   TestContext t;
   constexpr std::uint32_t size = 48;
-  const Scene scene = ball_scene({Output::t, Output::normal, Output::ids, Output::steps, Output::flags});
+  const auto scene = ball_scene({Output::t, Output::normal, Output::ids, Output::steps, Output::flags});
   vk::Renderer renderer(t.ctx, scene, options());
   const vk::Frame f = renderer.render(size, size);
   const std::size_t n = std::size_t{size} * size;
@@ -101,7 +104,7 @@ TEST_CASE("output images hold the camera ray's t, normal, ids, steps and flags p
 TEST_CASE("output views of submitted frames equal the outputs render() copies, per frame in flight") {
   TestContext t;
   constexpr std::uint32_t size = 32;
-  const Scene scene = ball_scene({Output::t, Output::steps});
+  const auto scene = ball_scene({Output::t, Output::steps});
   vk::Renderer renderer(t.ctx, scene, options());
   const vk::Frame f = renderer.render(size, size);
   const vk::FrameTicket a = renderer.submit(size, size, vk::Readback::all);
@@ -138,7 +141,7 @@ TEST_CASE("output images exist only for the outputs asked for and none give an e
 }
 
 TEST_CASE("output helpers of a scene without outputs leave the SPIR-V as it is without the calls") {
-  const Scene scene = ball_scene({});
+  const auto scene = ball_scene({});
   const Plan plan = compile(scene);
   const auto spirv = [&](ShaderStage stage, const std::string& name, const std::string& body) {
     return vk::compile_glsl({.stage = stage, .name = name, .code = "#version 460\n" + body,

@@ -30,6 +30,9 @@ struct Huge {
   glm::mat4 a, b, c, d, e, f, g, h;  // 512 bytes: past every device's maxPushConstantsSize we run on (256)
 };
 PROCEDURAY_STRUCT(Huge, scalar, a, b, c, d, e, f, g, h);
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<Knobs, Other, Huge>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using TestScene = proceduray::Scene<TestSceneInterface>;
 }  // namespace renderer_push_test
 
 using namespace renderer_push_test;
@@ -39,7 +42,7 @@ constexpr PushConstantSlot<Knobs> knobs{.name = "knobs"};
 
 /// One ray type, no geometry (every ray misses), the global signature's push constants `push`.
 struct PushScene {
-  Scene scene;
+  TestScene scene;
   explicit PushScene(PushConstantBlock push) {
     scene.add_ray<Colour>("primary", {.miss = "push.rmiss"});
     scene.set_global_signature({.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
@@ -47,7 +50,7 @@ struct PushScene {
                                 .push_constants = push});
     scene.add_raygen("push.rgen");
   }
-  const Scene& build(const vk::Context&) const { return scene; }
+  const TestScene& build(const vk::Context&) const { return scene; }
   static vk::RendererOptions options() { return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "push"}}; }
 };
 }  // namespace

@@ -41,6 +41,9 @@ struct Tint {
   glm::vec4 rgb;
 };
 PROCEDURAY_STRUCT(Tint, scalar, rgb);
+using SceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<Constants, Tint>, proceduray::RootArguments<Paint>,
+                                   proceduray::Attributes<BallHit>>;
+using Scene = proceduray::Scene<SceneInterface>;
 
 constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
 constexpr pr::StorageSlot<Tint> tints_slot{.binding = 3, .name = "tints"};
@@ -84,11 +87,11 @@ class RendererScene {
     m_paint = m_scene.add_local_signature<Paint>("paint");
   }
 
-  const pr::Scene& scene() const { return m_scene; }
+  const Scene& scene() const { return m_scene; }
   pr::GeometryId ball() const { return m_ball; }
 
   /// The scene with its entries; `with_ball_entries = false` leaves the balls unbound.
-  const pr::Scene& table(const pr::vk::Context&, bool with_ball_entries = true) {
+  const Scene& table(const pr::vk::Context&, bool with_ball_entries = true) {
     m_entries = m_scene;
     m_entries.add_raygen("scene.rgen");
     m_entries.set_global_signature(m_scene.global_signature_id("global"));
@@ -107,11 +110,11 @@ class RendererScene {
   }
 
  private:
-  pr::Scene m_scene;
+  Scene m_scene;
   pr::GeometryId m_floor;
   pr::GeometryId m_ball;
   pr::LocalSignatureId<Paint> m_paint;
-  pr::Scene m_entries;  // m_scene and the entries of the last table() call
+  Scene m_entries;  // m_scene and the entries of the last table() call
 };
 
 }  // namespace renderer_scene

@@ -335,7 +335,7 @@ TEST_CASE("renderer a ray without a miss shader leaves a missed payload as the r
   // shader; the raygen must initialise the payload before traceRayEXT.
   TestContext t;
   namespace rs = renderer_scene;
-  Scene scene;
+  rs::Scene scene;
   const auto primary = scene.add_ray<rs::Colour>("primary", {});
   const auto floor_group = scene.add_hit_group("floor", {.kind = HitGroupKind::triangles, .closest_hit = "floor.rchit"});
   const TriangleMesh quad{{{-6, -1, -6}, {6, -1, -6}, {6, -1, 6}, {-6, -1, 6}}, {0, 2, 1, 0, 3, 2}};

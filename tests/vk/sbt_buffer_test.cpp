@@ -35,7 +35,7 @@ vk::Pipeline small_pipeline(const vk::Context& ctx) {
   auto add = [&](vk::ShaderStage s, const char* code) {
     std::string declarations;
     if (s == vk::ShaderStage::closest_hit) {
-      declarations = glsl_declarations<Interface>() + glsl_root_arguments<Interface, ColourRecord>("arguments");
+      declarations = glsl_declarations(Interface::types) + glsl_root_arguments(type_ops<ColourRecord>, "arguments");
     }
     return desc.add_shader(s, vk::compile_glsl({.stage = s, .name = "sbt_test", .code = code,
                                                 .preamble = std::move(declarations)}));

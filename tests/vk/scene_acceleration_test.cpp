@@ -16,7 +16,7 @@ glm::ivec2 where(glm::vec3 p) { return project(renderer_scene::constants(width, 
 TEST_CASE("scene parts alone trace the renderer's frame into the caller's command buffer") {
   TestContext t;
   RendererScene s(UpdatePolicy::DynamicTransform);
-  const Scene& scene = s.table(t.ctx);
+  const auto& scene = s.table(t.ctx);
   const Plan plan = compile(scene);
   vk::SceneAcceleration structures(t.ctx, scene, plan);
   vk::Bindings bindings(t.ctx, plan.global_signature(), structures.tlas().structure());
@@ -64,7 +64,7 @@ TEST_CASE("scene parts alone trace the renderer's frame into the caller's comman
 TEST_CASE("scene parts name the call the user made in their errors") {
   TestContext t;
   RendererScene s;
-  const Scene& scene = s.table(t.ctx);
+  const auto& scene = s.table(t.ctx);
   const Plan plan = compile(scene);
   vk::SceneAcceleration structures(t.ctx, scene, plan);
   CHECK_THROWS_WITH_AS(structures.set_transform(s.ball(), 0, glm::mat4(1.0f)),

@@ -16,6 +16,9 @@ struct TexArgs {
   std::uint32_t layer;  // which of `grounds`
 };
 PROCEDURAY_STRUCT(TexArgs, scalar, repeat, layer);
+using TexInterface = proceduray::ShaderInterface<
+    proceduray::Payload<renderer_scene::Colour>, proceduray::RootComponent<renderer_scene::Constants, renderer_scene::Tint>,
+    proceduray::RootArguments<TexArgs>, proceduray::Attributes<>>;
 }  // namespace texture_test
 
 using namespace proceduray;
@@ -73,7 +76,7 @@ TextureData sky_cube() {
 /// RendererScene's camera and constants over a floor whose hit shader samples `grounds`.
 struct Textured {
   TestContext t;
-  Scene scene;
+  Scene<texture_test::TexInterface> scene;
   std::optional<vk::Renderer> renderer;
   explicit Textured(TexArgs args, bool set_all = true) {
     const auto primary = scene.add_ray<rs::Colour>("primary", {.miss = "cube_sky.rmiss"});

@@ -29,13 +29,15 @@ struct FarView {
 };
 PROCEDURAY_STRUCT(FarView, scalar, eye, forward, right, up);
 
+using FarInterface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<FarView>, pr::RootArguments<>,
+                                         pr::Attributes<BallHit>>;
 constexpr pr::PushConstantSlot<FarView> view_slot{.name = "view"};
 constexpr std::uint32_t size = 24;
 constexpr double pixel_angle = 1e-3;
 constexpr double missed = 1e9;  // a ray the device missed: far beyond every bound below
 
-pr::Scene far_scene(const pr::InstanceTransform& placement) {
-  pr::Scene s;
+pr::Scene<FarInterface> far_scene(const pr::InstanceTransform& placement) {
+  pr::Scene<FarInterface> s;
   const auto primary = s.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
   s.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                        {pr::BindingKind::storage_image, 1, 0, 1, "image"}},
@@ -58,7 +60,7 @@ pr::accuracy::Distribution errors(const pr::vk::Context& ctx, double scale, bool
   const glm::dvec3 up = glm::cross(side, ahead);
   const FarView view{glm::vec4(origin.point(eye), 1.0f), glm::vec4(glm::vec3(ahead), 0.0f),
                      glm::vec4(glm::vec3(pixel_angle * side), 0.0f), glm::vec4(glm::vec3(pixel_angle * up), 0.0f)};
-  const pr::Scene scene = far_scene(origin.instance(world));
+  const auto scene = far_scene(origin.instance(world));
   pr::vk::Renderer renderer(ctx, scene, {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "far"}});
   renderer.set_push(view_slot, view);
   const pr::vk::Frame f = renderer.render(size, size);

@@ -38,6 +38,9 @@ struct Colour {
   glm::vec3 rgb;
 };
 PROCEDURAY_STRUCT(Colour, scalar, rgb);
+using BenchSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using BenchScene = proceduray::Scene<BenchSceneInterface>;
 }  // namespace bench
 
 namespace {
@@ -101,7 +104,7 @@ int main(int argc, char** argv) {
   pr::vk::Context ctx({.device = preference});
   const std::vector<pr::Aabb> boxes = grid(boxes_per_side);
 
-  pr::Scene scene;
+  bench::BenchScene scene;
   const auto primary = scene.add_ray<bench::Colour>("primary", {.miss = "bench.rmiss"});
   const auto group = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
                                                   .intersection = "bench.rint"});

@@ -24,6 +24,9 @@ struct InstanceArgs { std::uint32_t instance; std::uint32_t material; float scal
 PROCEDURAY_STRUCT(Payload, scalar, color);
 PROCEDURAY_STRUCT(Attributes, scalar, normal);
 PROCEDURAY_STRUCT(InstanceArgs, scalar, instance, material, scale, pad);
+using BenchSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Payload>, proceduray::RootComponent<>, proceduray::RootArguments<InstanceArgs>,
+                                   proceduray::Attributes<Attributes>>;
+using BenchScene = proceduray::Scene<BenchSceneInterface>;
 
 /// VmHWM (peak resident set) in KiB, from /proc; 0 where unavailable.
 long peak_kib() {
@@ -45,7 +48,7 @@ int main(int argc, char** argv) {
   auto ms = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
 
   const auto t0 = clock::now();
-  proceduray::Scene scene;
+  BenchScene scene;
   const auto radiance = scene.add_ray<Payload>("Radiance", {.miss = "miss"});
   const auto shadow = scene.add_ray<Payload>("Shadow", {.miss = "miss_shadow"});
   const auto group = scene.add_hit_group<Attributes>("Sphere", {.kind = proceduray::HitGroupKind::procedural,

@@ -70,6 +70,9 @@ struct Colour {
   glm::vec3 rgb;
 };
 PROCEDURAY_STRUCT(Colour, scalar, rgb);
+using BenchSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using BenchScene = proceduray::Scene<BenchSceneInterface>;
 }  // namespace soak
 
 namespace {
@@ -163,7 +166,7 @@ int run(const Options& o, std::uint32_t width, std::uint32_t height) {
                                  : o.device == "gpu" ? pr::vk::DevicePreference::gpu
                                                      : pr::vk::DevicePreference::automatic,
                        .validation = o.validation});
-  pr::Scene scene;
+  soak::BenchScene scene;
   const auto primary = scene.add_ray<soak::Colour>("primary", {.miss = "bench.rmiss"});
   const auto box = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
                                                 .intersection = "bench.rint"});

@@ -37,6 +37,9 @@ struct Colour {
   glm::vec3 rgb;
 };
 PROCEDURAY_STRUCT(Colour, scalar, rgb);
+using BenchSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>, proceduray::RootArguments<>,
+                                   proceduray::Attributes<>>;
+using BenchScene = proceduray::Scene<BenchSceneInterface>;
 }  // namespace bench
 
 namespace {
@@ -72,7 +75,7 @@ double median(std::vector<double> v) {
 
 void run(const pr::vk::Context& ctx, Case which, std::uint32_t size, std::size_t instances, std::size_t boxes,
          int frames, bool scatter) {
-  pr::Scene scene;
+  bench::BenchScene scene;
   const auto primary = scene.add_ray<bench::Colour>("primary", {.miss = "bench.rmiss"});
   const auto group = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
                                                   .intersection = "bench.rint"});

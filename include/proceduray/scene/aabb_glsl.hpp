@@ -38,7 +38,7 @@ PROCEDURAY_DECL std::string glsl_corners(const std::string& name, const std::vec
 /// `<id>_aabb_min` and `<id>_aabb_max` of every procedural geometry (arrays and `<id>_aabb_count`
 /// for a geometry of several boxes), in registration order, inside an #ifndef guard; "" when
 /// there is none.
-PROCEDURAY_DECL std::string glsl_aabb_consts(const Scene& scene);
+PROCEDURAY_DECL std::string glsl_aabb_consts(const detail::SceneCore& scene);
 
 }  // namespace proceduray
 
@@ -63,7 +63,7 @@ PROCEDURAY_DECL std::string glsl_corners(const std::string& name, const std::vec
 
 namespace proceduray {
 
-PROCEDURAY_DECL std::string glsl_aabb_consts(const Scene& scene) {
+PROCEDURAY_DECL std::string glsl_aabb_consts(const detail::SceneCore& scene) {
   std::string out;
   for (std::uint32_t g = 0; g < scene.geometries().size(); ++g) {
     const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;

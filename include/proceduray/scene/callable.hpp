@@ -1,6 +1,6 @@
 // A callable shader: registered by id with the type of the data it is called with.
 //
-//   struct TintCall { glm::vec3 colour; };  PROCEDURAY_STRUCT(TintCall, scalar, colour);
+//   // TintCall: a registered struct, an alternative of the interface's Payload<...>
 //   auto tint = scene.add_callable<TintCall>("tint", {.shader = "tint.rcall"});
 //   scene.add_callable_record(tint, tint_signature, TintArgs{...});   // optional root arguments
 //

@@ -33,7 +33,7 @@ namespace proceduray {
 /// Fills a Plan from a Scene, one pass per method; used by compile().
 struct PlanBuilder {
   static constexpr const char* op = "compile";
-  const Scene& s;
+  const detail::SceneCore& s;
   Plan out{};
   std::uint32_t rays = 0;
   // Entries sorted by what they bind (indices into the scene's entries).
@@ -41,7 +41,7 @@ struct PlanBuilder {
   std::array<std::vector<std::uint32_t>, 2> defaults;  // per hit-group kind, per ray
   std::vector<std::uint32_t> specific_start, specific;  // per TLAS instance: its own entries
 
-  explicit PlanBuilder(const Scene& scene) : s(scene), rays(scene.rays().size()) {}
+  explicit PlanBuilder(const detail::SceneCore& scene) : s(scene), rays(scene.rays().size()) {}
 
   std::string ray_name(std::uint32_t r) const { return detail::quote_id(s.rays().name(r)); }
   std::string geometry_name(std::uint32_t g) const { return detail::quote_id(s.geometries().name(g)); }
@@ -243,9 +243,18 @@ struct PlanBuilder {
 
 /// Stages and groups that records use, the record groups, and the maxima over used entities.
 
-/// The scene's Plan: records, instances, pipeline plan and GLSL declarations. Throws
-/// MissingEntryError, DuplicateIdError, SceneError (no raygen), DeviceLimitError (24-bit fields).
-PROCEDURAY_DECL Plan compile(const Scene& scene);
+namespace detail {
+/// compile()'s body, once for every interface.
+PROCEDURAY_DECL Plan compile_core(const SceneCore& scene);
+}  // namespace detail
+
+/// The scene's Plan: records, instances, pipeline plan and GLSL declarations (the interface's
+/// alternatives in every stage). Throws MissingEntryError, DuplicateIdError, SceneError (no
+/// raygen), DeviceLimitError (24-bit fields).
+template <class Interface>
+Plan compile(const Scene<Interface>& scene) {
+  return detail::compile_core(scene);
+}
 
 }  // namespace proceduray
 
@@ -372,7 +381,7 @@ PROCEDURAY_DECL void PlanBuilder::declarations() {
   }
 }
 
-PROCEDURAY_DECL Plan compile(const Scene& scene) {
+PROCEDURAY_DECL Plan detail::compile_core(const SceneCore& scene) {
   PlanBuilder b(scene);
   b.instances();
   b.sort_entries();

@@ -2,7 +2,7 @@
 // signatures, each registered by string id and returned as a strong typed id. Scene (scene.hpp)
 // is an Entities plus the entries that bind them; use it through Scene.
 //
-//   proceduray::Scene scene;   // payload, attribute and record types: registered with PROCEDURAY_STRUCT
+//   proceduray::Scene<DocInterface> scene;   // types: registered with PROCEDURAY_STRUCT, in the interface
 //   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
 //   auto shadow   = scene.add_ray<ShadowPayload>("Shadow", {.miss = "shadow.rmiss"});
 //   auto pacman   = scene.add_hit_group<Attributes>("Pacman", {.kind = proceduray::HitGroupKind::procedural,
@@ -73,49 +73,6 @@ class Entities {
   Entities& operator=(const Entities&);
   Entities& operator=(Entities&&) noexcept;
 
-  /// Registers a ray type with payload type Payload; throws DuplicateIdError.
-  /// Throws SceneError for conflicting flags, cull mask 0, a payload over max_payload_size, or an id
-  /// that is no valid GLSL name; DuplicateIdError for an id taken, also after GLSL mangling.
-  template <PayloadData Payload>
-  RayId<Payload> add_ray(std::string id, RayDesc desc) {
-    constexpr std::string_view op = "Scene::add_ray";
-    m_rays.check_new(op, id);
-    validate_ray(desc, id, op);
-    if (sizeof(Payload) > max_payload_size) {
-      throw SceneError(std::string(op) + ": ray \"" + id + "\" has a payload of " + std::to_string(sizeof(Payload)) +
-                       " bytes, over the " + std::to_string(max_payload_size) + " the library allows (a payload lives "
-                       "on every nested ray's stack); keep the data in a storage buffer and carry an index");
-    }
-    check_glsl_names(op, glsl_names(), ray_glsl_names(id));
-    return RayId<Payload>(m_rays.add(op, std::move(id), Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}),
-                          m_serial);
-  }
-
-  /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
-  /// or the built-in barycentrics for triangles). Throws HitGroupKindError, DuplicateIdError.
-  template <class Attributes = void>
-  HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
-    static_assert(std::is_void_v<Attributes> || AttributeData<Attributes>,
-                  "Scene::add_hit_group: the attribute type (Attributes in the instantiation above) must be registered with "
-                  "PROCEDURAY_STRUCT and at most 32 bytes (maxRayHitAttributeSize that Vulkan guarantees); "
-                  "register it, or shrink it and pass the rest through the payload");
-    validate(desc, id, "Scene::add_hit_group");
-    std::uint32_t size = 0;
-    if constexpr (!std::is_void_v<Attributes>) {
-      if (desc.kind == HitGroupKind::triangles) {
-        throw HitGroupKindError(std::string("Scene::add_hit_group: triangle hit group \"") + id + "\" declares an attribute type (" +
-                                std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
-                                "barycentrics: call add_hit_group<void>");
-      }
-      size = sizeof(Attributes);
-    } else if (desc.kind == HitGroupKind::triangles) {
-      size = triangle_attribute_size;
-    }
-    return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
-                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}),
-                      m_serial);
-  }
-
   /// Registers a geometry and puts it in its BLAS; throws InvalidGeometryError, DuplicateIdError.
   GeometryId add_geometry(std::string id, GeometryDesc desc);
 
@@ -129,32 +86,8 @@ class Entities {
   /// The scene's layers, bit order.
   const Layers& layers() const { return m_layers; }
 
-  /// Registers a callable shader called with Data; throws DuplicateIdError, SceneError for no shader.
-  template <class Data>
-  CallableId<Data> add_callable(std::string id, CallableDesc desc) {
-    static_assert(PayloadData<Data>,
-                  "Scene::add_callable: the callable data type (Data in the instantiation above) must be registered "
-                  "with PROCEDURAY_STRUCT: it is declared in GLSL as callableDataEXT from that registration");
-    if (desc.shader.empty()) {
-      throw SceneError("Scene::add_callable: callable " + detail::quote_id(id) + " has no shader; set .shader");
-    }
-    m_callables.check_new("Scene::add_callable", id);
-    check_glsl_names("Scene::add_callable", glsl_names(), callable_glsl_names(id));
-    return CallableId<Data>(m_callables.add("Scene::add_callable", std::move(id),
-                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}),
-                            m_serial);
-  }
-
   /// Registers a global signature; throws SceneError for bad bindings, DuplicateIdError.
   GlobalSignatureId add_global_signature(std::string id, GlobalSignatureDesc desc);
-
-  /// Registers a local signature whose records carry Arguments; throws DuplicateIdError.
-  template <RootArgumentsData Arguments>
-  LocalSignatureId<Arguments> add_local_signature(std::string id) {
-    return LocalSignatureId<Arguments>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
-                                                         LocalSignature{sizeof(Arguments), typeid(Arguments), &type_ops<Arguments>}),
-                                       m_serial);
-  }
 
   /// The ray registered as `id`, or nullptr.
   const Ray* find_ray(std::string_view id) const { return m_rays.find(id); }
@@ -274,11 +207,92 @@ class Entities {
   /// Reserves room for `count` geometries (and their BLASes).
   void reserve_geometries(std::size_t count);
 
+  /// The GLSL types of the scene's interface (ShaderInterface::types: payloads, root components,
+  /// root arguments, attributes, in that order): what compile() declares in every stage.
+  std::span<const TypeOps* const> vocabulary() const { return m_vocabulary; }
+
+
+ protected:
+  /// Scene<Interface> sets its interface's types once, when constructed.
+  void set_vocabulary(std::span<const TypeOps* const> types) { m_vocabulary = types; }
+
+  // Typed registration: Scene<Interface> (scene.hpp) calls these after checking each type's
+  // category, so no type reaches the scene outside its interface.
+
+  /// Registers a ray type with payload type Payload; throws DuplicateIdError.
+  /// Throws SceneError for conflicting flags, cull mask 0, a payload over max_payload_size, or an id
+  /// that is no valid GLSL name; DuplicateIdError for an id taken, also after GLSL mangling.
+  template <PayloadData Payload>
+  RayId<Payload> add_ray(std::string id, RayDesc desc) {
+    constexpr std::string_view op = "Scene::add_ray";
+    m_rays.check_new(op, id);
+    validate_ray(desc, id, op);
+    if (sizeof(Payload) > max_payload_size) {
+      throw SceneError(std::string(op) + ": ray \"" + id + "\" has a payload of " + std::to_string(sizeof(Payload)) +
+                       " bytes, over the " + std::to_string(max_payload_size) + " the library allows (a payload lives "
+                       "on every nested ray's stack); keep the data in a storage buffer and carry an index");
+    }
+    check_glsl_names(op, glsl_names(), ray_glsl_names(id));
+    return RayId<Payload>(m_rays.add(op, std::move(id), Ray{std::move(desc), sizeof(Payload), typeid(Payload), &type_ops<Payload>}),
+                          m_serial);
+  }
+
+  /// Registers a hit group; Attributes is what its intersection shader reports (void: none,
+  /// or the built-in barycentrics for triangles). Throws HitGroupKindError, DuplicateIdError.
+  template <class Attributes = void>
+  HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
+    static_assert(std::is_void_v<Attributes> || AttributeData<Attributes>,
+                  "Scene::add_hit_group: the attribute type (Attributes in the instantiation above) must be registered with "
+                  "PROCEDURAY_STRUCT and at most 32 bytes (maxRayHitAttributeSize that Vulkan guarantees); "
+                  "register it, or shrink it and pass the rest through the payload");
+    validate(desc, id, "Scene::add_hit_group");
+    std::uint32_t size = 0;
+    if constexpr (!std::is_void_v<Attributes>) {
+      if (desc.kind == HitGroupKind::triangles) {
+        throw HitGroupKindError(std::string("Scene::add_hit_group: triangle hit group \"") + id + "\" declares an attribute type (" +
+                                std::to_string(sizeof(Attributes)) + " bytes); triangles report the built-in "
+                                "barycentrics: call add_hit_group<void>");
+      }
+      size = sizeof(Attributes);
+    } else if (desc.kind == HitGroupKind::triangles) {
+      size = triangle_attribute_size;
+    }
+    return HitGroupId(m_hit_groups.add("Scene::add_hit_group", std::move(id),
+                                       HitGroup{std::move(desc), size, typeid(Attributes), detail::attribute_glsl_of<Attributes>()}),
+                      m_serial);
+  }
+
+  /// Registers a callable shader called with Data; throws DuplicateIdError, SceneError for no shader.
+  template <class Data>
+  CallableId<Data> add_callable(std::string id, CallableDesc desc) {
+    static_assert(PayloadData<Data>,
+                  "Scene::add_callable: the callable data type (Data in the instantiation above) must be registered "
+                  "with PROCEDURAY_STRUCT: it is declared in GLSL as callableDataEXT from that registration");
+    if (desc.shader.empty()) {
+      throw SceneError("Scene::add_callable: callable " + detail::quote_id(id) + " has no shader; set .shader");
+    }
+    m_callables.check_new("Scene::add_callable", id);
+    check_glsl_names("Scene::add_callable", glsl_names(), callable_glsl_names(id));
+    return CallableId<Data>(m_callables.add("Scene::add_callable", std::move(id),
+                                            Callable{std::move(desc), sizeof(Data), typeid(Data), &type_ops<Data>}),
+                            m_serial);
+  }
+
+  /// Registers a local signature whose records carry Arguments; throws DuplicateIdError.
+  template <RootArgumentsData Arguments>
+  LocalSignatureId<Arguments> add_local_signature(std::string id) {
+    return LocalSignatureId<Arguments>(m_local_signatures.add("Scene::add_local_signature", std::move(id),
+                                                         LocalSignature{sizeof(Arguments), typeid(Arguments), &type_ops<Arguments>}),
+                                       m_serial);
+  }
+
  private:
   static void check_type(std::type_index have, std::type_index want, std::string_view op, std::string_view kind,
                          std::string_view id, std::string_view what);
 
   static void validate_ray(const RayDesc& desc, std::string_view id, std::string_view op);
+  /// Throws TypeMismatchError unless `type` (nullptr: none) is one of the interface's types.
+  void check_root_component(const TypeOps* type, const std::string& what) const;
 
   std::uint32_t m_serial = detail::next_scene_serial();
   Registry<Ray> m_rays{"ray"};
@@ -289,6 +303,7 @@ class Entities {
   Registry<Callable> m_callables{"callable"};
   Layers m_layers;
   BlasSet m_blases;
+  std::span<const TypeOps* const> m_vocabulary;  // static storage (ShaderInterface::types)
 };
 
 }  // namespace proceduray
@@ -335,6 +350,8 @@ PROCEDURAY_DECL std::uint8_t Entities::add_layer(std::string name) {
 
 PROCEDURAY_DECL GlobalSignatureId Entities::add_global_signature(std::string id, GlobalSignatureDesc desc) {
   validate(desc, id, "Scene::add_global_signature");
+  for (const Binding& b : desc.bindings) check_root_component(b.type, "binding \"" + b.name + "\"");
+  check_root_component(desc.push_constants.type, "push constant block \"" + desc.push_constants.name + "\"");
   m_global_signatures.check_new("Scene::add_global_signature", id);
   check_glsl_names("Scene::add_global_signature", glsl_names(), signature_glsl_names(desc));
   return GlobalSignatureId(m_global_signatures.add("Scene::add_global_signature", std::move(id),
@@ -369,6 +386,16 @@ PROCEDURAY_DECL void Entities::check_type(std::type_index have, std::type_index 
                             std::string(what) + " type " + have.name() + ", not the requested " + want.name() +
                             "; ask for the type it was registered with");
   }
+}
+
+PROCEDURAY_DECL void Entities::check_root_component(const TypeOps* type, const std::string& what) const {
+  if (type == nullptr) return;
+  for (const TypeOps* t : m_vocabulary) {
+    if (t == type || (t->cpp_name != nullptr && type->cpp_name != nullptr && t->cpp_name() == type->cpp_name())) return;
+  }
+  const std::string name = type->cpp_name != nullptr ? std::string(type->cpp_name()) : std::string(type->glsl_name);
+  throw TypeMismatchError("Scene::add_global_signature: " + what + " holds " + name + ", which is not an alternative "
+                          "of the scene's interface; add it to its RootComponent<...> category");
 }
 
 PROCEDURAY_DECL void Entities::validate_ray(const RayDesc& desc, std::string_view id, std::string_view op) {

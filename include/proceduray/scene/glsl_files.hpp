@@ -44,7 +44,13 @@ PROCEDURAY_DECL std::function<std::string(ShaderStage, const std::string&)> glsl
 /// The body of a build-time generator: compiles `scene` and writes its declarations into the
 /// folder argv[1], then the list of files into argv[1]/files.txt and, when given, argv[2] (a file
 /// a build system tracks as the output, e.g. Meson's custom_target). Returns 0, or 1 with a message.
-PROCEDURAY_DECL int glsl_files_main(const Scene& scene, int argc, char** argv);
+namespace detail {
+PROCEDURAY_DECL int glsl_files_main_core(const SceneCore& scene, int argc, char** argv);
+}  // namespace detail
+template <class Interface>
+int glsl_files_main(const Scene<Interface>& scene, int argc, char** argv) {
+  return detail::glsl_files_main_core(scene, argc, argv);
+}
 
 }  // namespace proceduray
 
@@ -98,10 +104,10 @@ PROCEDURAY_DECL std::function<std::string(ShaderStage, const std::string&)> glsl
   };
 }
 
-PROCEDURAY_DECL int glsl_files_main(const Scene& scene, int argc, char** argv) {
+PROCEDURAY_DECL int detail::glsl_files_main_core(const SceneCore& scene, int argc, char** argv) {
   if (argc >= 2 && std::string_view(argv[1]) == "--names") {
     try {
-      const Plan plan = compile(scene);
+      const Plan plan = compile_core(scene);
       if (argc == 4) {
         for (const PlannedStage& stage : plan.pipeline().stages) {
           if (std::string_view(to_string(stage.stage)) == argv[2] && stage.shader == argv[3]) {
@@ -131,7 +137,7 @@ PROCEDURAY_DECL int glsl_files_main(const Scene& scene, int argc, char** argv) {
     return 1;
   }
   try {
-    const std::vector<std::string> names = write_glsl_files(compile(scene), argv[1]);
+    const std::vector<std::string> names = write_glsl_files(compile_core(scene), argv[1]);
     std::vector<std::filesystem::path> lists{std::filesystem::path(argv[1]) / "files.txt"};
     if (argc == 3) lists.emplace_back(argv[2]);
     for (const std::filesystem::path& path : lists) {

@@ -78,14 +78,14 @@ namespace detail {
 
 /// What every stage gets: the structs of every registered type, ray, layer and callable
 /// constants, the named bindings and the push constant block.
-PROCEDURAY_DECL std::string common_declarations(const Scene& scene, const Plan& plan);
+PROCEDURAY_DECL std::string common_declarations(const detail::SceneCore& scene, const Plan& plan);
 
 /// The record block of a shader whose records carry `types` (one type, or none).
 PROCEDURAY_DECL std::string record_block(const std::vector<const TypeOps*>& types, std::string_view shader);
 
 /// Outgoing callable data of every callable but `skip` (the one a callable shader receives), and
 /// `<id>_call(d)` for each.
-PROCEDURAY_DECL std::string callable_data(const Scene& scene, std::uint32_t skip);
+PROCEDURAY_DECL std::string callable_data(const detail::SceneCore& scene, std::uint32_t skip);
 
 /// The name of the acceleration structure the trace functions trace: the global signature's
 /// first named one, or "" (then there are no trace functions).
@@ -93,17 +93,17 @@ PROCEDURAY_DECL std::string trace_target(const Plan& plan);
 
 /// What a tracing stage (raygen, miss, closest hit) gets: every ray's outgoing payload, at
 /// location = ray index, and its two trace functions.
-PROCEDURAY_DECL std::string tracing_declarations(const Scene& scene, const Plan& plan);
+PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene, const Plan& plan);
 
 /// The root arguments type of a record, or nullptr.
-PROCEDURAY_DECL const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const SbtRecord& record);
+PROCEDURAY_DECL const TypeOps* arguments_type(const detail::SceneCore& scene, const Plan& plan, const SbtRecord& record);
 
 /// Payload, attributes, record and outgoing payloads of a hit-group stage.
-PROCEDURAY_DECL std::string hit_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader);
+PROCEDURAY_DECL std::string hit_declarations(const detail::SceneCore& scene, const Plan& plan, ShaderStage stage, std::string_view shader);
 
 /// What `shader` as `stage` gets after the common declarations (see the top of this header);
 /// compile() prepends common_declarations, the same for every stage, computed once.
-PROCEDURAY_DECL std::string stage_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader);
+PROCEDURAY_DECL std::string stage_declarations(const detail::SceneCore& scene, const Plan& plan, ShaderStage stage, std::string_view shader);
 
 }  // namespace detail
 
@@ -159,11 +159,14 @@ PROCEDURAY_DECL std::string binding_glsl(const Binding& b) {
   return {};
 }
 
-PROCEDURAY_DECL std::string common_declarations(const Scene& scene, const Plan& plan) {
-  std::vector<const TypeOps*> roots;  // a fixed order: payloads, attributes, records, callables, bindings
+PROCEDURAY_DECL std::string common_declarations(const detail::SceneCore& scene, const Plan& plan) {
+  // The interface's alternatives, in category order, are the vocabulary every stage declares;
+  // what the scene registered is among them (Scene<Interface> refuses the rest at compile time).
+  std::vector<const TypeOps*> roots;
   auto add_root = [&](const TypeOps* t) {
     if (t != nullptr && std::find(roots.begin(), roots.end(), t) == roots.end()) roots.push_back(t);
   };
+  for (const TypeOps* t : scene.vocabulary()) add_root(t);
   for (const Ray& r : scene.rays().entities()) add_root(r.payload_glsl);
   for (const HitGroup& g : scene.hit_groups().entities()) add_root(g.attribute_glsl);
   for (const LocalSignature& l : scene.local_signatures().entities()) add_root(l.arguments_glsl);
@@ -210,7 +213,7 @@ PROCEDURAY_DECL std::string record_block(const std::vector<const TypeOps*>& type
   return t == nullptr ? std::string() : glsl_root_arguments(*t, "arguments");
 }
 
-PROCEDURAY_DECL std::string callable_data(const Scene& scene, std::uint32_t skip) {
+PROCEDURAY_DECL std::string callable_data(const detail::SceneCore& scene, std::uint32_t skip) {
   std::string text;
   for (std::uint32_t c = 0; c < scene.callables().size(); ++c) {
     if (c == skip) continue;
@@ -232,7 +235,7 @@ PROCEDURAY_DECL std::string trace_target(const Plan& plan) {
   return {};
 }
 
-PROCEDURAY_DECL std::string tracing_declarations(const Scene& scene, const Plan& plan) {
+PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene, const Plan& plan) {
   std::string out;
   const std::string tlas = trace_target(plan);
   for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
@@ -251,13 +254,13 @@ PROCEDURAY_DECL std::string tracing_declarations(const Scene& scene, const Plan&
   return out;
 }
 
-PROCEDURAY_DECL const TypeOps* arguments_type(const Scene& scene, const Plan& plan, const SbtRecord& record) {
+PROCEDURAY_DECL const TypeOps* arguments_type(const detail::SceneCore& scene, const Plan& plan, const SbtRecord& record) {
   const Entry* e = plan.entry(record);
   if (e == nullptr || e->local_signature == no_index) return nullptr;
   return scene.local_signature(LocalSignatureId<>(e->local_signature)).arguments_glsl;
 }
 
-PROCEDURAY_DECL std::string hit_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
+PROCEDURAY_DECL std::string hit_declarations(const detail::SceneCore& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
   std::vector<const TypeOps*> payloads, attributes, records;
   for (const SbtRecord& rec : plan.records(SbtRegionKind::hit)) {
     if (rec.group == no_index) continue;
@@ -284,7 +287,7 @@ PROCEDURAY_DECL std::string hit_declarations(const Scene& scene, const Plan& pla
   return out;
 }
 
-PROCEDURAY_DECL std::string stage_declarations(const Scene& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
+PROCEDURAY_DECL std::string stage_declarations(const detail::SceneCore& scene, const Plan& plan, ShaderStage stage, std::string_view shader) {
   std::string out;
   const auto rays = scene.rays().size();
   std::vector<const TypeOps*> payloads, records;

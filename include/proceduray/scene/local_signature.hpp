@@ -1,8 +1,7 @@
 // A local signature: the type of the root arguments (shaderRecordEXT block) its entries carry
 // (DXR's local root signature + root arguments type).
 //
-//   struct ProceduralArgs { glm::vec4 albedo; std::uint32_t instance; };
-//   PROCEDURAY_STRUCT(ProceduralArgs, scalar, albedo, instance);   // root arguments is a registered struct
+//   // ProceduralArgs: a registered struct, an alternative of the interface's RootArguments<...>
 //   proceduray::LocalSignatureId<ProceduralArgs> sig =
 //       scene.add_local_signature<ProceduralArgs>("Procedural");
 //   scene.add_hit(radiance, pacman, sig, ProceduralArgs{...}, geometry);  // Arguments must match

@@ -53,14 +53,14 @@ struct ObjectDesc {
 namespace detail {
 
 /// The hit group name of an object for ray `r`: the id for ray 0, "<id>_<ray>" for the others.
-PROCEDURAY_DECL std::string object_group_name(const Scene& scene, std::string_view id, std::uint32_t r);
+PROCEDURAY_DECL std::string object_group_name(const detail::SceneCore& scene, std::string_view id, std::uint32_t r);
 
 /// The shader `ray` runs from `list`, or "" when it has none; throws for unknown or repeated rays.
-PROCEDURAY_DECL std::string shader_of(const Scene& scene, const std::vector<RayShader>& list, std::uint32_t ray,
+PROCEDURAY_DECL std::string shader_of(const detail::SceneCore& scene, const std::vector<RayShader>& list, std::uint32_t ray,
                                       std::string_view id, const char* what);
 
 /// Instances of the object's BLAS: its own, or those of the shared BLAS it joins.
-PROCEDURAY_DECL std::size_t object_instances(const Scene& scene, const GeometryDesc& g);
+PROCEDURAY_DECL std::size_t object_instances(const detail::SceneCore& scene, const GeometryDesc& g);
 
 /// Registers the object's geometry, then its hit groups (checked first: they cannot throw then); returns the
 /// geometry and each ray's group.
@@ -121,9 +121,9 @@ std::pair<GeometryId, std::vector<HitGroupId>> register_object(AnyScene& scene, 
 /// Registers an object whose hit records carry `records` (one for every instance, or one per
 /// instance) under `signature`; Attributes is what its intersection shader reports (void for
 /// triangles). Throws SceneError and its subclasses, naming the object, before changing anything.
-/// On a SceneOf<Interface>, Attributes must be in the interface's Attributes<...> (else it does not compile).
-template <class Attributes = void, std::derived_from<Scene> AnyScene, RootArgumentsData Arguments>
-GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc, LocalSignatureId<Arguments> signature,
+/// Attributes must be in the scene interface's Attributes<...> (else it does not compile).
+template <class Attributes = void, class Interface, RootArgumentsData Arguments>
+GeometryId add_object(Scene<Interface>& scene, std::string id, ObjectDesc desc, LocalSignatureId<Arguments> signature,
                       std::type_identity_t<std::vector<Arguments>> records) {
   if (records.empty()) {
     throw SceneError("add_object: object \"" + id + "\" has a local signature but no record; give one record for "
@@ -145,8 +145,8 @@ GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc, LocalSig
 }
 
 /// Registers an object whose hit records carry no data.
-template <class Attributes = void, std::derived_from<Scene> AnyScene>
-GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc) {
+template <class Attributes = void, class Interface>
+GeometryId add_object(Scene<Interface>& scene, std::string id, ObjectDesc desc) {
   const auto [geometry, groups] = detail::register_object<Attributes>(scene, std::move(id), std::move(desc), 0);
   for (std::uint32_t r = 0; r < groups.size(); ++r) scene.add_hit(RayId<>(r), groups[r], geometry);
   return geometry;
@@ -158,11 +158,11 @@ GeometryId add_object(AnyScene& scene, std::string id, ObjectDesc desc) {
 
 namespace proceduray::detail {
 
-PROCEDURAY_DECL std::string object_group_name(const Scene& scene, std::string_view id, std::uint32_t r) {
+PROCEDURAY_DECL std::string object_group_name(const detail::SceneCore& scene, std::string_view id, std::uint32_t r) {
   return r == 0 ? std::string(id) : std::string(id) + "_" + scene.rays().name(r);
 }
 
-PROCEDURAY_DECL std::string shader_of(const Scene& scene, const std::vector<RayShader>& list, std::uint32_t ray,
+PROCEDURAY_DECL std::string shader_of(const detail::SceneCore& scene, const std::vector<RayShader>& list, std::uint32_t ray,
                                       std::string_view id, const char* what) {
   std::string found;
   bool seen = false;
@@ -179,7 +179,7 @@ PROCEDURAY_DECL std::string shader_of(const Scene& scene, const std::vector<RayS
   return found;
 }
 
-PROCEDURAY_DECL std::size_t object_instances(const Scene& scene, const GeometryDesc& g) {
+PROCEDURAY_DECL std::size_t object_instances(const detail::SceneCore& scene, const GeometryDesc& g) {
   if (!g.instances.empty() || g.blas.empty()) return g.instances.size();
   const Blas* shared = scene.find_shared_blas(g.blas);
   return shared != nullptr ? shared->instances.size() : 0;

@@ -1,7 +1,6 @@
 // A ray type: its miss shader, its payload type, and the flags and cull mask it is traced with.
 //
-//   struct RayPayload { glm::vec4 color; std::uint32_t depth; };
-//   PROCEDURAY_STRUCT(RayPayload, scalar, color, depth);   // payloads are registered structs
+//   // RayPayload: a registered struct, an alternative of the interface's Payload<...>
 //   auto radiance = scene.add_ray<RayPayload>("Radiance", {.miss = "miss.rmiss"});
 //   auto shadow = scene.add_ray<ShadowPayload>("Shadow", {
 //       .miss = "shadow.rmiss",

@@ -1,31 +1,38 @@
-// A scene: its entities (entities.hpp) and the entries that bind them into shader-table
-// records, the global signature the pipeline uses and how deep rays nest. Everything a
-// renderer needs is here; compile(scene) (compile.hpp) turns it into a Plan with no device.
+// A scene, declared from its interface: the report's four std::variant categories (Payload,
+// RootComponent, RootArguments, Attributes; shader/categories.hpp) are its vocabulary. Its
+// entities, the entries that bind them into shader-table records, the global signature and how
+// deep rays nest; compile(scene) (compile.hpp) turns it into a Plan with no device.
 //
-//   proceduray::Scene scene;
-//   auto radiance = scene.add_ray<RadiancePayload>("radiance", {.miss = "sky.rmiss"});
+//   using Interface = proceduray::ShaderInterface<
+//       proceduray::Payload<RadiancePayload, ShadowPayload>, proceduray::RootComponent<SceneConstants>,
+//       proceduray::RootArguments<Material>, proceduray::Attributes<BallHit>>;
+//   proceduray::Scene<Interface> scene;
+//   auto radiance = scene.add_ray<RadiancePayload>("radiance", {.miss = "sky.rmiss"});   // in Payload<...>
 //   auto shadow   = scene.add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss"});
 //   auto ball     = scene.add_hit_group<BallHit>("ball", {.kind = proceduray::HitGroupKind::procedural,
 //                                                        .closest_hit = "ball.rchit", .intersection = "ball.rint"});
 //   auto occluder = scene.add_hit_group<BallHit>("ball_shadow", {.kind = proceduray::HitGroupKind::procedural,
 //                                                               .intersection = "ball.rint"});
 //   auto balls    = scene.add_geometry("balls", proceduray::GeometryDesc::procedural({box}, {left, right}));
-//   auto material = scene.add_local_signature<Material>("material");
+//   auto material = scene.add_local_signature<Material>("material");               // in RootArguments<...>
+//   auto sky      = scene.add_local_signature("sky", Interface::RootArgumentsSet(Material{}));  // the report's style
 //   scene.add_raygen("camera.rgen");
 //   scene.add_hit(radiance, ball, material, Material{red}, balls, 0);    // instance 0
 //   scene.add_hit(radiance, ball, material, Material{blue}, balls, 1);   // instance 1
 //   scene.add_hit(shadow, occluder, balls);                              // every instance, no data
-//   scene.add_miss(radiance, sky_signature, Sky{...});                   // optional miss root arguments
-//   scene.set_global_signature({.bindings = {...}});                     // registered as "global"
+//   scene.add_miss(radiance, material, Material{...});                   // optional miss root arguments
+//   scene.set_global_signature({.bindings = {...}});   // binding types: RootComponent<...> alternatives
 //   scene.set_max_recursion_depth(2);                                    // closest hits trace shadow rays
 //   scene.set_outputs({proceduray::Output::t, proceduray::Output::normal});   // per-pixel images (outputs.hpp)
 //
-// An entry whose arguments type differs from its local signature's does not compile; the
-// string-id overload checks it at run time (TypeMismatchError). The order entries are added
-// in does not matter: compile() assigns every instance's SBT offset and every record's place.
-// A hit group must match the geometry's kind (HitGroupKindError); every (ray, geometry,
-// instance) needs an entry, instance-specific first, then geometry-wide, then the ray's
-// default for the geometry's kind (set_default_hit), or compile() throws MissingEntryError.
+// A type outside its category does not compile, nor does an entry whose arguments type differs
+// from its local signature's; the string-id overload checks it at run time (TypeMismatchError).
+// The order entries are added in does not matter: compile() assigns every instance's SBT offset
+// and every record's place. A hit group must match the geometry's kind (HitGroupKindError);
+// every (ray, geometry, instance) needs an entry, instance-specific first, then geometry-wide,
+// then the ray's default for the geometry's kind (set_default_hit), or compile() throws
+// MissingEntryError. The maxima the pipeline needs (payload, attributes, root arguments) come
+// from the alternatives the records use, not from every alternative listed.
 #pragma once
 
 #include <proceduray/config.hpp>
@@ -35,16 +42,23 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
 #include "proceduray/scene/entities.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
 #include "proceduray/scene/outputs.hpp"
+#include "proceduray/shader/categories.hpp"
 
 namespace proceduray {
 
-/// A scene's entities and entries.
-class Scene : public Entities {
+namespace detail {
+
+/// A scene's entities and entries, untyped: the base Scene<Interface> (below) registers typed
+/// entities through. Not used on its own: its typed registrations are reachable only through Scene.
+class SceneCore : public Entities {
  public:
   /// Adds a raygen record for `shader`, without root arguments.
   EntryId add_raygen(std::string shader) { return add_raygen_entry(std::move(shader), no_index, nullptr, 0); }
@@ -152,13 +166,75 @@ class Scene : public Entities {
   OutputSet m_outputs;
 };
 
+}  // namespace detail
+
+/// A scene declared from its interface (a ShaderInterface of the four categories, the report's
+/// shader compatibility layer): every payload, attribute, root arguments and callable data type is
+/// an alternative of its category, or the registration does not compile. compile() declares the
+/// interface's alternatives in every stage and derives the sizes from those the records use.
+template <class Interface>
+class Scene : public detail::SceneCore {
+  static_assert(detail::is_shader_interface<Interface>,
+                "Scene<Interface>: Interface must be a proceduray::ShaderInterface<Payload<...>, RootComponent<...>, "
+                "RootArguments<...>, Attributes<...>> listing the scene's GPU-visible types");
+
+ public:
+  using Categories = Interface;  ///< the ShaderInterface the scene's types come from
+
+  Scene() { set_vocabulary(Interface::types); }
+
+  /// Registers a ray type whose payload is an alternative of Interface's Payload<...> (its
+  /// rayPayloadEXT type); throws DuplicateIdError, SceneError (see Entities).
+  template <class Payload>
+  RayId<Payload> add_ray(std::string id, RayDesc desc) {
+    static_assert(Interface::Payloads::template contains<Payload>,
+                  "Scene::add_ray: the payload type (Payload in the instantiation above) is not an alternative "
+                  "of the interface's Payload<...> category; add it there");
+    return Entities::add_ray<Payload>(std::move(id), std::move(desc));
+  }
+
+  /// Registers a hit group whose intersection reports an alternative of Interface's Attributes<...>
+  /// (void: none, or triangles' barycentrics); throws HitGroupKindError, DuplicateIdError.
+  template <class Attributes = void>
+  HitGroupId add_hit_group(std::string id, HitGroupDesc desc) {
+    static_assert(std::is_void_v<Attributes> || Interface::AttributesSet::template contains<Attributes>,
+                  "Scene::add_hit_group: the attribute type (Attributes in the instantiation above) is not an "
+                  "alternative of the interface's Attributes<...> category; add it there");
+    return Entities::add_hit_group<Attributes>(std::move(id), std::move(desc));
+  }
+
+  /// Registers a local signature whose records carry an alternative of Interface's RootArguments<...>.
+  template <class Arguments>
+  LocalSignatureId<Arguments> add_local_signature(std::string id) {
+    static_assert(Interface::RootArgumentsSet::template contains<Arguments>,
+                  "Scene::add_local_signature: the root arguments type (Arguments in the instantiation above) is not "
+                  "an alternative of the interface's RootArguments<...> category; add it there");
+    return Entities::add_local_signature<Arguments>(std::move(id));
+  }
+  /// The report's style: the root arguments type is the alternative `type` holds.
+  LocalSignatureId<> add_local_signature(std::string id, const typename Interface::RootArgumentsSet& type) {
+    return std::visit(
+        [&]<class Arguments>(const Arguments&) { return LocalSignatureId<>(add_local_signature<Arguments>(std::move(id))); },
+        static_cast<const typename Interface::RootArgumentsSet::Base&>(type));
+  }
+
+  /// Registers a callable shader whose data is an alternative of Interface's Payload<...> (it
+  /// travels like a payload); throws DuplicateIdError, SceneError for no shader.
+  template <class Data>
+  CallableId<Data> add_callable(std::string id, CallableDesc desc) {
+    static_assert(Interface::Payloads::template contains<Data>,
+                  "Scene::add_callable: the callable data type (Data in the instantiation above) is not an "
+                  "alternative of the interface's Payload<...> category; add it there");
+    return Entities::add_callable<Data>(std::move(id), std::move(desc));
+  }
+};
 }  // namespace proceduray
 
 #if PROCEDURAY_BODIES
 
 namespace proceduray {
 
-PROCEDURAY_DECL EntryId Scene::add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size) {
+PROCEDURAY_DECL EntryId detail::SceneCore::add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size) {
   if (e.local_signature != no_index) local_signatures().check_index(e.local_signature, op);
   const auto same = [&](const Entry& other) {
     if (other.region != e.region) return false;
@@ -187,7 +263,7 @@ PROCEDURAY_DECL EntryId Scene::add_entry(std::string_view op, const Entry& e, co
   return m_entries.push(e, data, size);
 }
 
-PROCEDURAY_DECL void Scene::check_hit(std::string_view op, const Entry& e) const {
+PROCEDURAY_DECL void detail::SceneCore::check_hit(std::string_view op, const Entry& e) const {
   rays().check_index(e.ray, op);
   const HitGroup& group = hit_groups().at(e.hit_group, op);
   if (e.is_default) return;
@@ -208,7 +284,7 @@ PROCEDURAY_DECL void Scene::check_hit(std::string_view op, const Entry& e) const
   }
 }
 
-PROCEDURAY_DECL EntryId Scene::add_raygen_entry(std::string shader, std::uint32_t signature, const void* data,
+PROCEDURAY_DECL EntryId detail::SceneCore::add_raygen_entry(std::string shader, std::uint32_t signature, const void* data,
                                                 std::uint32_t size) {
   if (shader.empty()) throw SceneError("Scene::add_raygen: empty raygen shader name; name the raygen shader");
   if (signature != no_index) local_signatures().check_index(signature, "Scene::add_raygen");
@@ -217,18 +293,18 @@ PROCEDURAY_DECL EntryId Scene::add_raygen_entry(std::string shader, std::uint32_
   return m_entries.push(e, data, size);
 }
 
-PROCEDURAY_DECL GlobalSignatureId Scene::set_global_signature(GlobalSignatureDesc desc, std::string id) {
+PROCEDURAY_DECL GlobalSignatureId detail::SceneCore::set_global_signature(GlobalSignatureDesc desc, std::string id) {
   const GlobalSignatureId g = add_global_signature(std::move(id), std::move(desc));
   m_global_signature = g;
   return g;
 }
 
-PROCEDURAY_DECL void Scene::set_global_signature(GlobalSignatureId id) {
+PROCEDURAY_DECL void detail::SceneCore::set_global_signature(GlobalSignatureId id) {
   global_signatures().check_index(own(id, "Scene::set_global_signature"), "Scene::set_global_signature");
   m_global_signature = id;
 }
 
-PROCEDURAY_DECL void Scene::set_max_recursion_depth(std::uint32_t depth) {
+PROCEDURAY_DECL void detail::SceneCore::set_max_recursion_depth(std::uint32_t depth) {
   if (depth == 0) {
     throw SceneError("Scene::set_max_recursion_depth: depth 0 allows no traceRayEXT at all; use >= 1");
   }

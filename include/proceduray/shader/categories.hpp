@@ -238,4 +238,16 @@ struct ShaderInterface {
   }
 };
 
+namespace detail {
+/// Whether I is a ShaderInterface (what Scene<I> is declared from).
+template <class I>
+inline constexpr bool is_shader_interface = requires {
+  typename I::Payloads;
+  typename I::RootComponents;
+  typename I::RootArgumentsSet;
+  typename I::AttributesSet;
+  I::types;
+};
+}  // namespace detail
+
 }  // namespace proceduray

@@ -1,12 +1,12 @@
-// GLSL text generated from registered C++ types: deterministic, to prepend to shaders at run time
-// (after `#version`) or to write to a header at build time (see glsl_generator_main.hpp).
+// The shader layer's GLSL code generator: text for registered C++ types, deterministic. A scene's
+// declarations are made from it by glsl_for (scene/glsl_for.hpp), the one front end that both a
+// Renderer (at run time) and proceduray_generate_scene_glsl (at build time) use.
 //
-//   std::string glsl = proceduray::glsl_declarations<Interface>();   // #extension lines, buffer
+//   std::string glsl = proceduray::glsl_declarations(Interface::types);   // #extension lines, buffer
 //                                                // references, structs in dependency order
-//   glsl += proceduray::glsl_ray_payload<Interface, ShadowPayload>("shadow");  // layout(location = 1) rayPayloadEXT ...
-//   glsl += proceduray::glsl_ray_payload_in<Interface, RadiancePayload>("payload");
-//   glsl += proceduray::glsl_hit_attribute<Interface, SphereHit>("hit");      // hitAttributeEXT SphereHit hit;
-//   glsl += proceduray::glsl_root_arguments<Interface, SphereRecord>("arguments"); // layout(shaderRecordEXT, scalar) buffer ...
+//   glsl += proceduray::glsl_ray_payload(1, proceduray::type_ops<ShadowPayload>, "shadow");  // layout(location = 1) rayPayloadEXT ...
+//   glsl += proceduray::glsl_hit_attribute(proceduray::type_ops<SphereHit>, "hit");   // hitAttributeEXT SphereHit hit;
+//   glsl += proceduray::glsl_root_arguments(proceduray::type_ops<SphereRecord>, "arguments"); // layout(shaderRecordEXT, scalar) buffer ...
 //   glsl += proceduray::glsl_push_constant<Camera>("camera");  // layout(push_constant, std430) uniform ...
 //   glsl += proceduray::glsl_uniform<SceneConstants>(0, 2, "constants");  // layout(set = 0, binding = 2, scalar) uniform ...
 //   std::string source = proceduray::insert_after_version(user_shader_text, glsl);
@@ -187,12 +187,6 @@ inline std::string glsl_declarations(std::span<const TypeOps* const> roots, bool
   return out;
 }
 
-/// Declarations for every type of a ShaderInterface (roots in category order), for ray-tracing stages.
-template <class Interface>
-std::string glsl_declarations() {
-  return glsl_declarations(std::span<const TypeOps* const>(Interface::types), true);
-}
-
 /// A payload at `location`: `layout(location = N) rayPayloadEXT T name;` (rayPayloadInEXT when incoming).
 inline std::string glsl_ray_payload(std::uint32_t location, const TypeOps& t, std::string_view name, bool incoming = false) {
   return "layout(location = " + std::to_string(location) + ") " + (incoming ? "rayPayloadInEXT " : "rayPayloadEXT ") +
@@ -238,28 +232,6 @@ inline std::string glsl_storage_buffer(const TypeOps& t, std::uint32_t set, std:
          std::string(name) + ";\n";
 }
 
-/// An outgoing payload, `layout(location = N) rayPayloadEXT T name;`, N = T's index in Payload<...>.
-template <class Interface, class T>
-std::string glsl_ray_payload(std::string_view name) {
-  return glsl_ray_payload(Interface::template payload_location<T>(), type_ops<T>, name);
-}
-/// The incoming payload of a hit or miss stage, `layout(location = N) rayPayloadInEXT T name;`.
-template <class Interface, class T>
-std::string glsl_ray_payload_in(std::string_view name) {
-  return glsl_ray_payload(Interface::template payload_location<T>(), type_ops<T>, name, true);
-}
-/// Hit attributes of an Attributes type, `hitAttributeEXT T name;`.
-template <class Interface, class T>
-std::string glsl_hit_attribute(std::string_view name) {
-  static_cast<void>(Interface::template attributes_index<T>());
-  return glsl_hit_attribute(type_ops<T>, name);
-}
-/// The root arguments block of a RootArguments type: `layout(shaderRecordEXT, rule) buffer TRootArguments {...} name;`.
-template <class Interface, class T>
-std::string glsl_root_arguments(std::string_view name) {
-  static_cast<void>(Interface::template root_arguments_index<T>());
-  return glsl_root_arguments(type_ops<T>, name);
-}
 /// A push-constant block of T (see glsl_push_constant(const TypeOps&, name)).
 template <RegisteredStruct T>
 std::string glsl_push_constant(std::string_view name) {

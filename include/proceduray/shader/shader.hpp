@@ -5,7 +5,7 @@
 //   PROCEDURAY_STRUCT(Hit, scalar, normal, t);
 //   using Interface = proceduray::ShaderInterface<proceduray::Payload<Hit>, proceduray::RootComponent<>,
 //                                                 proceduray::RootArguments<>, proceduray::Attributes<Hit>>;
-//   std::string glsl = proceduray::glsl_declarations<Interface>();
+//   std::string glsl = proceduray::glsl_declarations(Interface::types);
 //
 // Never includes Vulkan: everything here is pure C++ and glm.
 #pragma once

@@ -27,7 +27,7 @@ namespace proceduray::vk {
 /// Per-geometry vertex and triangle buffers, and their addresses by geometry index.
 class MeshBuffers {
  public:
-  MeshBuffers(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan);
+  MeshBuffers(const Context& ctx, const proceduray::detail::SceneCore& scene, const proceduray::Plan& plan);
 
   /// One per geometry of the scene, by geometry index; zero for those without buffers.
   std::span<const MeshAddresses> addresses() const noexcept { return m_addresses; }
@@ -42,7 +42,7 @@ class MeshBuffers {
 
 #if PROCEDURAY_BODIES
 
-PROCEDURAY_DECL MeshBuffers::MeshBuffers(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan)
+PROCEDURAY_DECL MeshBuffers::MeshBuffers(const Context& ctx, const proceduray::detail::SceneCore& scene, const proceduray::Plan& plan)
     : m_addresses(scene.geometries().size()) {
   if (!plan.reads_meshes()) return;  // most scenes: no buffers, no per-record scan
   std::vector<bool> read(scene.geometries().size(), false);

@@ -73,7 +73,9 @@ struct BuildTimings {
 class Renderer {
  public:
   /// Compiles `scene` and builds it on `ctx`; throws what compile() and Plan::layout() throw.
-  Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options = {});
+  template <class Interface>
+  Renderer(const Context& ctx, const proceduray::Scene<Interface>& scene, RendererOptions options = {})
+      : Renderer(ctx, static_cast<const proceduray::detail::SceneCore&>(scene), std::move(options)) {}
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
   ~Renderer();  // out of line: a program compiles the parts' destruction once
@@ -212,6 +214,7 @@ class Renderer {
   VkDeviceSize blas_bytes() const noexcept { return m_structures->blas_bytes(); }
 
  private:
+  Renderer(const Context& ctx, const proceduray::detail::SceneCore& scene, RendererOptions options);
   using Clock = std::chrono::steady_clock;
   static double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -256,8 +259,8 @@ class Renderer {
 };
 
 #if PROCEDURAY_BODIES
-PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::Scene& scene, RendererOptions options)
-    : m_ctx(&ctx), m_plan(compile(scene)), m_layout(m_plan.layout(ctx.limits())) {
+PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::detail::SceneCore& scene, RendererOptions options)
+    : m_ctx(&ctx), m_plan(proceduray::detail::compile_core(scene)), m_layout(m_plan.layout(ctx.limits())) {
   m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
   m_slot_frames.resize(m_ring->size());
   if (const auto raygen = m_plan.records(SbtRegionKind::raygen); raygen.size() > 1) {

@@ -42,7 +42,7 @@ class SceneAcceleration {
   /// Builds every BLAS and the TLAS from `plan` and the geometry data of `scene` (not copied for
   /// Static geometry), and waits: all Static BLASes in one submit and compacted in a second
   /// (build_blases), each DynamicGeometry one refittable in its own, then the TLAS.
-  SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
+  SceneAcceleration(const Context& ctx, const proceduray::detail::SceneCore& scene, const proceduray::Plan& plan,
                     const BuildOptions& options = {});
   SceneAcceleration(const SceneAcceleration&) = delete;
   SceneAcceleration& operator=(const SceneAcceleration&) = delete;
@@ -110,9 +110,9 @@ class SceneAcceleration {
     const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
   };
   /// Builds every Static (and DynamicTransform) BLAS in one batch: two submits, compacted per `options`.
-  void build_static_blases(const proceduray::Scene& scene, const BuildOptions& options);
+  void build_static_blases(const proceduray::detail::SceneCore& scene, const BuildOptions& options);
   /// Copies the data of DynamicGeometry BLAS `b` and builds it refittable (one submit).
-  void build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b);
+  void build_refittable_blas(const proceduray::detail::SceneCore& scene, std::uint32_t b);
   const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, std::string_view operation) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
@@ -133,7 +133,7 @@ static_assert(sizeof(Aabb) == sizeof(VkAabbPositionsKHR) && offsetof(Aabb, max) 
 
 #if PROCEDURAY_BODIES
 
-PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::Scene& scene, const proceduray::Plan& plan,
+PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::detail::SceneCore& scene, const proceduray::Plan& plan,
                                                      const BuildOptions& options)
     : m_ctx(&ctx), m_plan(&plan) {
   const auto blases = plan.blases();
@@ -166,7 +166,7 @@ PROCEDURAY_DECL std::uint32_t SceneAcceleration::add_instance(GeometryId geometr
   return instance;
 }
 
-PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::Scene& scene, const BuildOptions& options) {
+PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::detail::SceneCore& scene, const BuildOptions& options) {
   const auto blases = m_plan->blases();
   std::vector<std::uint32_t> which;
   std::vector<std::vector<AabbGeometry>> boxes;         // straight from the scene: Static data is not copied
@@ -194,7 +194,7 @@ PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::Sc
   for (std::size_t i = 0; i < which.size(); ++i) m_blases[which[i]].fixed = std::move(built[i]);
 }
 
-PROCEDURAY_DECL void SceneAcceleration::build_refittable_blas(const proceduray::Scene& scene, std::uint32_t b) {
+PROCEDURAY_DECL void SceneAcceleration::build_refittable_blas(const proceduray::detail::SceneCore& scene, std::uint32_t b) {
   const PlannedBlas& blas = m_plan->blases()[b];
   BlasSlot& slot = m_blases[b];
   for (std::uint32_t g : blas.geometries) {

@@ -1,6 +1,8 @@
 #include <proceduray/mesh/obj.hpp>
 #include <proceduray/scene/scene.hpp>
+#include "tests/docs/doc_types.hpp"
+using DocScene = proceduray::Scene<doc_types::DocInterface>;
 // @declarations
-void usage(proceduray::Scene& scene, std::size_t i) {
+void usage(DocScene& scene, std::size_t i) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(proceduray::Scene& scene, proceduray::LocalSignatureId<TintArgs> tint_signature) {
+void usage(DocScene& scene, proceduray::LocalSignatureId<TintArgs> tint_signature) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(const proceduray::Scene& scene) {
+void usage(const DocScene& scene) {
   // @statements
 }

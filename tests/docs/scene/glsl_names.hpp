@@ -1,6 +1,8 @@
 #include "proceduray/scene/scene.hpp"
+#include "tests/docs/doc_types.hpp"
+using DocScene = proceduray::Scene<doc_types::DocInterface>;
 
 // @declarations
-void usage(const proceduray::Scene& scene) {
+void usage(const DocScene& scene) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(proceduray::Scene& scene, proceduray::RayId<RadiancePayload> radiance, proceduray::HitGroupId pacman, proceduray::GeometryId geometry) {
+void usage(DocScene& scene, proceduray::RayId<RadiancePayload> radiance, proceduray::HitGroupId pacman, proceduray::GeometryId geometry) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(proceduray::Scene& scene) {
+void usage(DocScene& scene) {
   // @statements
 }

@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(proceduray::Scene& scene, std::span<const proceduray::Placement> placements) {
+void usage(DocScene& scene, std::span<const proceduray::Placement> placements) {
   // @statements
 }

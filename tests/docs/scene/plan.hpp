@@ -2,6 +2,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(const proceduray::Scene& scene, const proceduray::DeviceLimits& limits, std::span<const std::byte> handles, proceduray::RayId<ShadowPayload> shadow, proceduray::GeometryId pacman) {
+void usage(const DocScene& scene, const proceduray::DeviceLimits& limits, std::span<const std::byte> handles, proceduray::RayId<ShadowPayload> shadow, proceduray::GeometryId pacman) {
   // @statements
 }

@@ -13,7 +13,6 @@
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/scene/glsl_files.hpp>
-#include <proceduray/scene/scene_of.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -27,6 +26,7 @@
 
 namespace doc_scene {
 using namespace doc_types;
+using DocScene = proceduray::Scene<DocInterface>;
 using proceduray::ShaderStage;
 using proceduray::GeometryDesc;
 using proceduray::BindingKind;
@@ -39,5 +39,5 @@ inline constexpr proceduray::UniformSlot<SceneConstants> constants_slot{.binding
 using BallHit = SphereHit;
 using Sky = SkyArgs;
 /// What the compile.hpp block compiles.
-inline proceduray::Scene make_scene() { return {}; }
+inline proceduray::Scene<DocInterface> make_scene() { return {}; }
 }  // namespace doc_scene

@@ -3,6 +3,6 @@
 using namespace doc_scene;
 
 // @declarations
-void usage(const proceduray::Scene& scene, const std::string& log) {
+void usage(const DocScene& scene, const std::string& log) {
   // @statements
 }

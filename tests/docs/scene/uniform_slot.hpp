@@ -2,7 +2,7 @@
 using namespace doc_vk;
 using proceduray::BindingKind;
 // @declarations
-void usage(proceduray::Scene& scene, proceduray::vk::Renderer& renderer, const SceneConstants& value,
+void usage(DocScene& scene, proceduray::vk::Renderer& renderer, const SceneConstants& value,
            std::span<const Tint> per_instance, const FrameKnobs& frame_knobs) {
   // @statements
 }

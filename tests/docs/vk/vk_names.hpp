@@ -15,6 +15,7 @@
 
 namespace doc_vk {
 using namespace doc_types;
+using DocScene = proceduray::Scene<DocInterface>;
 using proceduray::SbtRegionKind;
 using proceduray::BindingKind;
 using proceduray::layout_sbt;
@@ -28,9 +29,9 @@ inline constexpr proceduray::UniformSlot<SceneConstants> constants_slot{.binding
 inline constexpr proceduray::StorageSlot<Tint> tints_slot{.binding = 3, .name = "tints"};
 inline constexpr proceduray::PushConstantSlot<FrameKnobs> knobs_slot{.name = "knobs"};
 /// What a block that builds a scene elsewhere calls.
-inline proceduray::Scene make_scene() { return {}; }
-/// A scene as the examples write one (a proceduray::Scene with renderer_options).
-struct MyScene : proceduray::Scene {
+inline proceduray::Scene<DocInterface> make_scene() { return {}; }
+/// A scene as the examples write one (a proceduray::Scene<Interface> with renderer_options).
+struct MyScene : proceduray::Scene<DocInterface> {
   proceduray::vk::RendererOptions renderer_options(const std::string&) const { return {}; }
 };
 }  // namespace doc_vk

@@ -1,6 +1,6 @@
 // An entry whose arguments type differs from its local signature's root arguments type does not compile.
 // expect-gcc: no matching function for call to
-// expect-gcc: proceduray::Scene::add_hit(
+// expect-gcc: proceduray::detail::SceneCore::add_hit(
 // expect-gcc: required for the satisfaction of
 // expect-gcc: ArgumentsMatchSignature<Given, Arguments>
 // expect-gcc: with Given = demo::TriangleArgs
@@ -25,7 +25,9 @@ struct TriangleArgs {
 };
 PROCEDURAY_STRUCT(TriangleArgs, scalar, albedo);
 
-void bind(proceduray::Scene& scene) {
+using Interface = proceduray::ShaderInterface<proceduray::Payload<Radiance>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<ProceduralArgs, TriangleArgs>, proceduray::Attributes<>>;
+void bind(proceduray::Scene<Interface>& scene) {
   const auto radiance = scene.add_ray<Radiance>("Radiance", {.miss = "miss"});
   const auto group = scene.add_hit_group("Plane", {.closest_hit = "plane.rchit"});
   const auto plane = scene.add_geometry(

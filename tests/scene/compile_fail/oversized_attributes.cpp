@@ -1,8 +1,6 @@
 // A hit group's attributes larger than the 32 bytes every device guarantees do not compile.
-// expect: static assertion failed: Scene::add_hit_group: the attribute type
-// expect: at most 32 bytes
-// expect-gcc: with Attributes = demo::WideHit
-// expect-clang: 'proceduray::Entities::add_hit_group<demo::WideHit>' requested here
+// expect: Attributes: a hit attribute type is larger than 32 bytes
+// expect-gcc: WideHit
 #include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -14,7 +12,9 @@ struct WideHit {
 };
 PROCEDURAY_STRUCT(WideHit, scalar, normal, tangent, t);
 
-auto group(proceduray::Scene& scene) {
+using Interface = proceduray::ShaderInterface<proceduray::Payload<>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<>, proceduray::Attributes<WideHit>>;
+auto group(proceduray::Scene<Interface>& scene) {
   return scene.add_hit_group<WideHit>("Wide", {.kind = proceduray::HitGroupKind::procedural,
                                                .closest_hit = "wide.rchit", .intersection = "wide.rint"});
 }

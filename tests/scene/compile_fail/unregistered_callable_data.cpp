@@ -1,5 +1,6 @@
 // Callable data is declared in GLSL from its registration: an unregistered type does not compile.
-// expect: the callable data type (Data in the instantiation above) must be registered with PROCEDURAY_STRUCT
+// expect: Payload, RootArguments and Attributes take structs registered with PROCEDURAY_STRUCT
+// expect-gcc: Tint
 #include <proceduray/scene/scene.hpp>
 
 namespace demo {
@@ -7,5 +8,7 @@ struct Tint {
   float colour[3];
 };
 
-auto callable(proceduray::Scene& scene) { return scene.add_callable<Tint>("tint", {.shader = "tint.rcall"}); }
+using Interface = proceduray::ShaderInterface<proceduray::Payload<Tint>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<>, proceduray::Attributes<>>;
+auto callable(proceduray::Scene<Interface>& scene) { return scene.add_callable<Tint>("tint", {.shader = "tint.rcall"}); }
 }  // namespace demo

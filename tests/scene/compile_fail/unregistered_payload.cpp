@@ -1,8 +1,6 @@
 // A ray's payload must come from the shader layer: a struct without PROCEDURAY_STRUCT is no payload.
-// expect-gcc: PayloadData<Payload>
-// expect-gcc: [with Payload = demo::Colour]
-// expect-clang: because 'demo::Colour' does not satisfy 'PayloadData'
-// expect-clang: because 'demo::Colour' does not satisfy 'RegisteredStruct'
+// expect: Payload, RootArguments and Attributes take structs registered with PROCEDURAY_STRUCT
+// expect-gcc: Colour
 #include <proceduray/scene/scene.hpp>
 
 namespace demo {
@@ -10,5 +8,7 @@ struct Colour {
   float rgb[3];
 };
 
-auto ray(proceduray::Scene& scene) { return scene.add_ray<Colour>("radiance", {.miss = "sky.rmiss"}); }
+using Interface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<>, proceduray::Attributes<>>;
+auto ray(proceduray::Scene<Interface>& scene) { return scene.add_ray<Colour>("radiance", {.miss = "sky.rmiss"}); }
 }  // namespace demo

@@ -1,10 +1,6 @@
 // Root arguments must come from the shader layer: a struct without PROCEDURAY_STRUCT is not root arguments.
-// expect-gcc: required for the satisfaction of
-// expect-gcc: RootArgumentsData<Arguments>
-// expect-gcc: [with Arguments = demo::Material]
-// expect-gcc: proceduray_fields(proceduray::detail::TypeTag<T>{})
-// expect-clang: because 'demo::Material' does not satisfy 'RootArgumentsData'
-// expect-clang: because 'demo::Material' does not satisfy 'RegisteredStruct'
+// expect: Payload, RootArguments and Attributes take structs registered with PROCEDURAY_STRUCT
+// expect-gcc: Material
 #include <proceduray/scene/scene.hpp>
 
 #include <cstdint>
@@ -15,5 +11,7 @@ struct Material {
   std::uint32_t instance;
 };
 
-auto signature(proceduray::Scene& scene) { return scene.add_local_signature<Material>("Material"); }
+using Interface = proceduray::ShaderInterface<proceduray::Payload<>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<Material>, proceduray::Attributes<>>;
+auto signature(proceduray::Scene<Interface>& scene) { return scene.add_local_signature<Material>("Material"); }
 }  // namespace demo

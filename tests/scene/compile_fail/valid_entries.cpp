@@ -1,5 +1,5 @@
-// expect-success
 // The compile-fail sources' scene, written correctly, compiles: the failures are the ones they name.
+// expect-success
 #include <proceduray/scene/compile.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -27,7 +27,9 @@ struct TintArgs {
 };
 PROCEDURAY_STRUCT(TintArgs, scalar, factor);
 
-proceduray::Plan bind(proceduray::Scene& scene) {
+using Interface = proceduray::ShaderInterface<proceduray::Payload<Radiance, Tint>, proceduray::RootComponent<>,
+                                              proceduray::RootArguments<ProceduralArgs, TintArgs>, proceduray::Attributes<Hit>>;
+proceduray::Plan bind(proceduray::Scene<Interface>& scene) {
   const auto radiance = scene.add_ray<Radiance>("Radiance", {.miss = "miss"});
   const auto group = scene.add_hit_group<Hit>("Sphere", {.kind = proceduray::HitGroupKind::procedural,
                                                          .closest_hit = "sphere.rchit", .intersection = "sphere.rint"});

@@ -1,8 +1,8 @@
-// The interface the SceneOf compile checks share: each struct registered, each in one category.
+// The interface the Scene compile checks share: each struct registered, each in one category.
 #pragma once
 
 #include <proceduray/scene/object.hpp>
-#include <proceduray/scene/scene_of.hpp>
+#include <proceduray/scene/scene.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 namespace demo {

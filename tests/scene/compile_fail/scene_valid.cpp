@@ -1,8 +1,8 @@
 // expect-success
-// The SceneOf checks' scene with every type in its category compiles: the failures are the ones they name.
-#include "scene_of_types.hpp"
+// The Scene checks' scene with every type in its category compiles: the failures are the ones they name.
+#include "scene_types.hpp"
 
-auto build(proceduray::SceneOf<demo::Interface>& scene) {
+auto build(proceduray::Scene<demo::Interface>& scene) {
   auto radiance = scene.add_ray<demo::Radiance>("radiance", {.miss = "m.rmiss"});
   auto material = scene.add_local_signature<demo::Material>("material");
   scene.add_local_signature("again", demo::Interface::RootArgumentsSet(demo::Material{}));

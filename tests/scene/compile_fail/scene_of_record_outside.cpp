@@ -1,6 +1,0 @@
-// Root arguments that is not an alternative of RootArguments<...> does not compile.
-// expect: SceneOf::add_local_signature: the root arguments type (Arguments in the instantiation above) is not an alternative of the interface's RootArguments<...> category
-// expect: Stray
-#include "scene_of_types.hpp"
-
-auto signature(proceduray::SceneOf<demo::Interface>& scene) { return scene.add_local_signature<demo::Stray>("s"); }
