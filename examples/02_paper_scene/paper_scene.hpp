@@ -1,6 +1,6 @@
 // The report's figure 3 scene, host side: rays, objects (geometry, hit groups, records), the table.
 //
-//   paper::PaperScene scene;
+//   paper::PaperScene scene;                       // its constants declared on it (flags, depth limit)
 //   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
 //   paper::PaperScene portable({}, paper::Tracing::iterative);   // runs where maxRayRecursionDepth is 1
 //
@@ -42,6 +42,11 @@ struct PaperScene : pr::Scene<Interface> {
     set_global_signature(pr::default_global_signature({constants_slot}));
     add_raygen("raygen.rgen");
     if (tracing == Tracing::recursive) set_max_recursion_depth(depth_limit + 1);  // + the deepest hit's shadow ray
+    // What the shaders read beyond the derived declarations: the flag bits, the depth limit and,
+    // when iterative, the switch that keeps the closest hit from tracing.
+    PROCEDURAY_SCENE_CONSTANTS(*this, flag_shadows, flag_reflections, flag_object_ids);
+    add_constant("max_depth_limit", depth_limit);
+    if (tracing == Tracing::iterative) add_define("PAPER_ITERATIVE");
     pr::add_object(*this, "plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
                                     .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
     // Each marched object: its own intersection shader for both rays, shade.rchit for radiance.
@@ -56,23 +61,10 @@ struct PaperScene : pr::Scene<Interface> {
     procedural("mandelbulb", mandelbulb_aabb, {mandelbulb_placement}, {mandelbulb_material});
   }
 
-  /// Shaders from this example's folder, compiled with the declarations the build wrote into
-  /// PAPER_GLSL_DIR (glsl/generate.cpp, run with no device; defined by CMake and Meson for every
-  /// target that includes this header), then the flags. The build writes the
-  /// scene without outputs; with outputs the renderer derives the declarations at run time.
+  /// Shaders from this example's folder (each compiled with its stage's declarations from the
+  /// plan; the build writes the same text into PAPER_GLSL_DIR with glsl/generate.cpp).
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    pr::vk::RendererOptions o{.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"},
-                              .extra_declarations = declarations(),
-                              .pipeline_cache = std::move(cache)};
-    if (outputs().empty()) o.declarations = pr::glsl_files(examples::generated_glsl_dir(PAPER_GLSL_DIR));
-    return o;
-  }
-
-  /// What every shader gets after the generated declarations (which hold the AABBs): the flags,
-  /// this scene's depth limit (max_depth_limit) and, when iterative, PAPER_ITERATIVE.
-  std::string declarations() const {
-    return extra_declarations + pr::glsl_const("max_depth_limit", m_depth_limit) +
-           (m_tracing == Tracing::iterative ? "#define PAPER_ITERATIVE 1\n" : "");
+    return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"}, .pipeline_cache = std::move(cache)};
   }
 
   Tracing tracing() const noexcept { return m_tracing; }

@@ -2,8 +2,8 @@
 // scene's fixed numbers (AABBs, placements, materials, default knobs).
 //
 //   paper::SceneConstants constants = paper::default_constants(1024, 768, time);   // binding 2
-//   // each shader compiles with glsl_for(plan, stage, name) (the AABBs too: pacman_aabb_min, ...)
-//   //                         + paper::extra_declarations
+//   // each shader compiles with glsl_for(plan, stage, name): the AABBs (pacman_aabb_min, ...) and
+//   // the flag_* constants PaperScene declares on itself
 //
 // Conventions the shaders in shaders/ (next to this file) rely on:
 //   set 0: binding 0 TLAS (raygen, closest hit); binding 1 rgba8 storage image (raygen);
@@ -157,9 +157,5 @@ inline SceneConstants default_constants(std::uint32_t width, std::uint32_t heigh
   c.julia_cuts = pr::make_cut_planes({julia_cut});
   return c;
 }
-
-/// The C++ constants the shaders use beyond what the scene derives (glsl_for, with the AABBs);
-/// PaperScene::declarations adds its depth limit and tracing mode.
-inline const std::string extra_declarations = PROCEDURAY_GLSL_CONSTS(flag_shadows, flag_reflections, flag_object_ids);
 
 }  // namespace paper

@@ -27,6 +27,11 @@ namespace d3d12 {
 
 inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .name = "constants"};
 
+/// Shaders from this example's folder (each compiled with its stage's declarations from the plan).
+inline pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) {
+  return {.shader_dirs = {examples::examples_dir() / "03_d3d12_scene" / "shaders"}, .pipeline_cache = std::move(cache)};
+}
+
 /// The sample's scene, declared from Interface's categories, and its primitives.
 class D3d12Scene : public pr::Scene<Interface> {
  public:
@@ -49,6 +54,8 @@ class D3d12Scene : public pr::Scene<Interface> {
     m_record = add_local_signature<PrimitiveRecord>("primitive");
     add_raygen("raygen.rgen");
     if (tracing == Tracing::recursive) set_max_recursion_depth(d3d12::max_recursion_depth);
+    add_constants(*this);  // the flags and limits the shaders read
+    if (tracing == Tracing::iterative) add_define("D3D12_ITERATIVE");  // shadows and reflections from raygen
     set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
                                        {pr::BindingKind::storage_image, 1, 0, 1, "image"}, constants_slot}});
     if (layout == Layout::sample) {
@@ -78,12 +85,9 @@ class D3d12Scene : public pr::Scene<Interface> {
   std::span<const Primitive> primitives() const { return m_primitives; }
   Tracing tracing() const noexcept { return m_tracing; }
 
-  /// Shaders from this example's folder, with the scene's constants (and D3D12_ITERATIVE when
-  /// iterative) after the derived declarations.
+  /// Shaders from this example's folder.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    return {.shader_dirs = {examples::examples_dir() / "03_d3d12_scene" / "shaders"},
-            .extra_declarations = extra_declarations() + (m_tracing == Tracing::iterative ? "#define D3D12_ITERATIVE 1\n" : ""),
-            .pipeline_cache = std::move(cache)};
+    return d3d12::renderer_options(std::move(cache));
   }
 
  private:
@@ -100,11 +104,5 @@ class D3d12Scene : public pr::Scene<Interface> {
   pr::LocalSignatureId<PrimitiveRecord> m_record;
 };
 
-/// Shaders from this example's folder, with the scene's constants after the derived declarations:
-/// for a recursive scene (an iterative one: D3d12Scene::renderer_options).
-inline pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) {
-  return {.shader_dirs = {examples::examples_dir() / "03_d3d12_scene" / "shaders"},
-          .extra_declarations = extra_declarations(), .pipeline_cache = std::move(cache)};
-}
 
 }  // namespace d3d12

@@ -22,6 +22,7 @@
 #include "../common/tracing.hpp"
 
 #include <proceduray/march/primitives.hpp>
+#include <proceduray/scene/constants.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/shader.hpp>
 
@@ -303,11 +304,11 @@ inline SceneConstants default_constants(const pr::Camera& camera, float time) {
   return c;
 }
 
-/// The C++ constants above that the shaders need, as GLSL consts.
-inline std::string extra_declarations() {
-  return pr::glsl_const("flag_shadows", flag_shadows) + pr::glsl_const("flag_reflections", flag_reflections) +
-         pr::glsl_const("flag_debug", flag_debug) + pr::glsl_const("flag_count_misses", flag_count_misses) +
-         pr::glsl_const("counted_miss_kind", counted_miss_kind) + pr::glsl_const("max_depth_limit", max_depth_limit);
+/// Declares on `scene` the C++ constants above that the shaders read.
+template <class AnyScene>
+void add_constants(AnyScene& scene) {
+  PROCEDURAY_SCENE_CONSTANTS(scene, flag_shadows, flag_reflections, flag_debug, flag_count_misses, counted_miss_kind,
+                             max_depth_limit);
 }
 
 }  // namespace d3d12

@@ -134,6 +134,8 @@ class Cis565Scene : public pr::Scene<Interface> {
                                .flags = pr::RayFlags::terminate_on_first_hit | pr::RayFlags::skip_closest_hit |
                                         pr::RayFlags::opaque});
     set_global_signature(pr::default_global_signature({constants_slot}));
+    add_constant("max_depth_limit", m_depth_limit);
+    PROCEDURAY_SCENE_CONSTANTS(*this, flag_shadows, flag_ids);
     add_raygen("raygen.rgen");
     // Each reflection nests a radiance ray in a closest hit, and the deepest hit traces shadow rays.
     set_max_recursion_depth(depth_limit + 1);
@@ -160,12 +162,9 @@ class Cis565Scene : public pr::Scene<Interface> {
 
   std::uint32_t depth_limit() const noexcept { return m_depth_limit; }
 
-  /// Shaders from this example's folder; every stage also gets the depth limit.
+  /// Shaders from this example's folder.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    return {.shader_dirs = {examples::examples_dir() / "04_cis565_scene" / "shaders"},
-            .extra_declarations = pr::glsl_const("max_depth_limit", m_depth_limit) +
-                                  pr::glsl_const("flag_shadows", flag_shadows) + pr::glsl_const("flag_ids", flag_ids),
-            .pipeline_cache = std::move(cache)};
+    return {.shader_dirs = {examples::examples_dir() / "04_cis565_scene" / "shaders"}, .pipeline_cache = std::move(cache)};
   }
 
  private:

@@ -169,6 +169,8 @@ class TexturedScene : public pr::Scene<Interface> {
                                .flags = pr::RayFlags::terminate_on_first_hit | pr::RayFlags::skip_closest_hit |
                                         pr::RayFlags::opaque});
     set_global_signature(pr::default_global_signature({constants_slot, ground_slot, sky_slot}));
+    PROCEDURAY_SCENE_CONSTANTS(*this, max_depth_limit, flag_shadows, flag_ids, flag_albedo, flag_normals, flag_flat,
+                               bead_slots);
     add_raygen("raygen.rgen");
     set_max_recursion_depth(max_depth_limit + 1);  // each reflection nests; the deepest hit traces shadows
     const auto material = add_local_signature<Material>("material");
@@ -199,14 +201,9 @@ class TexturedScene : public pr::Scene<Interface> {
   pr::GeometryId beads() const noexcept { return m_beads; }
   const pr::ObjMesh& torus() const noexcept { return m_torus; }
 
+  /// Shaders from this example's folder.
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
-    return {.shader_dirs = {examples::examples_dir() / "05_textured_scene" / "shaders"},
-            .extra_declarations = pr::glsl_const("max_depth_limit", max_depth_limit) +
-                                  pr::glsl_const("flag_shadows", flag_shadows) + pr::glsl_const("flag_ids", flag_ids) +
-                                  pr::glsl_const("flag_albedo", flag_albedo) +
-                                  pr::glsl_const("flag_normals", flag_normals) + pr::glsl_const("flag_flat", flag_flat) +
-                                  pr::glsl_const("bead_slots", bead_slots),
-            .pipeline_cache = std::move(cache)};
+    return {.shader_dirs = {examples::examples_dir() / "05_textured_scene" / "shaders"}, .pipeline_cache = std::move(cache)};
   }
 
  private:

@@ -2,6 +2,7 @@
 // equals its copies and does not follow later changes to the scene); layout(limits) makes the device
 // checks, naming the limit, the value and the device; write() fills handles and root arguments.
 #include "proceduray/scene/plan.hpp"
+#include "proceduray/scene/uniform_slot.hpp"
 
 #include "proceduray/scene/compile.hpp"
 #include "proceduray/scene/default_global_signature.hpp"
@@ -25,7 +26,7 @@ struct Tint { glm::vec3 rgb; float alpha; };
 PROCEDURAY_STRUCT(Payload, scalar, colour);
 PROCEDURAY_STRUCT(Hit, scalar, normal, t);
 PROCEDURAY_STRUCT(Tint, scalar, rgb, alpha);
-using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Payload>, proceduray::RootComponent<>, proceduray::RootArguments<Tint>,
+using TestSceneInterface = proceduray::ShaderInterface<proceduray::Payload<Payload>, proceduray::RootComponent<Tint>, proceduray::RootArguments<Tint>,
                                    proceduray::Attributes<Hit>>;
 using TestScene = proceduray::Scene<TestSceneInterface>;
 
@@ -261,4 +262,20 @@ TEST_CASE("plan knows its BLASes geometries and instances and names bad ids") {
   CHECK_THROWS_WITH_AS(plan.instance_sbt_offset(d.plane, 3), doctest::Contains("Plan::instance_sbt_offset"),
                        InvalidGeometryError);
   CHECK_THROWS_WITH_AS(plan.resolve(RayId<>(2), d.plane, 0), doctest::Contains("Plan::resolve: ray #2"), UnknownIdError);
+}
+
+TEST_CASE("plan layout refuses a push constant block past the device's maxPushConstantsSize") {
+  TestScene scene = plan_test::spheres();
+  GlobalSignatureDesc pushing = default_global_signature();
+  pushing.push_constants = PushConstantSlot<Tint>{.name = "tint_push"};
+  scene.set_global_signature(pushing, "pushing");
+  const Plan plan = compile(scene);
+  DeviceLimits small{.max_push_constants_size = 8, .device = "a small device"};
+  CHECK_THROWS_WITH_AS((void)plan.layout(small),
+                       doctest::Contains("Plan::layout: the push constant block (bytes) the global signature declares "
+                                         "is 16, a small device allows 8 (maxPushConstantsSize; every device allows 128); "
+                                         "move the rest to a uniform"),
+                       DeviceLimitError);
+  small.max_push_constants_size = 16;
+  CHECK_NOTHROW((void)plan.layout(small));
 }

@@ -118,3 +118,67 @@ TEST_CASE("recursion an unknown payload location counts as any ray") {
   m.at("mirror.rchit").any_ray = true;
   CHECK_FALSE(m.need().bounded);
 }
+
+TEST_CASE("settle_recursion puts the derived depth in the plan, and layout checks it against the device") {
+  Mirror m;
+  m.at("mirror.rchit").rays = {1};
+  CHECK_FALSE(m.plan.pipeline().recursion_settled);
+  m.plan.settle_recursion(m.traces, DeviceLimits{}, "Renderer");
+  CHECK(m.plan.pipeline().recursion_settled);
+  CHECK(m.plan.pipeline().max_recursion_depth == 2);
+  CHECK(m.plan.pipeline().recursion_path ==
+        "raygen 'camera.rgen' > ray \"radiance\" > closest_hit 'mirror.rchit' > ray \"shadow\"");
+  DeviceLimits shallow{.max_ray_recursion_depth = 1, .device = "a shallow device"};
+  CHECK_THROWS_WITH_AS(m.plan.layout(shallow),
+                       doctest::Contains("Plan::layout: the scene's max recursion depth (raygen 'camera.rgen' > ray "
+                                         "\"radiance\" > closest_hit 'mirror.rchit' > ray \"shadow\") is 2, a shallow "
+                                         "device allows 1 (maxRayRecursionDepth)"),
+                       DeviceLimitError);
+  DeviceLimits deep = shallow;
+  deep.max_ray_recursion_depth = 2;
+  CHECK_NOTHROW((void)m.plan.layout(deep));
+  // Settling checks the depth it derives against the device itself (layout() ran before it).
+  Mirror again;
+  again.at("mirror.rchit").rays = {1};
+  CHECK_THROWS_WITH_AS(again.plan.settle_recursion(again.traces, shallow, "Renderer"),
+                       doctest::Contains("Renderer: the shaders nest rays 2 deep (raygen 'camera.rgen' > ray \"radiance\" "
+                                         "> closest_hit 'mirror.rchit' > ray \"shadow\"), a shallow device allows 1 "
+                                         "(maxRayRecursionDepth)"),
+                       DeviceLimitError);
+  CHECK_FALSE(again.plan.pipeline().recursion_settled);
+}
+
+TEST_CASE("settle_recursion refuses a declared depth below the shaders' nesting, and a cycle with none declared") {
+  {
+    Mirror m;
+    m.at("mirror.rchit").rays = {0, 1};  // reflections: radiance traces radiance
+    CHECK_THROWS_WITH_AS(m.plan.settle_recursion(m.traces, DeviceLimits{}, "Renderer"),
+                         doctest::Contains("Renderer: the shaders trace in a cycle (raygen 'camera.rgen' > ray "
+                                           "\"radiance\" > closest_hit 'mirror.rchit' > ray \"radiance\")"),
+                         UsageError);
+    CHECK_FALSE(m.plan.pipeline().recursion_settled);
+  }
+  {
+    Mirror m;  // the same cycle with a declared bound: the declared depth is final
+    m.scene.set_max_recursion_depth(4);
+    m.plan = compile(m.scene);
+    m.at("mirror.rchit").rays = {0, 1};
+    m.plan.settle_recursion(m.traces, DeviceLimits{});
+    CHECK(m.plan.pipeline().max_recursion_depth == 4);
+  }
+  {
+    Mirror m;
+    m.scene.set_max_recursion_depth(1);
+    m.plan = compile(m.scene);
+    m.at("mirror.rchit").rays = {1};
+    CHECK_THROWS_WITH_AS(m.plan.settle_recursion(m.traces, DeviceLimits{}, "Renderer"),
+                         doctest::Contains("Renderer: the shaders nest rays 2 deep (raygen 'camera.rgen' > ray "
+                                           "\"radiance\" > closest_hit 'mirror.rchit' > ray \"shadow\") but the "
+                                           "scene declares max recursion depth 1"),
+                         UsageError);
+  }
+  Mirror m;
+  m.traces.pop_back();
+  CHECK_THROWS_WITH_AS(m.plan.settle_recursion(m.traces, DeviceLimits{}), doctest::Contains("give one per pipeline().stages entry"),
+                       UsageError);
+}

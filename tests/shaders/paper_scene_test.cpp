@@ -42,8 +42,7 @@ const proceduray::Plan& paper_plan() {
 }
 
 std::string declarations(std::string_view file) {
-  return proceduray::glsl_for(paper_plan(), stage_of(std::filesystem::path(file)), file) +
-         paper_scene().declarations();
+  return proceduray::glsl_for(paper_plan(), stage_of(std::filesystem::path(file)), file);
 }
 
 std::vector<std::uint32_t> compile_paper_shader(std::string_view file) {

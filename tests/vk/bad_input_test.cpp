@@ -230,8 +230,8 @@ TEST_CASE("bad input: shaders nesting deeper than the device allows") {
   vk::Context limited{{.validation = true, .max_ray_recursion_depth = 1}};
   features_scene::FeaturesScene scene({.recursion_depth = 0});  // derived: 2
   CHECK_THROWS_WITH_AS(vk::Renderer(limited, scene.table(limited), features_scene::FeaturesScene::options()),
-                       Contains("Renderer: the pipeline needs recursion depth 2 (raygen 'scene.rgen' > ray \"primary\" > "
-                                "closest_hit 'floor.rchit' > ray \"shadow\") but"),
+                       Contains("Renderer: the shaders nest rays 2 deep (raygen 'scene.rgen' > ray \"primary\" > "
+                                "closest_hit 'floor.rchit' > ray \"shadow\"), "),
                        DeviceLimitError);
   CHECK(limited.validation_messages().empty());
 }

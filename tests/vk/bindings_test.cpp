@@ -20,7 +20,7 @@ TEST_CASE("bindings refuse a slot whose type or place the global signature does 
   TestContext t;
   renderer_scene::RendererScene s;
   const Plan plan = compile(s.table(t.ctx));
-  vk::SceneAcceleration structures(t.ctx, s.table(t.ctx), plan);
+  vk::SceneAcceleration structures(t.ctx, plan);
   vk::Bindings bindings(t.ctx, plan.global_signature(), structures.tlas().structure());
   constexpr UniformSlot<bindings_test::Big> big{.binding = 2, .name = "constants"};
   CHECK_THROWS_WITH_AS(bindings.set(big, bindings_test::Big{}),

@@ -136,7 +136,7 @@ TEST_CASE("mesh buffers: interpolated normals follow the vertices, not the face"
 TEST_CASE("mesh buffers: only geometries whose records read a mesh get buffers") {
   MeshRender m(0);
   const Plan plan = compile(m.scene);
-  vk::MeshBuffers buffers(m.t.ctx, m.scene, plan);
+  vk::MeshBuffers buffers(m.t.ctx, plan);
   REQUIRE(buffers.addresses().size() == 1);
   CHECK(buffers.addresses()[0].vertices != 0);
   CHECK(buffers.addresses()[0].triangles != 0);
@@ -148,7 +148,7 @@ TEST_CASE("mesh buffers: only geometries whose records read a mesh get buffers")
   unread.add_geometry("plain", plain);
   unread.set_default_hit(unread.ray_id<rs::Colour>("primary"), unread.hit_group_id("mesh"));
   const Plan unread_plan = compile(unread);
-  vk::MeshBuffers fewer(m.t.ctx, unread, unread_plan);
+  vk::MeshBuffers fewer(m.t.ctx, unread_plan);
   REQUIRE(fewer.addresses().size() == 2);
   CHECK(fewer.addresses()[1].vertices == 0);
   CHECK(fewer.bytes() == buffers.bytes());

@@ -17,11 +17,14 @@ TEST_CASE("scene parts alone trace the renderer's frame into the caller's comman
   TestContext t;
   RendererScene s(UpdatePolicy::DynamicTransform);
   const auto& scene = s.table(t.ctx);
-  const Plan plan = compile(scene);
-  vk::SceneAcceleration structures(t.ctx, scene, plan);
+  Plan plan = compile(scene);
+  const vk::RendererOptions options{.shader_dirs = RendererScene::options().shader_dirs};
+  vk::SceneStages stages = vk::compile_scene_stages(plan, options);
+  plan.settle_recursion(stages.traces, t.ctx.limits());
+  vk::SceneAcceleration structures(t.ctx, plan);
   vk::Bindings bindings(t.ctx, plan.global_signature(), structures.tlas().structure());
-  const auto pipeline = vk::make_scene_pipeline(t.ctx, plan, bindings.layouts(), bindings.push_size(),
-                                                {.shader_dirs = RendererScene::options().shader_dirs});
+  const auto pipeline =
+      vk::make_scene_pipeline(t.ctx, plan, std::move(stages), bindings.layouts(), bindings.push_size(), options);
   const vk::SbtBuffer sbt(t.ctx, *pipeline, plan, plan.layout(t.ctx.limits()));
   const vk::StorageImage image(t.ctx, width, height);
   bindings.bind_image(image.view());
@@ -66,7 +69,7 @@ TEST_CASE("scene parts name the call the user made in their errors") {
   RendererScene s;
   const auto& scene = s.table(t.ctx);
   const Plan plan = compile(scene);
-  vk::SceneAcceleration structures(t.ctx, scene, plan);
+  vk::SceneAcceleration structures(t.ctx, plan);
   CHECK_THROWS_WITH_AS(structures.set_transform(s.ball(), 0, glm::mat4(1.0f)),
                        doctest::Contains("SceneAcceleration::set_transform: geometry \"ball\""), UsageError);
   CHECK_THROWS_WITH_AS(structures.set_mask(s.ball(), 9, 1), doctest::Contains("no instance 9"), InvalidGeometryError);

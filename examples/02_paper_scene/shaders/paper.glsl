@@ -1,7 +1,7 @@
 // What the paper scene's raygen and closest-hit shaders share: the ray range. The structs,
 // the bindings (tlas, image, constants), the ray indices (radiance_ray, shadow_ray,
-// ray_count) come from the declarations glsl_for derives from the scene; flag_* and the
-// AABBs from paper::extra_declarations(). Never from here.
+// ray_count), the AABBs and the flag_* constants PaperScene declares come from the declarations
+// glsl_for derives from the scene. Never from here.
 #ifndef PAPER_GLSL
 #define PAPER_GLSL
 

@@ -1,5 +1,5 @@
 // What the D3D12 scene's shaders share beyond the derived declarations (structs, tlas, image,
-// constants, radiance_ray, shadow_ray, ray_count) and d3d12::extra_declarations() (flag_*).
+// constants, radiance_ray, shadow_ray, ray_count, and the flag_* constants the scene declares).
 #ifndef D3D12_GLSL
 #define D3D12_GLSL
 

@@ -11,8 +11,8 @@
 // copy that drifts (a shader clipping to a smaller box than the BLAS's cuts the object, a larger one
 // wastes steps). Names are the geometry id made a GLSL identifier; values print as glsl_const does,
 // so they read back as the same floats. compile() puts them in every stage's declarations
-// (glsl_for.hpp); the text is guarded by PROCEDURAY_AABB_CONSTS, so a second copy appended by
-// hand (RendererOptions::extra_declarations, as before they were derived) declares nothing twice.
+// (glsl_for.hpp); the text is guarded by PROCEDURAY_AABB_CONSTS, so a shader that includes a
+// second copy declares nothing twice.
 #pragma once
 
 #include <proceduray/config.hpp>

@@ -60,11 +60,13 @@ struct PlanBuilder {
       throw SceneError(std::string(op) + ": no raygen entry; add one with Scene::add_raygen");
     }
     out.m_scene.value = s.serial();
+    out.m_constants = s.constants();
     for (std::uint32_t r = 0; r < rays; ++r) out.m_ray_names.push_back(s.rays().name(r));
     for (std::uint32_t g = 0; g < s.geometries().size(); ++g) {
       const Geometry& geometry = s.geometries().entities()[g];
       out.m_geometries.push_back({s.geometries().name(g), geometry.blas, geometry.geometry_index, geometry.desc.opaque,
-                                  geometry.desc.vertex_data.type, geometry.desc.vertex_data.count});
+                                  geometry.desc.vertex_data.type, geometry.desc.vertex_data.count, geometry.desc.aabbs,
+                                  geometry.desc.mesh, geometry.desc.vertex_data.bytes});
     }
     for (std::uint32_t b = 0; b < s.blases().size(); ++b) {
       const Blas& blas = s.blases()[b];
@@ -366,6 +368,8 @@ PROCEDURAY_DECL void PlanBuilder::declarations() {
     types.push_back(t);
     names.push_back({std::string(t->glsl_name), "struct " + std::string(t->glsl_name)});
   };
+  for (const SceneConstant& c : out.m_constants) names.push_back({c.name, quote_origin(c.define ? "define" : "constant", c.name)});
+  for (const TypeOps* t : s.vocabulary()) type(t);
   for (const Ray& r : s.rays().entities()) type(r.payload_glsl);
   for (const HitGroup& g : s.hit_groups().entities()) type(g.attribute_glsl);
   for (const LocalSignature& l : s.local_signatures().entities()) type(l.arguments_glsl);

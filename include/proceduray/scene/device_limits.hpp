@@ -31,6 +31,7 @@ struct DeviceLimits {
   std::uint32_t max_ray_hit_attribute_size = 32;      ///< maxRayHitAttributeSize (bytes)
   std::uint64_t max_geometry_count = 16'777'215;      ///< maxGeometryCount: geometries per BLAS
   std::uint64_t max_instance_count = 16'777'215;      ///< maxInstanceCount: instances in the TLAS
+  std::uint32_t max_push_constants_size = 128;        ///< maxPushConstantsSize (bytes); 128 on every device
   std::string device;                                 ///< the device's name, for messages; empty: unnamed
 };
 

@@ -49,12 +49,14 @@ PROCEDURAY_DECL const char* to_string(UpdatePolicy policy);
 struct Aabb {
   glm::vec3 min{-1.0f};  ///< default: the unit box's corner (-1, -1, -1)
   glm::vec3 max{1.0f};   ///< default: (1, 1, 1)
+  friend bool operator==(const Aabb&, const Aabb&) = default;
 };
 
 /// A triangle mesh: positions and a triangle list.
 struct TriangleMesh {
   std::vector<glm::vec3> vertices;      ///< positions
   std::vector<std::uint32_t> indices;   ///< three per triangle
+  friend bool operator==(const TriangleMesh&, const TriangleMesh&) = default;
 };
 
 /// An instance's object-to-world transform as Vulkan takes it: the three rows of a 3x4 affine

@@ -1,11 +1,10 @@
 // A scene's GLSL declarations as files, written at build time by a small program with no
-// device (compile(scene) needs none), and read back by the renderer instead of deriving them
-// again. The files are exactly Plan::declarations: one per pipeline stage.
+// device (compile(scene) needs none): the text a Renderer gives each stage at run time, for
+// shaders compiled ahead of time (glslangValidator) or read by an editor. The files are exactly
+// Plan::declarations, one per pipeline stage.
 //
 //   proceduray::write_glsl_files(proceduray::compile(scene), "build/paper_glsl");   // one file per stage
 //   proceduray::glsl_file_name(proceduray::ShaderStage::closest_hit, "shade.rchit");   // "shade.rchit.closest_hit.glsl"
-//   auto read = proceduray::glsl_files("build/paper_glsl");   // for RendererOptions::declarations
-//   std::string text = read(proceduray::ShaderStage::closest_hit, "shade.rchit");   // EnvironmentError when missing
 //
 // The generator is one line (examples/02_paper_scene/glsl/generate.cpp), built and run by
 // proceduray_generate_scene_glsl() (cmake/ProcedurayGlsl.cmake) or a Meson custom_target:
@@ -17,7 +16,6 @@
 
 #include <proceduray/config.hpp>
 
-#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,10 +35,6 @@ PROCEDURAY_DECL std::string glsl_file_name(ShaderStage stage, std::string_view s
 /// which costs a file that includes them 0.3 s.
 PROCEDURAY_DECL std::vector<std::string> write_glsl_files(const Plan& plan, const std::string& dir);
 
-/// Reads the declarations write_glsl_files wrote into `dir`, for RendererOptions::declarations;
-/// the function it returns throws EnvironmentError naming a missing file and the fix.
-PROCEDURAY_DECL std::function<std::string(ShaderStage, const std::string&)> glsl_files(std::string dir);
-
 /// The body of a build-time generator: compiles `scene` and writes its declarations into the
 /// folder argv[1], then the list of files into argv[1]/files.txt and, when given, argv[2] (a file
 /// a build system tracks as the output, e.g. Meson's custom_target). Returns 0, or 1 with a message.
@@ -59,7 +53,6 @@ int glsl_files_main(const Scene<Interface>& scene, int argc, char** argv) {
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <exception>
 
 namespace proceduray {
@@ -88,20 +81,6 @@ PROCEDURAY_DECL std::vector<std::string> write_glsl_files(const Plan& plan, cons
     names.push_back(name);
   }
   return names;
-}
-
-PROCEDURAY_DECL std::function<std::string(ShaderStage, const std::string&)> glsl_files(std::string folder) {
-  std::filesystem::path dir(std::move(folder));
-  return [dir = std::move(dir)](ShaderStage stage, const std::string& shader) {
-    const std::filesystem::path path = dir / glsl_file_name(stage, shader);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      throw EnvironmentError("glsl_files: cannot read '" + path.string() + "', the declarations of " +
-                             to_string(stage) + " shader \"" + shader + "\"; rebuild the target that generates "
-                             "them (proceduray_generate_scene_glsl), or drop RendererOptions::declarations");
-    }
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  };
 }
 
 PROCEDURAY_DECL int detail::glsl_files_main_core(const SceneCore& scene, int argc, char** argv) {

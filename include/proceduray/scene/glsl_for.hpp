@@ -193,6 +193,7 @@ PROCEDURAY_DECL std::string common_declarations(const detail::SceneCore& scene, 
     out += glsl_const(name + "_mask", std::uint32_t{desc.cull_mask});
   }
   out += glsl_const("ray_count", scene.rays().size());
+  for (const SceneConstant& c : plan.constants()) out += glsl_constant(c);
   const auto layers = scene.layers().names();
   for (std::uint32_t l = 0; l < layers.size(); ++l) out += glsl_const("layer_" + glsl_identifier(layers[l]), 1u << l);
   for (std::uint32_t c = 0; c < scene.callables().size(); ++c) {

@@ -51,10 +51,14 @@ struct PlannedGroup {
 struct PipelinePlan {
   std::vector<PlannedStage> stages;               ///< used stages, each once: raygen, miss, then hit stages
   std::vector<PlannedGroup> groups;               ///< used groups: raygen, miss, hit groups, callables; handle order
-  std::uint32_t max_recursion_depth = 1;          ///< as declared by Scene::set_max_recursion_depth; else 1
-  /// Whether the depth was declared (Scene::set_max_recursion_depth); default false: the backend
-  /// refuses a pipeline whose non-raygen stages trace rays at an undeclared depth.
+  /// As declared by Scene::set_max_recursion_depth, else 1; after Plan::settle_recursion, the
+  /// depth the pipeline is built with (derived from what the stages trace when undeclared).
+  std::uint32_t max_recursion_depth = 1;
+  /// Whether the depth was declared (Scene::set_max_recursion_depth); default false: settling
+  /// derives it, and refuses stages that trace in a cycle.
   bool recursion_depth_declared = false;
+  bool recursion_settled = false;  ///< Plan::settle_recursion ran: max_recursion_depth is final
+  std::string recursion_path;      ///< when settling derived the depth: the deepest chain of nested rays, for messages
   std::uint32_t max_payload_size = 0;             ///< largest payload of a ray type records use (bytes)
   std::uint32_t max_attribute_size = 0;           ///< largest hit attributes of a used hit group (bytes)
   std::array<std::uint32_t, 4> max_root_arguments_size{};  ///< per region (SbtRegionKind order), bytes after the handle

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "proceduray/error.hpp"
+#include "proceduray/scene/constants.hpp"
 #include "proceduray/scene/device_limits.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
@@ -42,6 +43,8 @@
 #include "proceduray/scene/sbt_layout.hpp"
 
 namespace proceduray {
+
+struct StageTraces;  // recursion.hpp
 
 /// One SBT record; fields that do not apply are no_index.
 struct SbtRecord {
@@ -70,7 +73,8 @@ struct TlasInstance {
   friend bool operator==(const TlasInstance&, const TlasInstance&) = default;
 };
 
-/// A geometry as the plan knows it.
+/// A geometry as the plan knows it, with the bytes its BLAS and mesh buffers are built from
+/// (checked when the scene registered it: the backend takes them as they are).
 struct PlannedGeometry {
   std::string name;                  ///< its id
   std::uint32_t blas = 0;            ///< index into Plan::blases()
@@ -78,6 +82,9 @@ struct PlannedGeometry {
   bool opaque = true;                ///< VK_GEOMETRY_OPAQUE_BIT
   const TypeOps* vertex_type = nullptr;  ///< GeometryDesc::vertex_data's struct; nullptr: none
   std::uint32_t vertex_count = 0;        ///< its vertices
+  std::vector<Aabb> aabbs;               ///< procedural: its boxes, object space
+  TriangleMesh mesh;                     ///< triangles: positions and indices
+  std::vector<std::byte> vertex_bytes;   ///< GeometryDesc::vertex_data's bytes (vertex_count vertices)
   friend bool operator==(const PlannedGeometry&, const PlannedGeometry&) = default;
 };
 
@@ -126,12 +133,21 @@ class Plan {
   /// The per-pixel outputs the scene asked for, in Output order, with their bindings in set 0
   /// (also in global_signature() as BindingKind::output_image).
   std::span<const PlannedOutput> outputs() const { return m_outputs; }
+  /// The constants and defines the scene declared (Scene::add_constant), in every stage's declarations.
+  std::span<const SceneConstant> constants() const { return m_constants; }
   /// traceRayEXT's sbtRecordStride: the number of ray types.
   std::uint32_t ray_count() const { return static_cast<std::uint32_t>(m_ray_names.size()); }
   /// A ray type's id.
   const std::string& ray_name(std::uint32_t ray) const { return m_ray_names.at(ray); }
   /// Every geometry, in registration order.
   std::span<const PlannedGeometry> geometries() const { return m_geometries; }
+  /// Fixes the recursion depth from what each compiled stage traces (`traces`: one per
+  /// pipeline().stages, recursion.hpp): the derived depth when none was declared, else the
+  /// declared one. Throws UsageError, naming `operation` and the chain of rays, for a declared depth
+  /// below what the stages nest, or a cycle (reflections) with no declared depth, and
+  /// DeviceLimitError for a derived depth past `limits` (layout() checks a declared one).
+  void settle_recursion(std::span<const StageTraces> traces, const DeviceLimits& limits,
+                        std::string_view operation = "Plan::settle_recursion");
   /// A geometry of this plan; throws UnknownIdError for an id the plan does not have, naming `operation`.
   const PlannedGeometry& geometry(GeometryId id, std::string_view operation = "Plan::geometry") const {
     if (id.scene() != 0 && id.scene() != m_scene) {
@@ -227,6 +243,7 @@ class Plan {
   PipelinePlan m_pipeline;
   std::optional<GlobalSignatureDesc> m_global;
   std::vector<PlannedOutput> m_outputs;
+  std::vector<SceneConstant> m_constants;
 };
 
 }  // namespace proceduray
@@ -261,8 +278,10 @@ PROCEDURAY_DECL SbtLayout Plan::layout(const DeviceLimits& limits) const {
                             std::to_string(limit) + " (" + name + "); " + fix);
   };
   if (m_pipeline.max_recursion_depth > limits.max_ray_recursion_depth) {
-    throw refuse("the scene's max recursion depth", m_pipeline.max_recursion_depth, limits.max_ray_recursion_depth,
-                 "maxRayRecursionDepth", "trace iteratively from raygen instead");
+    const std::string& path = m_pipeline.recursion_path;
+    throw refuse("the scene's max recursion depth" + (path.empty() ? std::string() : " (" + path + ")"),
+                 m_pipeline.max_recursion_depth, limits.max_ray_recursion_depth, "maxRayRecursionDepth",
+                 "trace iteratively from raygen instead (nested rays cost a level each)");
   }
   for (const PlannedBlas& b : m_blases) {
     if (b.geometries.size() > limits.max_geometry_count) {
@@ -273,6 +292,11 @@ PROCEDURAY_DECL SbtLayout Plan::layout(const DeviceLimits& limits) const {
   if (m_instances.size() > limits.max_instance_count) {
     throw refuse("the scene's instance count", m_instances.size(), limits.max_instance_count, "maxInstanceCount",
                  "merge geometry into fewer instances");
+  }
+  if (m_global && m_global->push_bytes() > limits.max_push_constants_size) {
+    throw refuse("the push constant block (bytes) the global signature declares", m_global->push_bytes(),
+                 limits.max_push_constants_size, "maxPushConstantsSize; every device allows 128",
+                 "move the rest to a uniform");
   }
   for (const PlannedGroup& g : m_pipeline.groups) {
     if (g.attribute_size > limits.max_ray_hit_attribute_size) {
@@ -325,3 +349,5 @@ PROCEDURAY_DECL void Plan::write(const SbtLayout& layout, std::span<std::byte> b
 
 }  // namespace proceduray
 #endif  // PROCEDURAY_BODIES
+
+#include "proceduray/scene/recursion.hpp"  // StageTraces, and settle_recursion's body

@@ -17,6 +17,7 @@
 
 #include <proceduray/config.hpp>
 
+#include "proceduray/error.hpp"
 #include "proceduray/scene/plan.hpp"
 
 #include <algorithm>
@@ -159,6 +160,39 @@ PROCEDURAY_DECL RecursionNeed recursion_need(const Plan& plan, std::span<const S
     }
   }
   return out;
+}
+
+PROCEDURAY_DECL void Plan::settle_recursion(std::span<const StageTraces> traces, const DeviceLimits& limits,
+                                            std::string_view operation) {
+  const std::string op(operation);
+  if (traces.size() != m_pipeline.stages.size()) {
+    throw UsageError(op + ": " + std::to_string(traces.size()) + " stage traces for " +
+                     std::to_string(m_pipeline.stages.size()) + " stages; give one per pipeline().stages entry");
+  }
+  const RecursionNeed need = recursion_need(*this, traces);
+  const std::string declared = std::to_string(m_pipeline.max_recursion_depth);
+  if (!need.bounded && !m_pipeline.recursion_depth_declared) {
+    throw UsageError(op + ": the shaders trace in a cycle (" + need.path + "), so rays nest as deep as the shaders "
+                     "let them and no depth can be derived; stop the recursion in the shader (a depth counter in the "
+                     "payload) and declare that bound with Scene::set_max_recursion_depth(n)");
+  }
+  if (need.bounded && m_pipeline.recursion_depth_declared && m_pipeline.max_recursion_depth < need.depth) {
+    throw UsageError(op + ": the shaders nest rays " + std::to_string(need.depth) + " deep (" + need.path +
+                     ") but the scene declares max recursion depth " + declared + ", which would crash at the nested "
+                     "trace; call Scene::set_max_recursion_depth(" + std::to_string(need.depth) + ") or more, or leave "
+                     "it undeclared to use the derived depth");
+  }
+  if (!m_pipeline.recursion_depth_declared) {  // derived: the chain says where the depth comes from
+    if (need.depth > limits.max_ray_recursion_depth) {
+      throw DeviceLimitError(op + ": the shaders nest rays " + std::to_string(need.depth) + " deep (" + need.path +
+                             "), " + (limits.device.empty() ? std::string("the device") : limits.device) + " allows " +
+                             std::to_string(limits.max_ray_recursion_depth) + " (maxRayRecursionDepth); trace "
+                             "iteratively from raygen instead (nested rays cost a level each)");
+    }
+    m_pipeline.max_recursion_depth = need.depth;
+    m_pipeline.recursion_path = need.path;
+  }
+  m_pipeline.recursion_settled = true;
 }
 
 }  // namespace proceduray

@@ -45,7 +45,9 @@
 #include <type_traits>
 #include <utility>
 #include <variant>
+#include <vector>
 
+#include "proceduray/scene/constants.hpp"
 #include "proceduray/scene/entities.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
@@ -145,6 +147,13 @@ class SceneCore : public Entities {
   void set_outputs(OutputSet outputs) { m_outputs = outputs; }
   /// The outputs asked for (none by default).
   OutputSet outputs() const { return m_outputs; }
+  /// Declares a constant every stage gets (constants.hpp); throws SceneError for a name that is no
+  /// GLSL identifier or is reserved, DuplicateIdError for a name taken.
+  void add_constant(std::string name, ConstantValue value);
+  /// Declares `#define name 1` in every stage, for code a switch keeps out (constants.hpp); throws as add_constant.
+  void add_define(std::string name);
+  /// The constants and defines declared, in order.
+  const std::vector<SceneConstant>& constants() const { return m_constants; }
   /// Every entry and its root arguments.
   const EntryList& entries() const { return m_entries; }
   /// Reserves room for `entries` entries and `data_bytes` of root arguments.
@@ -159,11 +168,13 @@ class SceneCore : public Entities {
   EntryId add_raygen_entry(std::string shader, std::uint32_t signature, const void* data, std::uint32_t size);
   EntryId add_entry(std::string_view op, const Entry& e, const void* data, std::uint32_t size);
   void check_hit(std::string_view op, const Entry& e) const;
+  void declare_constant(std::string_view op, SceneConstant c);
 
   EntryList m_entries;
   GlobalSignatureId m_global_signature;
   std::optional<std::uint32_t> m_max_recursion_depth;
   OutputSet m_outputs;
+  std::vector<SceneConstant> m_constants;
 };
 
 }  // namespace detail
@@ -302,6 +313,25 @@ PROCEDURAY_DECL GlobalSignatureId detail::SceneCore::set_global_signature(Global
 PROCEDURAY_DECL void detail::SceneCore::set_global_signature(GlobalSignatureId id) {
   global_signatures().check_index(own(id, "Scene::set_global_signature"), "Scene::set_global_signature");
   m_global_signature = id;
+}
+
+PROCEDURAY_DECL void detail::SceneCore::add_constant(std::string name, ConstantValue value) {
+  declare_constant("Scene::add_constant", {std::move(name), value, false});
+}
+
+PROCEDURAY_DECL void detail::SceneCore::add_define(std::string name) {
+  declare_constant("Scene::add_define", {std::move(name), {}, true});
+}
+
+PROCEDURAY_DECL void detail::SceneCore::declare_constant(std::string_view op, SceneConstant c) {
+  if (c.name.empty() || glsl_identifier(c.name) != c.name) {
+    throw SceneError(std::string(op) + ": \"" + c.name + "\" is no GLSL name (letters, digits and '_', not starting "
+                     "with a digit); use \"" + glsl_identifier(c.name) + "\"");
+  }
+  std::vector<GlslName> taken = glsl_names();
+  for (const SceneConstant& k : m_constants) taken.push_back({k.name, quote_origin(k.define ? "define" : "constant", k.name)});
+  check_glsl_names(op, taken, {{c.name, quote_origin(c.define ? "define" : "constant", c.name)}});
+  m_constants.push_back(std::move(c));
 }
 
 PROCEDURAY_DECL void detail::SceneCore::set_max_recursion_depth(std::uint32_t depth) {

@@ -56,6 +56,9 @@ struct BuildOptions {
   bool compact = true;        ///< compact after building (BLAS only; ignored with allow_update); default on
   bool allow_update = false;  ///< keep it refittable with update(); default off
   bool fast_trace = true;     ///< prefer trace speed over build speed; default on
+  /// The input comes from a Plan (SceneAcceleration), whose boxes, meshes and transforms were
+  /// checked where the user gave them: they are not checked again. Default off.
+  bool planned = false;
 };
 
 namespace detail {
@@ -305,8 +308,8 @@ PROCEDURAY_DECL std::vector<AccelerationStructure> build_blases(const Context& c
     if (!blases[b].boxes.empty() && !blases[b].triangles.empty()) {
       throw UsageError(operation + " has both boxes and triangles; a BLAS holds one kind: give each its own");
     }
-    inputs.push_back(blases[b].triangles.empty() ? detail::aabb_input(ctx, blases[b].boxes, operation)
-                                                 : detail::triangle_input(ctx, blases[b].triangles, operation));
+    inputs.push_back(blases[b].triangles.empty() ? detail::aabb_input(ctx, blases[b].boxes, operation, !options.planned)
+                                                 : detail::triangle_input(ctx, blases[b].triangles, operation, !options.planned));
   }
   std::vector<detail::BuildCommand> commands;
   for (const detail::BlasInput& in : inputs) {
@@ -318,14 +321,14 @@ PROCEDURAY_DECL std::vector<AccelerationStructure> build_blases(const Context& c
 
 PROCEDURAY_DECL AccelerationStructure build_blas(const Context& ctx, std::span<const AabbGeometry> geometries,
                                                  const BuildOptions& options) {
-  const detail::BlasInput in = detail::aabb_input(ctx, geometries, "build_blas");
+  const detail::BlasInput in = detail::aabb_input(ctx, geometries, "build_blas", !options.planned);
   return std::move(detail::build_structures(
       ctx, {{.flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts}})[0]);
 }
 
 PROCEDURAY_DECL AccelerationStructure build_blas(const Context& ctx, std::span<const TriangleGeometry> geometries,
                                                  const BuildOptions& options) {
-  const detail::BlasInput in = detail::triangle_input(ctx, geometries, "build_blas");
+  const detail::BlasInput in = detail::triangle_input(ctx, geometries, "build_blas", !options.planned);
   return std::move(detail::build_structures(
       ctx, {{.flags = detail::build_flags(options, true), .geometries = in.geometries, .counts = in.counts}})[0]);
 }

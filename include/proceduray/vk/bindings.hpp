@@ -208,12 +208,6 @@ PROCEDURAY_DECL Bindings::Bindings(const Context& ctx, const GlobalSignatureDesc
   if (desc == nullptr) return;
   m_push_block = desc->push_constants;
   m_push_size = desc->push_bytes();
-  const std::uint32_t limit = ctx.properties().limits.maxPushConstantsSize;
-  if (m_push_size > limit) {  // checked before any pipeline work: it is the clearer error
-    throw DeviceLimitError("Renderer: the global signature declares " + std::to_string(m_push_size) +
-                           " bytes of push constants, " + ctx.name() + " allows " + std::to_string(limit) +
-                           " (maxPushConstantsSize; every device allows 128); move the rest to a uniform");
-  }
   std::map<std::uint32_t, std::vector<vk::Binding>> by_set;
   std::uint32_t last_set = 0;
   for (const proceduray::Binding& b : desc->bindings) {

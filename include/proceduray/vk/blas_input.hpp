@@ -68,12 +68,13 @@ PROCEDURAY_DECL void write_aabbs(BlasInput& input, std::span<const AabbGeometry>
 /// Writes vertices into `input` (laid out by triangle_input for the same counts).
 PROCEDURAY_DECL void write_vertices(BlasInput& input, std::span<const TriangleGeometry> geometries);
 
-/// Checks, uploads and describes procedural geometries.
-PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation);
+/// Checks (unless `check` is off: a plan's geometry), uploads and describes procedural geometries.
+PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation,
+                                     bool check = true);
 
-/// Checks, uploads and describes triangle geometries.
+/// The same for triangle geometries.
 PROCEDURAY_DECL BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeometry> geometries,
-                                         std::string_view operation);
+                                         std::string_view operation, bool check = true);
 
 }  // namespace detail
 
@@ -145,8 +146,9 @@ PROCEDURAY_DECL void write_vertices(BlasInput& input, std::span<const TriangleGe
   }
 }
 
-PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation) {
-  check_aabbs(geometries, operation);
+PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeometry> geometries, std::string_view operation,
+                                     bool check) {
+  if (check) check_aabbs(geometries, operation);
   std::size_t total = 0;
   for (const AabbGeometry& g : geometries) total += g.boxes.size();
   BlasInput in;
@@ -171,8 +173,8 @@ PROCEDURAY_DECL BlasInput aabb_input(const Context& ctx, std::span<const AabbGeo
 }
 
 PROCEDURAY_DECL BlasInput triangle_input(const Context& ctx, std::span<const TriangleGeometry> geometries,
-                                         std::string_view operation) {
-  check_triangles(geometries, operation);
+                                         std::string_view operation, bool check) {
+  if (check) check_triangles(geometries, operation);
   std::size_t vertex_count = 0, index_count = 0;
   for (const TriangleGeometry& t : geometries) {
     vertex_count += t.vertices.size();

@@ -31,6 +31,7 @@
 #include <functional>
 #include <string>
 #include <type_traits>
+#include <cstring>
 #include <vector>
 
 namespace proceduray::vk {
@@ -89,7 +90,7 @@ class Context {
   /// The limits the scene layer checks a built shader table against.
   DeviceLimits limits() const {
     return {sbt_properties(), m_rt_properties.maxRayRecursionDepth, m_rt_properties.maxRayHitAttributeSize,
-            m_max_geometry_count, m_max_instance_count, name()};
+            m_max_geometry_count, m_max_instance_count, m_properties.limits.maxPushConstantsSize, name()};
   }
   /// Nanoseconds per timestamp tick; 0 when the queue cannot write timestamps.
   double timestamp_period_ns() const noexcept { return m_timestamp_period; }
@@ -97,6 +98,9 @@ class Context {
   VkCommandPool command_pool() const noexcept { return m_pool; }
   /// minAccelerationStructureScratchOffsetAlignment.
   std::uint32_t scratch_alignment() const noexcept { return m_scratch_alignment; }
+  /// Whether VK_KHR_pipeline_library is enabled (when the device offers it): pipelines are then
+  /// given the largest payload and hit attributes their stages use.
+  bool pipeline_library() const noexcept { return m_pipeline_library; }
   /// Index of a memory type with all `flags` among `type_bits`; throws when there is none.
   std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const;
   /// The same, preferring a type that also has `preferred` (host-cached readback memory, say).
@@ -147,6 +151,7 @@ class Context {
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR m_rt_properties{};
   VkPhysicalDeviceMemoryProperties m_memory{};
   DeviceFunctions m_rt;
+  bool m_pipeline_library = false;
   mutable std::atomic<std::uint64_t> m_submits{0};
   // submit()'s command buffer and fence, reused; a submit inside another's recording makes its own.
   VkCommandBuffer m_submit_cmd = VK_NULL_HANDLE;
@@ -275,8 +280,20 @@ PROCEDURAY_DECL void Context::create_device() {
   auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features);
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
-  info.enabledExtensionCount = static_cast<std::uint32_t>(std::size(detail::required_device_extensions));
-  info.ppEnabledExtensionNames = detail::required_device_extensions;
+  std::vector<const char*> extensions(std::begin(detail::required_device_extensions),
+                                      std::end(detail::required_device_extensions));
+  // Optional: with pipeline libraries a pipeline may be told the largest payload and hit
+  // attributes its stages use (the plan's sizes, PipelineDesc::max_payload_size).
+  std::uint32_t offered_count = 0;
+  vkEnumerateDeviceExtensionProperties(m_physical, nullptr, &offered_count, nullptr);
+  std::vector<VkExtensionProperties> offered(offered_count);
+  vkEnumerateDeviceExtensionProperties(m_physical, nullptr, &offered_count, offered.data());
+  for (const VkExtensionProperties& e : offered) {
+    if (std::strcmp(e.extensionName, VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME) == 0) m_pipeline_library = true;
+  }
+  if (m_pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   check(vkCreateDevice(m_physical, &info, nullptr, &m_device), "vkCreateDevice", m_name);
   vkGetDeviceQueue(m_device, m_queue_family, 0, &m_queue);
 

@@ -62,6 +62,14 @@ struct PipelineDesc {
   std::uint32_t push_constant_size = 0;  ///< bytes of push constants, visible to every stage; default none
   std::uint32_t max_recursion_depth = 1;  ///< deepest traceRayEXT nesting; 1 = raygen traces only
   VkPipelineCache cache = VK_NULL_HANDLE;  ///< e.g. PipelineCache::get(); default none
+  /// The largest payload and hit attributes the stages use (bytes), given to the driver as the
+  /// pipeline's interface (VkRayTracingPipelineInterfaceCreateInfoKHR) where the device has
+  /// pipeline libraries (Context::pipeline_library); 0 (default): not given.
+  std::uint32_t max_payload_size = 0;
+  std::uint32_t max_attribute_size = 0;
+  /// Made from a settled Plan (make_scene_pipeline), whose checks already ran: the recursion depth
+  /// against the device and each stage's tracing are not checked again. Default false.
+  bool planned = false;
 
   /// Adds a shader and returns its index for ShaderGroup.
   std::uint32_t add_shader(ShaderStage stage, std::vector<std::uint32_t> spirv) {
@@ -155,7 +163,7 @@ PROCEDURAY_DECL VkShaderStageFlagBits vk_stage(ShaderStage s) {
 
 PROCEDURAY_DECL void check_pipeline_desc(const Context& ctx, const PipelineDesc& desc) {
   const std::uint32_t device_depth = ctx.ray_tracing_properties().maxRayRecursionDepth;
-  if (desc.max_recursion_depth > device_depth) {
+  if (!desc.planned && desc.max_recursion_depth > device_depth) {
     throw DeviceLimitError("Pipeline: max_recursion_depth " + std::to_string(desc.max_recursion_depth) +
                            " exceeds maxRayRecursionDepth " + std::to_string(device_depth) + " of " + ctx.name() +
                            "; trace deeper paths iteratively from the raygen shader");
@@ -180,7 +188,7 @@ PROCEDURAY_DECL void check_pipeline_desc(const Context& ctx, const PipelineDesc&
                        " has no intersection shader; procedural geometry needs one");
     }
   }
-  for (std::size_t i = 0; i < desc.shaders.size(); ++i) {
+  for (std::size_t i = 0; i < desc.shaders.size() && !desc.planned; ++i) {
     check_recursion_depth("Pipeline", desc.shaders[i].stage, "PipelineDesc::shaders[" + std::to_string(i) + "]",
                           desc.shaders[i].spirv, desc.max_recursion_depth, true,
                           "set PipelineDesc::max_recursion_depth = n");
@@ -221,6 +229,14 @@ PROCEDURAY_DECL VkPipeline create_pipeline(const Context& ctx, const PipelineDes
   info.pGroups = groups.data();
   info.maxPipelineRayRecursionDepth = desc.max_recursion_depth;
   info.layout = layout;
+  auto interface = make<VkRayTracingPipelineInterfaceCreateInfoKHR>(
+      VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_INTERFACE_CREATE_INFO_KHR);
+  interface.maxPipelineRayPayloadSize = desc.max_payload_size;
+  interface.maxPipelineRayHitAttributeSize = desc.max_attribute_size;
+  // The interface may be given only with VK_KHR_pipeline_library enabled (VUID 03595).
+  if (ctx.pipeline_library() && (desc.max_payload_size > 0 || desc.max_attribute_size > 0)) {
+    info.pLibraryInterface = &interface;
+  }
   const VkDynamicState dynamic = VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR;
   auto dynamic_info = make<VkPipelineDynamicStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
   dynamic_info.dynamicStateCount = 1;

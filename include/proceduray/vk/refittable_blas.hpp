@@ -28,14 +28,16 @@ namespace proceduray::vk {
 class RefittableBlas {
  public:
   RefittableBlas() = default;
-  /// Builds over procedural geometries and waits; throws for bad boxes.
-  RefittableBlas(const Context& ctx, std::span<const AabbGeometry> geometries, bool fast_trace = true)
-      : m_input(detail::aabb_input(ctx, geometries, "RefittableBlas")) {
+  /// Builds over procedural geometries and waits; throws for bad boxes. `planned`: the boxes come
+  /// from a Plan, and later ones from setters that check them (SceneAcceleration): not checked here.
+  RefittableBlas(const Context& ctx, std::span<const AabbGeometry> geometries, bool fast_trace = true, bool planned = false)
+      : m_input(detail::aabb_input(ctx, geometries, "RefittableBlas", !planned)), m_planned(planned) {
     build(ctx, fast_trace);
   }
   /// Builds over triangle geometries and waits; throws for a bad mesh.
-  RefittableBlas(const Context& ctx, std::span<const TriangleGeometry> geometries, bool fast_trace = true)
-      : m_input(detail::triangle_input(ctx, geometries, "RefittableBlas")) {
+  RefittableBlas(const Context& ctx, std::span<const TriangleGeometry> geometries, bool fast_trace = true,
+                 bool planned = false)
+      : m_input(detail::triangle_input(ctx, geometries, "RefittableBlas", !planned)), m_planned(planned) {
     for (const TriangleGeometry& t : geometries) {
       m_indices.insert(m_indices.end(), t.indices.begin(), t.indices.end());
       m_vertex_counts.push_back(static_cast<std::uint32_t>(t.vertices.size()));
@@ -69,14 +71,14 @@ class RefittableBlas {
   /// Writes new boxes and records the refit into `cmd`, with a barrier for the TLAS build and
   /// traces after it. Throws when the topology differs: build a new RefittableBlas for that.
   void record_refit(const Context& ctx, VkCommandBuffer cmd, std::span<const AabbGeometry> geometries) {
-    detail::check_aabbs(geometries, "RefittableBlas::record_refit");
+    if (!m_planned) detail::check_aabbs(geometries, "RefittableBlas::record_refit");
     if (!same_topology(geometries)) throw topology_error();
     detail::write_aabbs(m_input, geometries);
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
   }
   /// The same for new vertex positions (indices unchanged).
   void record_refit(const Context& ctx, VkCommandBuffer cmd, std::span<const TriangleGeometry> geometries) {
-    detail::check_triangles(geometries, "RefittableBlas::record_refit");
+    if (!m_planned) detail::check_triangles(geometries, "RefittableBlas::record_refit");
     if (!same_topology(geometries)) throw topology_error();
     detail::write_vertices(m_input, geometries);
     record(ctx, cmd, VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR);
@@ -114,6 +116,7 @@ class RefittableBlas {
   VkBuildAccelerationStructureFlagsKHR m_flags = 0;
   std::vector<std::uint32_t> m_indices;        // triangles: every index, for topology checks
   std::vector<std::uint32_t> m_vertex_counts;  // triangles: per geometry
+  bool m_planned = false;                      // input checked before it gets here
 };
 
 }  // namespace proceduray::vk

@@ -27,8 +27,8 @@
 //   ctx.submit([&](VkCommandBuffer cmd) { renderer.record(cmd, 1024, 768); });   // or into your own command buffer
 //   renderer.image().read();                          // then read the image it traced into
 //
-// It compiles the scene (compile.hpp) and keeps the Plan, a value: changing the scene afterwards
-// does not change the renderer; the scene is read only while the constructor runs.
+// Its one input is a Plan (compile(scene), a value): built from a scene, it compiles it first;
+// changing the scene afterwards does not change the renderer.
 // Uniforms and push constants are recorded into each frame, so setting them never waits. The
 // other setters write memory that submitted frames read: they wait for the frames in flight.
 #pragma once
@@ -72,10 +72,13 @@ struct BuildTimings {
 /// Builds the device objects of a scene and traces frames of it.
 class Renderer {
  public:
-  /// Compiles `scene` and builds it on `ctx`; throws what compile() and Plan::layout() throw.
+  /// Builds `plan` on `ctx`: the plan is all the renderer reads (geometry, records, stages,
+  /// declarations, sizes); throws what Plan::layout() throws, and for shaders that fail.
+  Renderer(const Context& ctx, proceduray::Plan plan, RendererOptions options = {});
+  /// Compiles `scene` (compile.hpp) and builds its plan; the scene is not read afterwards.
   template <class Interface>
   Renderer(const Context& ctx, const proceduray::Scene<Interface>& scene, RendererOptions options = {})
-      : Renderer(ctx, static_cast<const proceduray::detail::SceneCore&>(scene), std::move(options)) {}
+      : Renderer(ctx, compile(scene), std::move(options)) {}
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
   ~Renderer();  // out of line: a program compiles the parts' destruction once
@@ -214,7 +217,6 @@ class Renderer {
   VkDeviceSize blas_bytes() const noexcept { return m_structures->blas_bytes(); }
 
  private:
-  Renderer(const Context& ctx, const proceduray::detail::SceneCore& scene, RendererOptions options);
   using Clock = std::chrono::steady_clock;
   static double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -259,8 +261,8 @@ class Renderer {
 };
 
 #if PROCEDURAY_BODIES
-PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::detail::SceneCore& scene, RendererOptions options)
-    : m_ctx(&ctx), m_plan(proceduray::detail::compile_core(scene)), m_layout(m_plan.layout(ctx.limits())) {
+PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, RendererOptions options)
+    : m_ctx(&ctx), m_plan(std::move(plan)) {
   m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
   m_slot_frames.resize(m_ring->size());
   if (const auto raygen = m_plan.records(SbtRegionKind::raygen); raygen.size() > 1) {
@@ -269,20 +271,25 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, const proceduray::detail:
                      m_plan.pipeline().groups[raygen[1].group].name + "\"); a Renderer traces one raygen: keep "
                      "one per scene, or make one scene per raygen");
   }
+  // Every device limit is checked once, before any device object is made: the plan's (layout),
+  // then the depth the stages' tracing settles, when derived.
+  m_layout = m_plan.layout(ctx.limits());
+  SceneStages stages = compile_scene_stages(m_plan, options);
+  m_plan.settle_recursion(stages.traces, ctx.limits(), "Renderer");
   const auto start = Clock::now();
-  m_structures = std::make_unique<SceneAcceleration>(ctx, scene, m_plan, options.blas);
+  m_structures = std::make_unique<SceneAcceleration>(ctx, m_plan, options.blas);
   m_timings.acceleration_ms = ms_since(start);
   m_bindings = std::make_unique<Bindings>(ctx, m_plan.global_signature(), m_structures->tlas().structure(),
                                           static_cast<std::uint32_t>(m_plan.instances().size()));
   PipelineTimings pipeline;
-  m_pipeline = make_scene_pipeline(ctx, m_plan, m_bindings->layouts(), m_bindings->push_size(), std::move(options),
+  m_pipeline = make_scene_pipeline(ctx, m_plan, std::move(stages), m_bindings->layouts(), m_bindings->push_size(), options,
                                    &pipeline);
   m_timings.compile_ms = pipeline.compile_ms;
   m_timings.pipeline_ms = pipeline.pipeline_ms;
   m_timings.pipeline_cached = pipeline.pipeline_cached;
   m_timings.spirv_cached = pipeline.spirv_cached;
   m_timings.spirv_compiled = pipeline.spirv_compiled;
-  m_meshes = std::make_unique<MeshBuffers>(ctx, scene, m_plan);
+  m_meshes = std::make_unique<MeshBuffers>(ctx, m_plan);
   m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
   m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
 }

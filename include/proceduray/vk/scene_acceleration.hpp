@@ -2,7 +2,7 @@
 // (compacted when Static, refittable when DynamicGeometry), the TLAS over the planned instances
 // (refittable when anything is dynamic), and the per-frame work the update policies allow.
 //
-//   proceduray::vk::SceneAcceleration structures(ctx, scene, plan);   // reads the scene here only
+//   proceduray::vk::SceneAcceleration structures(ctx, plan);   // the plan's geometry, as it is
 //   structures.set_transform(ball, 1, moved);          // DynamicTransform: TLAS refit next frame
 //   structures.set_aabbs(blob, boxes);                 // DynamicGeometry: BLAS refit, or rebuild
 //   ctx.submit([&](VkCommandBuffer cmd) {
@@ -18,7 +18,6 @@
 
 #include <proceduray/error.hpp>
 #include <proceduray/scene/plan.hpp>
-#include <proceduray/scene/scene.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/frame.hpp>
 #include <proceduray/vk/refittable_blas.hpp>
@@ -39,10 +38,10 @@ namespace proceduray::vk {
 /// A compiled scene's BLASes and TLAS, and their updates.
 class SceneAcceleration {
  public:
-  /// Builds every BLAS and the TLAS from `plan` and the geometry data of `scene` (not copied for
-  /// Static geometry), and waits: all Static BLASes in one submit and compacted in a second
+  /// Builds every BLAS and the TLAS from `plan` and its geometry data (not copied for Static
+  /// geometry: `plan` must outlive it), and waits: all Static BLASes in one submit and compacted in a second
   /// (build_blases), each DynamicGeometry one refittable in its own, then the TLAS.
-  SceneAcceleration(const Context& ctx, const proceduray::detail::SceneCore& scene, const proceduray::Plan& plan,
+  SceneAcceleration(const Context& ctx, const proceduray::Plan& plan,
                     const BuildOptions& options = {});
   SceneAcceleration(const SceneAcceleration&) = delete;
   SceneAcceleration& operator=(const SceneAcceleration&) = delete;
@@ -110,9 +109,9 @@ class SceneAcceleration {
     const AccelerationStructure& get() const { return dynamic ? dynamic->structure() : fixed; }
   };
   /// Builds every Static (and DynamicTransform) BLAS in one batch: two submits, compacted per `options`.
-  void build_static_blases(const proceduray::detail::SceneCore& scene, const BuildOptions& options);
+  void build_static_blases(const BuildOptions& options);
   /// Copies the data of DynamicGeometry BLAS `b` and builds it refittable (one submit).
-  void build_refittable_blas(const proceduray::detail::SceneCore& scene, std::uint32_t b);
+  void build_refittable_blas(std::uint32_t b);
   const PlannedBlas& dynamic_geometry(GeometryId geometry, GeometryKind kind, std::string_view operation) const;
   /// Rebuilds changed BLASes whose topology changed (each waits) and returns the ones to refit.
   std::vector<std::uint32_t> prepare_blases(FrameWork& work);
@@ -133,14 +132,14 @@ static_assert(sizeof(Aabb) == sizeof(VkAabbPositionsKHR) && offsetof(Aabb, max) 
 
 #if PROCEDURAY_BODIES
 
-PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::detail::SceneCore& scene, const proceduray::Plan& plan,
+PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const proceduray::Plan& plan,
                                                      const BuildOptions& options)
     : m_ctx(&ctx), m_plan(&plan) {
   const auto blases = plan.blases();
   m_blases.resize(blases.size());
-  build_static_blases(scene, options);
+  build_static_blases(options);
   for (std::uint32_t b = 0; b < m_blases.size(); ++b) {
-    if (blases[b].update == UpdatePolicy::DynamicGeometry) build_refittable_blas(scene, b);
+    if (blases[b].update == UpdatePolicy::DynamicGeometry) build_refittable_blas(b);
   }
   const auto instances = m_plan->instances();
   std::vector<Instance> list;
@@ -150,7 +149,7 @@ PROCEDURAY_DECL SceneAcceleration::SceneAcceleration(const Context& ctx, const p
   }
   m_instances = std::make_unique<SceneInstances>(*m_plan, std::move(list));
   // Always refittable, so showing and hiding instances (a mask) is an update, never a rebuild.
-  m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true});
+  m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true, .planned = true});
 }
 
 PROCEDURAY_DECL std::uint32_t SceneAcceleration::add_instance(GeometryId geometry, const glm::mat4& object_to_world,
@@ -160,16 +159,16 @@ PROCEDURAY_DECL std::uint32_t SceneAcceleration::add_instance(GeometryId geometr
   const auto count = static_cast<std::uint32_t>(m_instances->list().size());
   if (count > m_tlas.capacity()) {
     // Twice the room, so a run of adds replaces the TLAS a logarithmic number of times.
-    m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true}, std::max<std::uint32_t>(16, 2 * count));
+    m_tlas = Tlas(*m_ctx, m_instances->list(), {.allow_update = true, .planned = true}, std::max<std::uint32_t>(16, 2 * count));
     m_tlas_replaced = true;
   }
   return instance;
 }
 
-PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::detail::SceneCore& scene, const BuildOptions& options) {
+PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const BuildOptions& options) {
   const auto blases = m_plan->blases();
   std::vector<std::uint32_t> which;
-  std::vector<std::vector<AabbGeometry>> boxes;         // straight from the scene: Static data is not copied
+  std::vector<std::vector<AabbGeometry>> boxes;         // straight from the plan: Static data is not copied
   std::vector<std::vector<TriangleGeometry>> meshes;
   std::vector<BlasGeometries> batch;
   for (std::uint32_t b = 0; b < blases.size(); ++b) {
@@ -178,27 +177,28 @@ PROCEDURAY_DECL void SceneAcceleration::build_static_blases(const proceduray::de
     boxes.emplace_back();
     meshes.emplace_back();
     for (std::uint32_t g : blases[b].geometries) {
-      const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;
-      const bool opaque = m_plan->geometries()[g].opaque;
+      const PlannedGeometry& desc = m_plan->geometries()[g];
       if (blases[b].kind == GeometryKind::procedural) {
         boxes.back().push_back(
-            {std::span(reinterpret_cast<const VkAabbPositionsKHR*>(desc.aabbs.data()), desc.aabbs.size()), opaque});
+            {std::span(reinterpret_cast<const VkAabbPositionsKHR*>(desc.aabbs.data()), desc.aabbs.size()), desc.opaque});
       } else {
-        meshes.back().push_back({desc.mesh.vertices, desc.mesh.indices, opaque});
+        meshes.back().push_back({desc.mesh.vertices, desc.mesh.indices, desc.opaque});
       }
     }
   }
   for (std::size_t i = 0; i < which.size(); ++i) batch.push_back({boxes[i], meshes[i]});
   // One submit builds every Static BLAS and queries the compacted sizes, a second compacts them all.
-  std::vector<AccelerationStructure> built = build_blases(*m_ctx, batch, options);
+  BuildOptions planned = options;
+  planned.planned = true;  // checked when the scene registered the geometry
+  std::vector<AccelerationStructure> built = build_blases(*m_ctx, batch, planned);
   for (std::size_t i = 0; i < which.size(); ++i) m_blases[which[i]].fixed = std::move(built[i]);
 }
 
-PROCEDURAY_DECL void SceneAcceleration::build_refittable_blas(const proceduray::detail::SceneCore& scene, std::uint32_t b) {
+PROCEDURAY_DECL void SceneAcceleration::build_refittable_blas(std::uint32_t b) {
   const PlannedBlas& blas = m_plan->blases()[b];
   BlasSlot& slot = m_blases[b];
   for (std::uint32_t g : blas.geometries) {
-    const GeometryDesc& desc = scene.geometry(GeometryId(g)).desc;
+    const PlannedGeometry& desc = m_plan->geometries()[g];
     if (blas.kind == GeometryKind::procedural) {
       const auto* first = reinterpret_cast<const VkAabbPositionsKHR*>(desc.aabbs.data());
       slot.boxes.emplace_back(first, first + desc.aabbs.size());
@@ -207,9 +207,9 @@ PROCEDURAY_DECL void SceneAcceleration::build_refittable_blas(const proceduray::
     }
   }
   if (blas.kind == GeometryKind::procedural) {
-    slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(aabb_geometries(b)));
+    slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(aabb_geometries(b)), true, true);
   } else {
-    slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(triangle_geometries(b)));
+    slot.dynamic = std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(triangle_geometries(b)), true, true);
   }
 }
 
@@ -324,8 +324,9 @@ PROCEDURAY_DECL std::vector<std::uint32_t> SceneAcceleration::prepare_blases(Fra
       m_instances->blas_refit();  // the TLAS holds the old bounds: refit it
     } else {
       // A new structure (the old one is freed whole, handle before memory); its instances point at it.
-      slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes))
-                                : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes));
+      // Checked by set_aabbs, set_vertices or set_mesh when given (planned: not again).
+      slot.dynamic = procedural ? std::make_unique<RefittableBlas>(*m_ctx, std::span<const AabbGeometry>(boxes), true, true)
+                                : std::make_unique<RefittableBlas>(*m_ctx, std::span<const TriangleGeometry>(meshes), true, true);
       m_instances->blas_rebuilt(b, slot.dynamic->structure());
       ++work.blas_builds;
     }

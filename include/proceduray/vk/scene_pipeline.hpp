@@ -1,14 +1,14 @@
-// The ray-tracing pipeline of a compiled scene: each planned stage's GLSL read from the shader
-// folders and compiled after its declarations, the planned groups, a recursion depth derived
-// from what the stages trace (or the declared one, checked against it), and a disk pipeline
-// cache when asked.
+// The ray-tracing pipeline of a compiled scene, in two steps with the plan settled between them:
+// each planned stage's GLSL read from the shader folders and compiled after its declarations
+// (what each stage traces read from its SPIR-V), then the pipeline of the planned groups at the
+// plan's recursion depth, with a disk pipeline cache when asked.
 //
-//   proceduray::vk::PipelineTimings timings;
+//   proceduray::vk::SceneStages stages = proceduray::vk::compile_scene_stages(plan, {.shader_dirs = {"shaders"}});
+//   proceduray::SbtLayout layout = plan.layout(ctx.limits());   // the device's limits, checked once
+//   plan.settle_recursion(stages.traces, ctx.limits(), "Renderer");   // the final depth, in the plan
 //   std::unique_ptr<proceduray::vk::Pipeline> pipeline = proceduray::vk::make_scene_pipeline(
-//       ctx, plan, bindings.layouts(), bindings.push_size(), {.shader_dirs = {"shaders"}}, &timings);
-//   timings.compile_ms;   // glslang, all stages
+//       ctx, plan, std::move(stages), bindings.layouts(), bindings.push_size(), {.shader_dirs = {"shaders"}});
 //   std::vector<proceduray::vk::ShaderGroup> groups = proceduray::vk::shader_groups(plan.pipeline());   // for a PipelineDesc
-//   std::uint32_t depth = proceduray::vk::pipeline_depth(ctx, plan, traces);   // traces: stage_traces() per stage
 #pragma once
 
 #include <proceduray/config.hpp>
@@ -27,7 +27,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -39,11 +38,6 @@ namespace proceduray::vk {
 /// (SceneAcceleration). Every member has a default.
 struct RendererOptions {
   std::vector<std::filesystem::path> shader_dirs;  ///< where the plan's shader names are read; default: the current folder
-  /// Replaces the plan's declarations when set, e.g. with files written at build time (glsl_files);
-  /// extra_declarations still follow.
-  std::function<std::string(ShaderStage, const std::string& name)> declarations;
-  /// GLSL every shader gets after the generated declarations (glsl_for): the scene's own constants, say.
-  std::string extra_declarations;
   /// Keep compiled shaders and the driver's pipeline cache on disk (default on): a second start
   /// skips glslang and most of the driver's compile. Off: neither is read nor written.
   bool cache = true;
@@ -55,6 +49,15 @@ struct RendererOptions {
   /// Frames a Renderer keeps in flight, 1..max_frames_in_flight (8); default 2: the host records
   /// one frame while the device traces the one before.
   std::uint32_t frames_in_flight = 2;
+};
+
+/// A plan's stages compiled, in pipeline().stages order.
+struct SceneStages {
+  std::vector<std::vector<std::uint32_t>> spirv;  ///< one module per stage
+  std::vector<StageTraces> traces;                ///< what each traces (for Plan::settle_recursion)
+  double compile_ms = 0;                          ///< glslang, all stages (wall time)
+  std::uint32_t spirv_cached = 0;                 ///< stages whose SPIR-V came from the cache
+  std::uint32_t spirv_compiled = 0;               ///< stages glslang compiled
 };
 
 /// What making the pipeline cost, in milliseconds of wall time.
@@ -78,20 +81,21 @@ PROCEDURAY_DECL std::string find_shader(std::span<const std::filesystem::path> d
 /// records run the stage; any other name, or none, may be any ray.
 PROCEDURAY_DECL StageTraces stage_traces(const proceduray::Plan& plan, std::uint32_t s, const TraceInfo& info);
 
-/// The recursion depth to build the plan's pipeline with, from what its stages trace
-/// (scene/recursion.hpp): the derived depth when none was declared; the declared one when it
-/// covers the derived depth, or when a cycle leaves the bound to the shaders. Throws UsageError
-/// for a declared depth below the derived one or a cycle with no declared depth, and
-/// DeviceLimitError for a depth past the device's maxRayRecursionDepth, naming the chain of rays.
-PROCEDURAY_DECL std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& plan, std::span<const StageTraces> traces);
+/// The folder the SPIR-V and pipeline caches go to: empty when RendererOptions::cache is off.
+PROCEDURAY_DECL std::filesystem::path scene_cache_dir(const RendererOptions& options);
 
-/// Compiles the plan's stages and makes its pipeline over `set_layouts` and `push_size` bytes of push
-/// constants, at the recursion depth pipeline_depth() gives. Throws UsageError for a missing shader
-/// or a depth the shaders exceed, DeviceLimitError past the device's depth, ShaderCompileError
-/// naming the stage, the scene entities that use it, and the file (includes resolved) and line.
+/// Compiles the plan's stages (RendererOptions: shader folders, SPIR-V cache). Throws UsageError
+/// for a missing shader, ShaderCompileError naming the stage, the scene entities that use it, and
+/// the file (includes resolved) and line.
+PROCEDURAY_DECL SceneStages compile_scene_stages(const proceduray::Plan& plan, const RendererOptions& options);
+
+/// Makes the plan's pipeline from its compiled stages over `set_layouts` and `push_size` bytes of
+/// push constants, at the plan's recursion depth. The plan must be checked (layout()) and settled
+/// (settle_recursion): its numbers are taken as they are (UsageError when not settled).
 PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
+                                                              SceneStages stages,
                                                               std::span<const VkDescriptorSetLayout> set_layouts,
-                                                              std::uint32_t push_size, RendererOptions options,
+                                                              std::uint32_t push_size, const RendererOptions& options,
                                                               PipelineTimings* timings = nullptr);
 
 }  // namespace proceduray::vk
@@ -150,58 +154,27 @@ PROCEDURAY_DECL StageTraces stage_traces(const proceduray::Plan& plan, std::uint
   return out;
 }
 
-PROCEDURAY_DECL std::uint32_t pipeline_depth(const Context& ctx, const proceduray::Plan& plan, std::span<const StageTraces> traces) {
-  const PipelinePlan& planned = plan.pipeline();
-  const RecursionNeed need = recursion_need(plan, traces);
-  const std::uint32_t device = ctx.ray_tracing_properties().maxRayRecursionDepth;
-  const std::string declared = std::to_string(planned.max_recursion_depth);
-  if (!need.bounded && !planned.recursion_depth_declared) {
-    throw UsageError("Renderer: the shaders trace in a cycle (" + need.path + "), so rays nest as deep as the shaders "
-                     "let them and no depth can be derived; stop the recursion in the shader (a depth counter in the "
-                     "payload) and declare that bound with Scene::set_max_recursion_depth(n), n <= " +
-                     std::to_string(device) + " on " + ctx.name());
-  }
-  if (need.bounded && planned.recursion_depth_declared && planned.max_recursion_depth < need.depth) {
-    throw UsageError("Renderer: the shaders nest rays " + std::to_string(need.depth) + " deep (" + need.path +
-                     ") but the scene declares max recursion depth " + declared + ", which would crash at the nested "
-                     "trace; call Scene::set_max_recursion_depth(" + std::to_string(need.depth) + ") or more, or leave "
-                     "it undeclared to use the derived depth");
-  }
-  const std::uint32_t depth = need.bounded && !planned.recursion_depth_declared ? need.depth : planned.max_recursion_depth;
-  if (depth > device) {
-    throw DeviceLimitError("Renderer: the pipeline needs recursion depth " + std::to_string(depth) +
-                           (need.bounded ? " (" + need.path + ")" : std::string(" (declared)")) + " but " + ctx.name() +
-                           " allows " + std::to_string(device) + " (maxRayRecursionDepth); trace fewer nested rays "
-                           "(iterate in the raygen instead of recursing in closest-hit shaders)");
-  }
-  return depth;
+PROCEDURAY_DECL std::filesystem::path scene_cache_dir(const RendererOptions& options) {
+  if (!options.cache) return {};
+  return options.cache_dir.empty() ? default_cache_dir() : options.cache_dir;
 }
 
-PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
-                                                              std::span<const VkDescriptorSetLayout> set_layouts,
-                                                              std::uint32_t push_size, RendererOptions options,
-                                                              PipelineTimings* timings) {
+PROCEDURAY_DECL SceneStages compile_scene_stages(const proceduray::Plan& plan, const RendererOptions& options) {
   using Clock = std::chrono::steady_clock;
-  auto ms_since = [](Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-  };
-  if (options.shader_dirs.empty()) options.shader_dirs.push_back(std::filesystem::current_path());
+  std::vector<std::filesystem::path> dirs = options.shader_dirs;
+  if (dirs.empty()) dirs.push_back(std::filesystem::current_path());
   const PipelinePlan& planned = plan.pipeline();
-  PipelineTimings t;
-  PipelineDesc desc;
-  std::vector<StageTraces> traces;
-  const std::filesystem::path cache_dir =
-      !options.cache ? std::filesystem::path() : !options.cache_dir.empty() ? options.cache_dir : default_cache_dir();
+  const std::filesystem::path cache_dir = scene_cache_dir(options);
   SpirvCache spirv_cache(cache_dir.empty() ? cache_dir : cache_dir / "spirv");
-  auto start = Clock::now();
+  SceneStages out;
+  const auto start = Clock::now();
   for (const PlannedStage& stage : planned.stages) {
-    const std::string path = find_shader(options.shader_dirs, stage.shader);
-    std::string preamble = (options.declarations ? options.declarations(stage.stage, stage.shader)
-                                                 : stage.declarations) + options.extra_declarations;
+    const std::string path = find_shader(dirs, stage.shader);
     std::vector<std::uint32_t> spirv;
     try {
-      spirv = spirv_cache.compile(
-          {.stage = stage.stage, .name = path, .code = read_text_file(path), .preamble = std::move(preamble)});
+      // The plan's declarations: the same text a build step writes (glsl_files.hpp).
+      spirv = spirv_cache.compile({.stage = stage.stage, .name = path, .code = read_text_file(path),
+                                   .preamble = stage.declarations});
     } catch (const ShaderCompileError& e) {
       // glslang knows the file; the scene knows who runs it and which generated names exist.
       const auto index = static_cast<std::uint32_t>(&stage - planned.stages.data());
@@ -210,24 +183,47 @@ PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx
                                (users.empty() ? std::string() : " (" + users + ")"),
                            generated_name_hint(plan, stage.stage, e.log()));
     }
-    traces.push_back(stage_traces(plan, static_cast<std::uint32_t>(traces.size()), trace_info(spirv)));
-    desc.add_shader(stage.stage, std::move(spirv));
+    out.traces.push_back(stage_traces(plan, static_cast<std::uint32_t>(out.traces.size()), trace_info(spirv)));
+    out.spirv.push_back(std::move(spirv));
   }
-  t.compile_ms = ms_since(start);
-  t.spirv_cached = spirv_cache.hits();
-  t.spirv_compiled = spirv_cache.misses();
-  const std::uint32_t depth = pipeline_depth(ctx, plan, traces);  // throws
+  out.compile_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  out.spirv_cached = spirv_cache.hits();
+  out.spirv_compiled = spirv_cache.misses();
+  return out;
+}
+
+PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
+                                                              SceneStages stages,
+                                                              std::span<const VkDescriptorSetLayout> set_layouts,
+                                                              std::uint32_t push_size, const RendererOptions& options,
+                                                              PipelineTimings* timings) {
+  using Clock = std::chrono::steady_clock;
+  const PipelinePlan& planned = plan.pipeline();
+  if (!planned.recursion_settled || stages.spirv.size() != planned.stages.size()) {
+    throw UsageError("make_scene_pipeline: the plan is not settled for these stages (" +
+                     std::to_string(stages.spirv.size()) + " modules for " + std::to_string(planned.stages.size()) +
+                     " stages); compile them with compile_scene_stages(plan), then call plan.layout(limits) and "
+                     "plan.settle_recursion(traces, limits)");
+  }
+  PipelineDesc desc;
+  for (std::size_t i = 0; i < planned.stages.size(); ++i) desc.add_shader(planned.stages[i].stage, std::move(stages.spirv[i]));
   desc.groups = shader_groups(planned);
   desc.set_layouts.assign(set_layouts.begin(), set_layouts.end());
   desc.push_constant_size = push_size;
-  desc.max_recursion_depth = depth;
+  desc.max_recursion_depth = planned.max_recursion_depth;
+  desc.max_payload_size = planned.max_payload_size;
+  desc.max_attribute_size = planned.max_attribute_size;
+  desc.planned = true;  // the plan's checks ran: the device's limits and each stage's tracing
+  const std::filesystem::path cache_dir = scene_cache_dir(options);
   std::filesystem::path pipeline_file = options.pipeline_cache;
   if (pipeline_file.empty() && !cache_dir.empty()) pipeline_file = cache_dir / default_pipeline_cache_name(ctx);
   PipelineCache cache(ctx, pipeline_file);
   desc.cache = cache.get();
-  start = Clock::now();
+  const auto start = Clock::now();
   auto pipeline = std::make_unique<Pipeline>(ctx, desc);
-  t.pipeline_ms = ms_since(start);
+  PipelineTimings t{.compile_ms = stages.compile_ms, .spirv_cached = stages.spirv_cached,
+                    .spirv_compiled = stages.spirv_compiled};
+  t.pipeline_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   t.pipeline_cached = cache.loaded();
   try {
     cache.save();

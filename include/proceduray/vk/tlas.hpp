@@ -63,7 +63,7 @@ PROCEDURAY_DECL void check_instance(const Instance& in, std::size_t i, std::stri
 
 /// Packs instances into Vulkan's layout; throws for bad input (check_instance), naming the instance.
 PROCEDURAY_DECL void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
-                                    std::string_view operation = "build_tlas");
+                                    std::string_view operation = "build_tlas", bool check = true);
 
 }  // namespace detail
 
@@ -78,6 +78,7 @@ class Tlas {
       : m_count(static_cast<std::uint32_t>(instances.size())),
         m_capacity(std::max(capacity, static_cast<std::uint32_t>(instances.size()))),
         m_flags(detail::build_flags(options, false)),
+        m_planned(options.planned),
         m_instances(ctx, std::max<VkDeviceSize>(1, m_capacity) * sizeof(VkAccelerationStructureInstanceKHR),
                     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) {
@@ -142,7 +143,7 @@ class Tlas {
   }
   void write(std::span<const Instance> instances, std::string_view operation) {
     auto* packed = static_cast<VkAccelerationStructureInstanceKHR*>(m_instances.data());
-    detail::pack_instances(instances, {packed, instances.size()}, operation);
+    detail::pack_instances(instances, {packed, instances.size()}, operation, !m_planned);
   }
   void record(const Context& ctx, VkCommandBuffer cmd, VkBuildAccelerationStructureModeKHR mode) {
     const detail::BuildCommand c = command(mode);
@@ -152,6 +153,7 @@ class Tlas {
   std::uint32_t m_count = 0;
   std::uint32_t m_capacity = 0;
   VkBuildAccelerationStructureFlagsKHR m_flags = 0;
+  bool m_planned = false;  // BuildOptions::planned: instances checked where they were given
   Buffer m_instances;
   AccelerationStructure m_structure;
   detail::Scratch m_scratch;
@@ -183,10 +185,10 @@ PROCEDURAY_DECL void check_instance(const Instance& in, std::size_t i, std::stri
 }
 
 PROCEDURAY_DECL void pack_instances(std::span<const Instance> instances, std::span<VkAccelerationStructureInstanceKHR> packed,
-                                    std::string_view operation) {
+                                    std::string_view operation, bool check) {
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance& in = instances[i];
-    check_instance(in, i, operation);
+    if (check) check_instance(in, i, operation);
     VkAccelerationStructureInstanceKHR& out = packed[i];
     out = {};
     static_assert(sizeof(out.transform) == sizeof(in.transform), "InstanceTransform is VkTransformMatrixKHR's layout");

@@ -2,7 +2,6 @@
 using namespace doc_vk;
 
 // @declarations
-void usage(const proceduray::vk::Context& ctx, const proceduray::Plan& plan, const proceduray::vk::Bindings& bindings,
-           const std::vector<proceduray::StageTraces>& traces) {
+void usage(const proceduray::vk::Context& ctx, proceduray::Plan& plan, const proceduray::vk::Bindings& bindings) {
   // @statements
 }

@@ -1,9 +1,0 @@
-// README.md's third ```cpp block (the frame loop).
-#include "tests/docs/vk/vk_names.hpp"
-namespace pr = proceduray;
-using namespace doc_vk;
-// @declarations
-SceneConstants constants_at(int frame);
-void usage(pr::vk::Renderer& renderer) {
-  // @statements
-}
