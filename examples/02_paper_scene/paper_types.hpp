@@ -100,8 +100,19 @@ PROCEDURAY_DEFINE_STRUCT(MaterialRecord, scalar,
     (float, shininess),                  ///< Phong exponent (>= 1)
     (std::uint32_t, object_id));         ///< ObjectId, for the object-id view
 
-/// The shader compatibility layer: each struct in its category (std::variant alternatives).
-using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>, pr::RootComponent<SceneConstants>,
+/// What mandelbulb.rint's distance reads besides the point: its marcher's field (marching/marcher.glsl).
+PROCEDURAY_DEFINE_STRUCT(BulbField, scalar,
+    (std::uint32_t, iterations));        ///< the animated count (mandelbulb_animated_iterations)
+/// What julia.rint's distance reads besides the point.
+PROCEDURAY_DEFINE_STRUCT(JuliaField, scalar,
+    (glm::vec4, c),                      ///< the animated constant (julia_animated_c)
+    (std::uint32_t, iterations),         ///< from the knobs (by distance, maybe)
+    (pr::CutPlanes, cuts));              ///< SceneConstants::julia_cuts
+
+/// The shader compatibility layer: each struct in its category (std::variant alternatives). The
+/// fields are values the intersection shaders build from the constants: root components.
+using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>,
+                                      pr::RootComponent<SceneConstants, BulbField, JuliaField>,
                                       pr::RootArguments<MaterialRecord>, pr::Attributes<ProceduralHit>>;
 
 /// Local AABBs: Pac-man is the unit sphere; the Julia set (c near (-0.2, 0.6, 0.2, 0.2), within

@@ -17,9 +17,9 @@
 // then mine::julia_distance(glm::vec3(2.0f), c, 10u).
 //
 // Include each file once per translation unit (its include guard allows no more), inside a
-// scope of its own: the GLSL has no namespaces, and a file that expects the includer to define
-// a function (sphere_trace.glsl's march_distance) gets a different one in each includer. Within
-// a class template the includer may define that function as a static member, before or after.
+// scope of its own: the GLSL has no namespaces. marching/marcher.glsl has no guard: each
+// inclusion generates one distance function's marcher (P_trace, P_normal, ...), in a class
+// template as static members.
 // The class template must sit in a namespace that sees GLM's functions (`using namespace
 // proceduray_glsl_cpp`): GLSL calls length(), max() ... unqualified. A header that includes
 // shared GLSL this way owns those files for every translation unit that includes it: others

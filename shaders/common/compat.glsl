@@ -30,10 +30,10 @@
 //   };
 // Why a class template and not one namespace per scalar: every file has an include guard, so
 // a translation unit can include it once; inside a class template that one inclusion yields
-// both precisions (julia<float>, julia<double>), only what is called is instantiated, and
-// member lookup does not depend on order, so a file's callbacks (sphere_trace.glsl's
-// march_distance) may be defined after it. Hence in C++ functions are `static inline`
-// (members, or internal-linkage functions in a namespace) and constants `static constexpr`.
+// both precisions (julia<float>, julia<double>), and only what is called is instantiated. Hence
+// in C++ functions are `static inline` (members, or internal-linkage functions in a namespace)
+// and constants `static constexpr`. Shared files keep no state: a function gets what it reads
+// as parameters (a marcher its distance's field, marching/marcher.glsl), so they run on every core.
 // R is a function-like macro in C++ too: `#undef R` after the last GLSL inclusion if later
 // headers use the name (GLM's _vectorize.hpp does, and is included by glm/glm.hpp first).
 #ifndef PROCEDURAY_COMMON_COMPAT_GLSL
@@ -54,6 +54,11 @@
 #define real3 vec3
 #define real4 vec4
 #endif
+
+
+/// Token pasting for generated names (marching/marcher.glsl): PROCEDURAY_CAT(bulb, _trace) is bulb_trace.
+#define PROCEDURAY_CAT_(a, b) a##b
+#define PROCEDURAY_CAT(a, b) PROCEDURAY_CAT_(a, b)
 
 #endif
 

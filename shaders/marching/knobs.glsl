@@ -1,11 +1,14 @@
 // A geometry's MarchKnobs (proceduray/march/knobs.hpp, declared by the generated GLSL) turned
 // into what the marches take: MarchSettings, the normal, the fractal's iteration count.
 //
-//   // after the generated declarations and the includer's march_distance:
+//   // after the generated declarations (MarchKnobs) and a marcher (marching/marcher.glsl, prefix bulb):
 //   #include "marching/knobs.glsl"
 //   MarchKnobs k = knobs.data[arguments.object_id];
 //   MarchSettings m = march_settings(k, world_per_object, constants.camera.pixel_angle, lipschitz);
-//   if (sphere_trace(o, u, s_lo, s_hi, m, s, steps)) n = march_knobs_normal(k, o + s * u, march_epsilon(m, s));
+//   if (bulb_trace(o, u, s_lo, s_hi, m, field, s, steps)) {
+//     vec3 p = o + s * u;
+//     n = bulb_normal(k.normal, p, march_knobs_normal_offset(k, p, march_epsilon(m, s)), field);
+//   }
 //
 // Marching runs in object space along a unit direction; `world_per_object` (world length per
 // object length) turns the world-unit knobs (absolute threshold, epsilon) into object units.
@@ -25,9 +28,6 @@ PROCEDURAY_CONST uint march_method_segment = 3u;
 PROCEDURAY_CONST uint march_method_fixed = 4u;
 PROCEDURAY_CONST uint march_threshold_footprint = 0u;
 PROCEDURAY_CONST uint march_threshold_absolute = 1u;
-PROCEDURAY_CONST uint march_normal_analytic = 0u;
-PROCEDURAY_CONST uint march_normal_central = 1u;
-PROCEDURAY_CONST uint march_normal_tetrahedral = 2u;
 PROCEDURAY_CONST uint march_iterations_fixed = 0u;
 PROCEDURAY_CONST uint march_iterations_by_distance = 1u;
 
@@ -58,14 +58,14 @@ PROCEDURAY_INLINE real march_knobs_threshold(MarchKnobs k, real pixel_angle, rea
   return max(real(k.epsilon), real(k.threshold) * pixel_angle * t);
 }
 
-/// The normal at p by the knobs' difference method, its offset normal_scale thresholds (and at
-/// least normal_offset's float spacings). Analytic normals are the geometry's own: not here.
-PROCEDURAY_INLINE real3 march_knobs_normal(MarchKnobs k, real3 p, real threshold) {
-  real h = normal_offset(real(k.normal_scale) * threshold, p);
-  return k.normal == march_normal_tetrahedral ? tetrahedral_normal(p, h) : central_normal(p, h);
+/// The offset the knobs' difference normal (a marcher's P_normal(k.normal, p, h, field)) takes at
+/// p: normal_scale thresholds, and at least normal_offset's float spacings. Analytic normals are
+/// the geometry's own: not here.
+PROCEDURAY_INLINE real march_knobs_normal_offset(MarchKnobs k, real3 p, real threshold) {
+  return normal_offset(real(k.normal_scale) * threshold, p);
 }
 
-/// Distance evaluations march_knobs_normal takes.
+/// Distance evaluations the knobs' normal takes.
 PROCEDURAY_INLINE uint march_normal_evaluations(MarchKnobs k) {
   return k.normal == march_normal_tetrahedral ? 4u : (k.normal == march_normal_central ? 6u : 0u);
 }

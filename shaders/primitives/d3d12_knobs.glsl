@@ -21,13 +21,14 @@ PROCEDURAY_INLINE bool d3d12_intersect_knobs(uint kind, real4 params, real spin,
                                              PROCEDURAY_OUT(real3) normal, PROCEDURAY_OUT(real) steps) {
   MarchSettings m = march_settings(k, world_per_object, pixel_angle, R(1.0));  // L per kind: d3d12_intersect
   m.step_scale = real(k.step_scale);
-  d3d12_lipschitz_steps = k.method == march_method_lipschitz || k.method == march_method_relaxed ? 1u : 0u;
-  d3d12_normal_method = k.normal == march_normal_tetrahedral ? 2u : 1u;
-  d3d12_normal_scale = real(k.normal_scale);
+  D3d12SdfMarch sdf = d3d12_sdf_march_default();
+  sdf.lipschitz_steps = k.method == march_method_lipschitz || k.method == march_method_relaxed ? 1u : 0u;
+  sdf.normal_method = k.normal == march_normal_tetrahedral ? march_normal_tetrahedral : march_normal_central;
+  sdf.normal_scale = real(k.normal_scale);
   uint metaball = k.method == march_method_segment ? metaball_method_segment
                   : (k.method == march_method_fixed ? metaball_method_fixed : metaball_method_lipschitz);
-  return d3d12_intersect(kind, params, spin, time, o, d, t_lo, t_hi, cull, m, metaball, k.fixed_steps, t_hit, normal,
-                         steps);
+  return d3d12_intersect(kind, params, spin, time, o, d, t_lo, t_hi, cull, m, metaball, k.fixed_steps, sdf, t_hit,
+                         normal, steps);
 }
 
 #endif

@@ -4,7 +4,8 @@
 //
 //   float t; vec3 n; float steps;
 //   if (d3d12_intersect(kind, params, spin, time, o, d, gl_RayTminEXT, gl_RayTmaxEXT, cull, m,
-//                       metaball_method, metaball_steps, t, n, steps)) reportIntersectionEXT(t, 0u);
+//                       metaball_method, metaball_steps, d3d12_sdf_march_default(), t, n, steps))
+//     reportIntersectionEXT(t, 0u);
 //
 // Each primitive: clips the ray to its own AABB first (drivers may report hits of an enlarged
 // box), turns the ray by -spin about y (animation without acceleration-structure work: the
@@ -14,17 +15,18 @@
 // distance, with the offset tied to the hit threshold at the hit's distance, for SDFs. `steps`
 // counts distance or field evaluations (0 for analytic primitives). Marching runs along the
 // unit direction, so epsilon and footprint in `m` are local lengths; m.step_scale is multiplied
-// by 1 / sdf_lipschitz (unless d3d12_lipschitz_steps is 0). metaball_method is one of
+// by 1 / sdf_lipschitz (unless D3d12SdfMarch::lipschitz_steps is 0). metaball_method is one of
 // metaballs.glsl's; d3d12_knobs.glsl calls this with a geometry's MarchKnobs.
 //
-// This file defines march_distance (for sphere_trace.glsl) over the selected SDF: include it
-// alone, not with another definer of march_distance.
+// The SDFs are marched by the marcher generated here for sdf.glsl's distances (prefix d3d12_sdf,
+// field D3d12Sdf: the kind and its params), so the file keeps no state of its own.
 #ifndef PROCEDURAY_PRIMITIVES_D3D12_PRIMITIVES_GLSL
 #define PROCEDURAY_PRIMITIVES_D3D12_PRIMITIVES_GLSL
 
 #include "../common/compat.glsl"
 #include "../common/hit.glsl"
 #include "../common/ray.glsl"
+#include "../marching/sphere_trace.glsl"
 #include "box.glsl"
 #include "sdf.glsl"
 #include "spheres.glsl"
@@ -35,27 +37,38 @@ PROCEDURAY_CONST uint primitive_spheres = 1u;
 PROCEDURAY_CONST uint primitive_metaballs = 2u;
 PROCEDURAY_CONST uint primitive_kind_count = 10u;
 
-// How the SDFs are marched beyond `m` (d3d12_knobs.glsl sets them from a geometry's knobs):
-// steps divided by the SDF's Lipschitz bound (1) or not (0: plain sphere tracing, which
-// overshoots where the bound exceeds 1); the normal by central (1) or tetrahedral (2)
-// differences at d3d12_normal_scale thresholds.
+/// How the SDFs are marched beyond `m` (d3d12_knobs.glsl fills it from a geometry's knobs).
+struct D3d12SdfMarch {
+  uint lipschitz_steps;  // 1: steps divided by the SDF's Lipschitz bound; 0: plain sphere tracing (overshoots where L > 1)
+  uint normal_method;    // march_normal_central (1) or march_normal_tetrahedral (2)
+  real normal_scale;     // the differences' offset, in hit thresholds
+};
+
+/// Lipschitz steps and central normals at the threshold: the sample's own way.
+PROCEDURAY_INLINE D3d12SdfMarch d3d12_sdf_march_default() {
 #ifdef __cplusplus
-static inline uint d3d12_sdf_kind = 0u;  // what march_distance marches; set by d3d12_intersect
-static inline real4 d3d12_sdf_params = real4(R(1.0));
-static inline uint d3d12_lipschitz_steps = 1u;
-static inline uint d3d12_normal_method = 1u;
-static inline real d3d12_normal_scale = R(1.0);
+  D3d12SdfMarch s{};
 #else
-uint d3d12_sdf_kind;
-real4 d3d12_sdf_params;
-uint d3d12_lipschitz_steps = 1u;
-uint d3d12_normal_method = 1u;
-real d3d12_normal_scale = R(1.0);
+  D3d12SdfMarch s;
 #endif
+  s.lipschitz_steps = 1u;
+  s.normal_method = march_normal_central;
+  s.normal_scale = R(1.0);
+  return s;
+}
 
-PROCEDURAY_INLINE real march_distance(real3 p) { return sdf_distance(d3d12_sdf_kind, p, d3d12_sdf_params); }
+/// What an SDF's distance reads besides p: which of sdf.glsl's shapes, and its parameters.
+struct D3d12Sdf {
+  uint kind;
+  real4 params;
+};
 
-#include "../marching/sphere_trace.glsl"
+PROCEDURAY_INLINE real d3d12_sdf_distance(real3 p, D3d12Sdf f) { return sdf_distance(f.kind, p, f.params); }
+
+#define PROCEDURAY_MARCHER d3d12_sdf
+#define PROCEDURAY_MARCHER_FIELD D3d12Sdf
+#define PROCEDURAY_MARCHER_DISTANCE d3d12_sdf_distance
+#include "../marching/marcher.glsl"
 #include "metaballs.glsl"
 
 /// v turned by angle a about the y axis.
@@ -67,8 +80,8 @@ PROCEDURAY_INLINE real3 rotate_y(real3 v, real a) {
 
 PROCEDURAY_INLINE bool d3d12_intersect(uint kind, real4 params, real spin, real time, real3 o, real3 d, real t_lo,
                                        real t_hi, uint cull, MarchSettings m, uint metaball_method,
-                                       uint metaball_steps, PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal,
-                                       PROCEDURAY_OUT(real) steps) {
+                                       uint metaball_steps, D3d12SdfMarch sdf_march, PROCEDURAY_OUT(real) t_hit,
+                                       PROCEDURAY_OUT(real3) normal, PROCEDURAY_OUT(real) steps) {
   t_hit = R(0.0);
   normal = real3(R(0.0), R(1.0), R(0.0));
   steps = R(0.0);
@@ -97,19 +110,22 @@ PROCEDURAY_INLINE bool d3d12_intersect(uint kind, real4 params, real spin, real 
       steps = real(count);
       if (!hit) return false;
     } else {
-      d3d12_sdf_kind = kind;
-      d3d12_sdf_params = params;
+#ifdef __cplusplus
+      D3d12Sdf field{kind, params};
+#else
+      D3d12Sdf field = D3d12Sdf(kind, params);
+#endif
       MarchSettings ms = m;
       ms.step_scale = m.step_scale > R(0.0) ? m.step_scale : R(1.0);
-      if (d3d12_lipschitz_steps != 0u) ms.step_scale /= sdf_lipschitz(kind, params);
-      bool hit = sphere_trace(ro, u, t0 * len, t1 * len, ms, s, count);
+      if (sdf_march.lipschitz_steps != 0u) ms.step_scale /= sdf_lipschitz(kind, params);
+      bool hit = d3d12_sdf_trace(ro, u, t0 * len, t1 * len, ms, field, s, count);
       steps = real(count);
       if (!hit) return false;
       // Central differences at the threshold: smooth SDFs blur to second order only (the
       // tetrahedral form's first-order blur cost 7 to 30 degrees on the small parts at 96x64).
       real3 p = ro + s * u;
-      real h = normal_offset(d3d12_normal_scale * max(march_epsilon(ms, s), R(1.0e-5)), p);
-      n = d3d12_normal_method == 2u ? tetrahedral_normal(p, h) : central_normal(p, h);
+      real h = normal_offset(sdf_march.normal_scale * max(march_epsilon(ms, s), R(1.0e-5)), p);
+      n = d3d12_sdf_normal(sdf_march.normal_method, p, h, field);
     }
     t = s / len;
     if (!hit_is_valid(t, t0, t1, rd, n, cull)) return false;

@@ -19,13 +19,22 @@ struct march {
   PROCEDURAY_GLSL_CPP_SCALAR(float)
   static inline uint count = 1;   // the iteration count the shader uses at this time
   static inline real4 c{0.0f};    // the Julia constant
-  static real march_distance(real3 p) {
+  /// What the distance reads besides p (the shaders' Bulb and Julia fields).
+  struct Field {
+    uint count;
+    real4 c;
+  };
+  static real field_distance(real3 p, Field f) {
     if constexpr (kind == 0) {
-      return paper::glsl::bulb<float>::mandelbulb_distance(p, count);
+      return paper::glsl::bulb<float>::mandelbulb_distance(p, f.count);
     } else {
-      return paper::glsl::julia<float>::julia_cut_distance(p, c, count, paper::julia_cut);  // julia.rint's cut
+      return paper::glsl::julia<float>::julia_cut_distance(p, f.c, f.count, paper::julia_cut);  // julia.rint's cut
     }
   }
+#define PROCEDURAY_MARCHER field
+#define PROCEDURAY_MARCHER_FIELD Field
+#define PROCEDURAY_MARCHER_DISTANCE field_distance
+#include "../../shaders/marching/marcher.glsl"
   using MarchKnobs = proceduray::MarchKnobs;
 #include "../../shaders/common/ray.glsl"
 #include "../../shaders/marching/knobs.glsl"
@@ -268,7 +277,7 @@ Marched march_ray(std::uint32_t x, std::uint32_t y, const World& w, const proced
       M::march_settings(k.knobs[kind == 0 ? paper::mandelbulb_id : paper::julia_id], world_per_object, cam.pixel_angle, 1.0f);
   float s = 0.0f;
   std::uint32_t steps = 0;
-  if (!M::sphere_trace(o, d / len, t0 * len, t1 * len, m, s, steps)) return {};
+  if (!M::field_trace(o, d / len, t0 * len, t1 * len, m, {M::count, M::c}, s, steps)) return {};
   return {true, double(s / len)};
 }
 

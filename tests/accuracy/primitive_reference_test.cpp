@@ -20,8 +20,14 @@ template <class T>
 struct bulb {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
 #include "../../shaders/primitives/mandelbulb.glsl"
-  static real march_distance(real3 p) { return mandelbulb_distance(p, 8u); }
-#include "../../shaders/marching/sphere_trace.glsl"
+  struct Bulb {
+    uint iterations;
+  };
+  static real bulb_distance(real3 p, Bulb b) { return mandelbulb_distance(p, b.iterations); }
+#define PROCEDURAY_MARCHER bulb
+#define PROCEDURAY_MARCHER_FIELD Bulb
+#define PROCEDURAY_MARCHER_DISTANCE bulb_distance
+#include "../../shaders/marching/marcher.glsl"
 };
 template <class T>
 struct pac {
@@ -201,7 +207,7 @@ TEST_CASE("reference mandelbulb sphere tracing in double lands near the referenc
       const Result ref = predicate_search(inside, v.origin, v.dir, v.s_lo, v.s_hi, 1e-3);
       double s = 0.0;
       std::uint32_t steps = 0;
-      const bool marched = bulb<double>::sphere_trace(v.origin, v.dir, v.s_lo, v.s_hi, m, s, steps);
+      const bool marched = bulb<double>::bulb_trace(v.origin, v.dir, v.s_lo, v.s_hi, m, {8u}, s, steps);
       const bool reference = ref.outcome == Outcome::hit;
       only_march += marched && !reference;
       only_reference += reference && !marched;

@@ -39,7 +39,7 @@ Hit intersect(std::uint32_t kind, glm::vec3 o, glm::vec3 d, std::uint32_t cull =
               float t_hi = 1e30f, std::uint32_t method = metaball_method_fixed, glm::vec4 params = glm::vec4(-1.0f)) {
   Hit h;
   if (params.x < 0.0f) params = default_params(kind);
-  h.found = d3d12_intersect(kind, params, 0.0f, 0.0f, o, d, t_lo, t_hi, cull, settings(), method, 128u, h.t, h.n,
+  h.found = d3d12_intersect(kind, params, 0.0f, 0.0f, o, d, t_lo, t_hi, cull, settings(), method, 128u, d3d12_sdf_march_default(), h.t, h.n,
                             h.steps);
   return h;
 }
@@ -266,9 +266,9 @@ TEST_CASE("spin turns a primitive about y in local space") {
   // Still, a ray along -x meets the tooth on +x (outer face 0.92 from the axis); turned by half
   // a tooth spacing (15 degrees) it passes between two teeth to the disc (radius 0.7).
   const bool a = d3d12_intersect(sdf_cog, params, 0.0f, 0.0f, {3.0f, 0.0f, 0.0f}, {-1.0f, 0.0f, 0.0f}, 0.0f, 1e30f,
-                                 0u, settings(), 0u, 128u, t0, n0, steps0);
+                                 0u, settings(), 0u, 128u, d3d12_sdf_march_default(), t0, n0, steps0);
   const bool b = d3d12_intersect(sdf_cog, params, 0.2617994f, 1.0f, {3.0f, 0.0f, 0.0f}, {-1.0f, 0.0f, 0.0f}, 0.0f,
-                                 1e30f, 0u, settings(), 0u, 128u, t1, n1, steps1);
+                                 1e30f, 0u, settings(), 0u, 128u, d3d12_sdf_march_default(), t1, n1, steps1);
   REQUIRE(a);
   REQUIRE(b);
   CHECK(rotate_y(glm::vec3(1.0f, 0.0f, 0.0f), 1.5707964f).z == doctest::Approx(-1.0f));

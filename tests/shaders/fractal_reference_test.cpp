@@ -15,9 +15,15 @@ template <class T>
 struct bulb {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
 #include "../../shaders/primitives/mandelbulb.glsl"
-  /// What sphere_trace.glsl marches (defined before it, as the GLSL includers do).
-  static real march_distance(real3 p) { return mandelbulb_distance(p, 8u); }
-#include "../../shaders/marching/sphere_trace.glsl"
+  /// What the marcher reads besides p: the iteration count.
+  struct Bulb {
+    uint iterations;
+  };
+  static real bulb_distance(real3 p, Bulb b) { return mandelbulb_distance(p, b.iterations); }
+#define PROCEDURAY_MARCHER bulb
+#define PROCEDURAY_MARCHER_FIELD Bulb
+#define PROCEDURAY_MARCHER_DISTANCE bulb_distance
+#include "../../shaders/marching/marcher.glsl"
 };
 }  // namespace fractal_reference_test
 #undef R
@@ -59,7 +65,7 @@ Result march(int x, int y, int size, double w = 1.0) {
   if (disc <= 0.0f) return r;
   const T s_lo = std::max(T(0), T(-b - std::sqrt(disc))), s_hi = T(-b + std::sqrt(disc));
   T s = 0;
-  r.hit = bulb<T>::sphere_trace(V(eye), V(dir), s_lo, s_hi, m, s, r.steps);
+  r.hit = bulb<T>::bulb_trace(V(eye), V(dir), s_lo, s_hi, m, {8u}, s, r.steps);
   r.s = double(s);
   return r;
 }

@@ -24,6 +24,13 @@ inline float march_distance(vec3 p) { return julia::julia_cut_distance(p, julia_
 #include "../../shaders/common/ray.glsl"
 using MarchKnobs = proceduray::MarchKnobs;
 #include "../../shaders/marching/knobs.glsl"
+/// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
+struct Shape {};
+inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 }  // namespace julia_cut_test
 
 #include <doctest/doctest.h>
@@ -89,7 +96,7 @@ Trace trace(glm::vec3 o, glm::vec3 u) {
   r.t1 = 1.0e30f;
   r.clipped = ray_clip_aabb(o, u, paper::julia_aabb.min, paper::julia_aabb.max, r.t0, r.t1);
   if (!r.clipped) return r;
-  r.found = sphere_trace(o, u, r.t0, r.t1, settings(), r.s, r.steps);
+  r.found = shape_trace(o, u, r.t0, r.t1, settings(), {}, r.s, r.steps);
   // Spacing 1e-2 footprints at the entry (what the reference's tests use); the rays below hit the
   // set's body or the face, not filaments thinner than that.
   r.truth = acc::predicate_search(inside, glm::dvec3(o), glm::dvec3(u), r.t0, r.t1, 1.0e-2 * pixel_angle * r.t0);
@@ -284,7 +291,7 @@ TEST_CASE("julia cut: grazing rays onto the cut face - t error and evaluations")
           const glm::vec3 q = r.o + r.s * r.u;
           const float h = std::max(march_epsilon(m, r.s), 1.0e-5f);  // march.glsl's
           if (!solid_ball(glm::dvec3(q), 2.0 * std::sqrt(3.0) * h + 1.0e-3, true)) continue;
-          const glm::vec3 n = tetrahedral_normal(q, h);
+          const glm::vec3 n = shape_tetrahedral_normal(q, h, {});
           REQUIRE(finite(n));
           ++normals;
           const double error = angle_degrees(glm::dvec3(n), cut_normal);

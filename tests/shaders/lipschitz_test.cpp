@@ -57,6 +57,12 @@ struct lib {
   static inline uint shape = 0u;  // what march_distance marches
   static real march_distance(real3 p) { return distance(shape, p); }
 #include "../../shaders/marching/sphere_trace.glsl"
+  struct Shape {};
+  static real shape_distance(real3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 };
 }  // namespace lipschitz_test
 #undef R  // compat.glsl's literal macro; nothing below needs it
@@ -159,7 +165,7 @@ Outcome compare(std::uint32_t shape, float step_scale, const std::vector<Ray>& r
   for (std::size_t i = 0; i < rs.size(); ++i) {
     float s = 0.0f;
     std::uint32_t steps = 0;
-    const bool hit = F::sphere_trace(rs[i].o, rs[i].u, rs[i].t0, rs[i].t1, m, s, steps);
+    const bool hit = F::shape_trace(rs[i].o, rs[i].u, rs[i].t0, rs[i].t1, m, {}, s, steps);
     const bool truth_hit = ref[i].outcome == acc::Outcome::hit;
     ++c.rays;
     c.truth_hits += truth_hit;

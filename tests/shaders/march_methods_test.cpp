@@ -17,6 +17,13 @@ inline float march_distance(vec3 p) {
   return slab > 0.0f ? std::min(sphere, std::abs(p.z - 2.0f) - 0.5f * slab) : sphere;
 }
 #include "../../shaders/marching/knobs.glsl"
+/// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
+struct Shape {};
+inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 namespace blob {
 #include "../../shaders/primitives/metaballs.glsl"
 }  // namespace blob
@@ -49,7 +56,7 @@ struct Marched {
 
 Marched trace(const MarchKnobs& k, vec3 o, vec3 u, float s_hi = 6.0f) {
   Marched m;
-  m.hit = sphere_trace(o, u, 0.0f, s_hi, march_settings(k, 1.0f, 1e-3f, 1.0f), m.s, m.steps);
+  m.hit = shape_trace(o, u, 0.0f, s_hi, march_settings(k, 1.0f, 1e-3f, 1.0f), {}, m.s, m.steps);
   return m;
 }
 

@@ -10,7 +10,6 @@ namespace metaball_motion_test {
 using namespace proceduray_glsl_cpp;
 using proceduray::Metaball;   // the generated structs' C++ side: same names, same members
 using proceduray::Metaballs;
-static inline float march_distance(glm::vec3) { return 1.0f; }  // sphere_trace.glsl's callback; metaballs need none
 #include "../../shaders/primitives/metaball_motion.glsl"
 }  // namespace metaball_motion_test
 #undef R

@@ -32,6 +32,13 @@ inline float march_distance(vec3 p) {
   return length(max(d, vec3(0.0f))) + min(max(d.x, max(d.y, d.z)), 0.0f) - 0.1f;
 }
 #include "../../shaders/marching/sphere_trace.glsl"
+/// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
+struct Shape {};
+inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 }  // namespace normals_test
 #undef R
 
@@ -99,7 +106,7 @@ double angle_deg(glm::dvec3 a, glm::dvec3 b) {
 }
 
 glm::vec3 normal(Method m, glm::vec3 p, float h) {
-  return m == Method::central ? central_normal(p, h) : tetrahedral_normal(p, h);
+  return m == Method::central ? shape_central_normal(p, h, {}) : shape_tetrahedral_normal(p, h, {});
 }
 
 /// Centres |c| ~ distance in three directions: the components' float spacings differ, and
@@ -168,7 +175,7 @@ TEST_CASE("central and tetrahedral normals match closed-form normals at the orig
   }
   // A zero offset gives a zero gradient: the same fallback as tetrahedral_normal.
   shape = sphere;
-  const glm::vec3 n = central_normal(glm::vec3(0.6f, 0.0f, 0.8f), 0.0f);
+  const glm::vec3 n = shape_central_normal(glm::vec3(0.6f, 0.0f, 0.8f), 0.0f, {});
   CHECK(n.x == 0.0f);
   CHECK(n.y == 1.0f);
   CHECK(n.z == 0.0f);

@@ -33,7 +33,7 @@ Hit intersect(std::uint32_t kind, glm::vec3 o, glm::vec3 d, float w) {
   Hit h;
   glm::vec3 n;
   h.found = d3d12_intersect(kind, params, 0.0f, 0.0f, o, d, 0.0f, 1e30f, 0u, MarchSettings{512u, 1e-4f, 0.0f, 1.0f, w},
-                            0u, 128u, h.t, n, h.steps);
+                            0u, 128u, d3d12_sdf_march_default(), h.t, n, h.steps);
   return h;
 }
 

@@ -72,9 +72,9 @@ MarchPair march_pair(std::uint32_t kind, glm::vec4 params, glm::vec3 o, glm::vec
   glm::dvec3 nd;
   const lib<float>::MarchSettings mf{512u, 1e-4f, 0.0f, 1.0f, w};
   const lib<double>::MarchSettings md{512u, 1e-4, 0.0, 1.0, double(w)};
-  r.hit_f = lib<float>::d3d12_intersect(kind, params, 0.0f, 0.0f, o, d, 0.0f, 1e30f, 0u, mf, 0u, 128u, r.t_f, nf, r.steps_f);
+  r.hit_f = lib<float>::d3d12_intersect(kind, params, 0.0f, 0.0f, o, d, 0.0f, 1e30f, 0u, mf, 0u, 128u, lib<float>::d3d12_sdf_march_default(), r.t_f, nf, r.steps_f);
   r.hit_d = lib<double>::d3d12_intersect(kind, glm::dvec4(params), 0.0, 0.0, glm::dvec3(o), glm::dvec3(d), 0.0, 1e30, 0u,
-                                         md, 0u, 128u, r.t_d, nd, r.steps_d);
+                                         md, 0u, 128u, lib<double>::d3d12_sdf_march_default(), r.t_d, nd, r.steps_d);
   return r;
 }
 

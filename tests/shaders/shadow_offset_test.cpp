@@ -40,6 +40,13 @@ inline float march_distance(vec3 p) { return length(p) - 1.0f; }
 #include "../../shaders/primitives/box.glsl"
 #include "../../shaders/primitives/spheres.glsl"
 #include "../../shaders/marching/sphere_trace.glsl"
+/// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
+struct Shape {};
+inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 }  // namespace shadow_offset_test
 #undef R
 
@@ -133,10 +140,10 @@ bool intersect(const Object& obj, glm::vec3 o, glm::vec3 d, float t_lo, float t_
     default: {
       float s = 0.0f;
       std::uint32_t steps = 0u;
-      if (!so::sphere_trace(oo, d, t_lo, t_hi, march, s, steps)) return false;
+      if (!so::shape_trace(oo, d, t_lo, t_hi, march, {}, s, steps)) return false;
       hit.t = s;
       hit.threshold = so::march_epsilon(march, s);
-      hit.n = so::tetrahedral_normal(oo + s * d, std::max(hit.threshold, 1.0e-5f));
+      hit.n = so::shape_tetrahedral_normal(oo + s * d, std::max(hit.threshold, 1.0e-5f), {});
       return true;
     }
   }

@@ -32,6 +32,13 @@ inline float march_distance(vec3 p) {
 #include "../../shaders/common/ray.glsl"
 using MarchKnobs = proceduray::MarchKnobs;
 #include "../../shaders/marching/knobs.glsl"
+/// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
+struct Shape {};
+inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 }  // namespace silhouette_steps_test
 
 #include <doctest/doctest.h>
@@ -112,7 +119,7 @@ March march(glm::vec3 dir, std::uint32_t max_steps) {
   evaluations = 0;
   inside_points = 0;
   float s = 0.0f;
-  out.hit = sphere_trace(o, u, t0 * len, t1 * len, m, s, out.steps);
+  out.hit = shape_trace(o, u, t0 * len, t1 * len, m, {}, s, out.steps);
   out.t = double(s / len);
   out.evaluations = evaluations;
   out.inside_points = inside_points;

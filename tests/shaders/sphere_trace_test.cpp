@@ -19,6 +19,13 @@ inline float march_distance(vec3 p) {
   return shape == 2 ? std::max(d, 0.0f) : d;
 }
 #include "../../shaders/marching/sphere_trace.glsl"
+/// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
+struct Shape {};
+inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
+#define PROCEDURAY_MARCHER shape
+#define PROCEDURAY_MARCHER_FIELD Shape
+#define PROCEDURAY_MARCHER_DISTANCE shape_distance
+#include "../../shaders/marching/marcher.glsl"
 }  // namespace sphere_trace_test
 
 #include <doctest/doctest.h>
@@ -34,7 +41,7 @@ TEST_CASE("sphere_trace hits the unit sphere within epsilon") {
   for (float w : {1.0f, 1.2f, 1.6f, 1.9f}) {
     float s;
     std::uint32_t steps;
-    REQUIRE(sphere_trace(glm::vec3(0.0f, 0.3f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(w), s, steps));
+    REQUIRE(shape_trace(glm::vec3(0.0f, 0.3f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(w), {}, s, steps));
     CAPTURE(w);
     CHECK(s == doctest::Approx(5.0f - std::sqrt(1.0f - 0.09f)).epsilon(1e-4));
     CHECK(s <= 5.0f - std::sqrt(1.0f - 0.09f) + 1e-6f);  // never past the surface
@@ -46,8 +53,8 @@ TEST_CASE("sphere_trace misses when the ray misses or the range ends") {
   shape = 0;
   float s;
   std::uint32_t steps;
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 1.5f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 3.5f, settings(), s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.5f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), {}, s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 3.5f, settings(), {}, s, steps));
 }
 
 TEST_CASE("sphere_trace reports a miss when steps run out") {
@@ -55,11 +62,9 @@ TEST_CASE("sphere_trace reports a miss when steps run out") {
   float s;
   std::uint32_t steps;
   // A grazing ray needs many steps near the silhouette: with 4 it must not claim a hit.
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 1.0f + 1e-4f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f,
-                           settings(1.0f, 4), s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.0f + 1e-4f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f, 4), {}, s, steps));
   CHECK(steps == 4u);
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f, 0),
-                           s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f, 0), {}, s, steps));
 }
 
 TEST_CASE("sphere_trace footprint threshold grows with distance") {
@@ -71,10 +76,10 @@ TEST_CASE("sphere_trace footprint threshold grows with distance") {
   float s;
   std::uint32_t coarse, fine;
   // A threshold of ~0.04 at s = 4: probes and the bisection's tolerance scale with it.
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, coarse));
+  REQUIRE(shape_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, coarse));
   CHECK(s == doctest::Approx(4.2f).epsilon(0.02));
   CHECK(std::abs(s - 4.2f) <= march_refine_fraction * march_epsilon(m, s) + 1e-5f);
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, fine));
+  REQUIRE(shape_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), {}, s, fine));
   CHECK(coarse < fine);
 }
 
@@ -94,8 +99,7 @@ TEST_CASE("sphere_trace: a grazing ray that passes within the threshold is a mis
     float s;
     std::uint32_t steps;
     CAPTURE(eps);
-    CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 1.0f + 0.3f * eps, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s,
-                             steps));
+    CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.0f + 0.3f * eps, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
     // Plain steps shrink towards the closest approach, then probes of 0.6 to 1 threshold cover
     // the stretch where the distance stays below it (2 sqrt(1.4 eps) long), then plain steps
     // to the end: seen 187 evaluations at 1e-3, 60 at 1e-2 (the classic rule took 45 and 14,
@@ -104,7 +108,7 @@ TEST_CASE("sphere_trace: a grazing ray that passes within the threshold is a mis
     MESSAGE("grazing at 0.3 thresholds, threshold " << eps << ": " << steps << " evaluations");
     // A ray that does enter, a tenth of a threshold inside the silhouette, is a hit.
     const float y = 1.0f - 0.1f * eps;
-    REQUIRE(sphere_trace(glm::vec3(0.0f, y, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+    REQUIRE(shape_trace(glm::vec3(0.0f, y, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
     CHECK(s <= sphere_t(y));
     CHECK(march_distance(glm::vec3(0.0f, y, -5.0f + s)) > 0.0f);
   }
@@ -125,7 +129,7 @@ TEST_CASE("sphere_trace: a hit is refined to a fraction of the threshold and sta
         CAPTURE(eps);
         CAPTURE(y);
         CAPTURE(w);
-        REQUIRE(sphere_trace(glm::vec3(0.0f, y, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+        REQUIRE(shape_trace(glm::vec3(0.0f, y, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
         CHECK(std::abs(s - sphere_t(y)) <= 0.05f * eps);
         CHECK(march_distance(glm::vec3(0.0f, y, -5.0f + s)) > 0.0f);  // never inside
       }
@@ -142,8 +146,8 @@ TEST_CASE("sphere_trace: the threshold compares the unscaled distance") {
   m.step_scale = 0.5f;
   float s;
   std::uint32_t steps;
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 1.0015f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.0015f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
+  REQUIRE(shape_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
   CHECK(std::abs(s - sphere_t(0.8f)) <= 0.05f * m.epsilon);
 }
 
@@ -157,7 +161,7 @@ TEST_CASE("sphere_trace: probes and bisection stay within max_steps") {
     m.epsilon = 1e-3f;
     float s;
     std::uint32_t steps;
-    const bool hit = sphere_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps);
+    const bool hit = shape_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps);
     CAPTURE(n);
     CHECK(steps <= n);
     if (!hit) continue;
@@ -180,7 +184,7 @@ TEST_CASE("sphere_trace: a march that starts inside an SDF reports where it leav
       m.epsilon = 1e-3f;
       float s = -1.0f;
       std::uint32_t steps;
-      REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, z), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, s, steps));
+      REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, z), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
       const float exit = 1.0f - z;
       CHECK(s <= exit);
       CHECK(exit - s <= march_refine_fraction * m.epsilon + 1e-6f);
@@ -191,7 +195,7 @@ TEST_CASE("sphere_trace: a march that starts inside an SDF reports where it leav
   // The exit lies beyond the range: a miss, not a hit at the range's end.
   float s;
   std::uint32_t steps;
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.0f, settings(), s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.0f, settings(), {}, s, steps));
 }
 
 TEST_CASE("sphere_trace: inside an estimate that is zero there or on the surface is a miss") {
@@ -200,14 +204,14 @@ TEST_CASE("sphere_trace: inside an estimate that is zero there or on the surface
   shape = 2;
   float s;
   std::uint32_t steps;
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), {}, s, steps));
   CHECK(steps == 1u);
   // From outside the same estimate is hit as the exact sphere is.
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.3f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), s, steps));
+  REQUIRE(shape_trace(glm::vec3(0.0f, 0.3f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), {}, s, steps));
   CHECK(s == doctest::Approx(sphere_t(0.3f)).epsilon(1e-4));
   // A secondary ray that starts exactly on its surface does not hit it there.
   shape = 0;
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.0f, 10.0f, settings(), s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.0f, 10.0f, settings(), {}, s, steps));
   CHECK(steps == 1u);
 }
 
@@ -218,7 +222,7 @@ TEST_CASE("over-relaxation does not tunnel through a thin plate") {
   for (float w : {1.0f, 1.2f, 1.6f, 1.9f}) {
     float s;
     std::uint32_t steps;
-    REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -2.0f), dir, 0.0f, 100.0f, settings(w, 4096), s, steps));
+    REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -2.0f), dir, 0.0f, 100.0f, settings(w, 4096), {}, s, steps));
     CAPTURE(w);
     CHECK(s == doctest::Approx(expected).epsilon(1e-3));
   }
@@ -234,7 +238,7 @@ TEST_CASE("over-relaxation finds a thin plate just before the end of the range")
     float s;
     std::uint32_t steps;
     CAPTURE(w);
-    REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 2.0f, settings(w), s, steps));
+    REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 2.0f, settings(w), {}, s, steps));
     CHECK(s == doctest::Approx(1.99f).epsilon(1e-5));
     // The relaxed step (past s_hi: not evaluated) or the start, the plain step's end (inside
     // by rounding), one probe a threshold back, 5 bisections to 1/32 threshold: seen 8.
@@ -243,7 +247,7 @@ TEST_CASE("over-relaxation finds a thin plate just before the end of the range")
   // Beyond the range it stays a miss, relaxed or not.
   float s;
   std::uint32_t steps;
-  CHECK_FALSE(sphere_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.9f, settings(1.6f), s, steps));
+  CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.9f, settings(1.6f), {}, s, steps));
   shape = 0;
 }
 
@@ -255,19 +259,19 @@ TEST_CASE("relaxed steps fall back once they stop overlapping and then march pla
   shape = 0;
   float s;
   std::uint32_t steps;
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.6f), s, steps));
+  REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.6f), {}, s, steps));
   CHECK(s == doctest::Approx(4.0f));
   CHECK(s < 4.0f);
   CHECK(steps == 3u + 6u);  // s = 0, s = 6.4 (rejected), s = 4; then the refinement
   // w = 1 never falls back: two evaluations, then the same refinement.
-  REQUIRE(sphere_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f), s, steps));
+  REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f), {}, s, steps));
   CHECK(steps == 2u + 6u);
 }
 
 TEST_CASE("tetrahedral normal of the sphere is radial") {
   shape = 0;
-  const glm::vec3 n = tetrahedral_normal(glm::normalize(glm::vec3(1.0f, 2.0f, -2.0f)), 1e-3f);
+  const glm::vec3 n = shape_tetrahedral_normal(glm::normalize(glm::vec3(1.0f, 2.0f, -2.0f)), 1e-3f, {});
   CHECK(glm::dot(n, glm::normalize(glm::vec3(1.0f, 2.0f, -2.0f))) == doctest::Approx(1.0f).epsilon(1e-4));
-  const glm::vec3 flat = tetrahedral_normal(glm::vec3(5.0f), 0.0f);  // h = 0: zero gradient, fallback
+  const glm::vec3 flat = shape_tetrahedral_normal(glm::vec3(5.0f), 0.0f, {});  // h = 0: zero gradient, fallback
   CHECK(std::isfinite(flat.x + flat.y + flat.z));
 }

@@ -255,7 +255,7 @@ TEST_CASE("tangent rays - the D3D12 spheres through the AABB clip agree with tra
                 float t = -1, steps = -1;
                 glm::vec3 n(0.0f);
                 const bool hit = F::d3d12_intersect(F::primitive_spheres, params, 0.0f, 0.0f, o, d, 0.0f, 1e30f, 0u, m,
-                                                    0u, 128u, t, n, steps);
+                                                    0u, 128u, F::d3d12_sdf_march_default(), t, n, steps);
                 ++tally.rays;
                 CAPTURE(radius_scale);
                 CAPTURE(target);

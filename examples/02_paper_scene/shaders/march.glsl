@@ -1,14 +1,22 @@
-// What the paper scene's marched intersection shaders share: clip to the own AABB, march with
-// the object's knobs (constants.knobs[arguments.object_id]), report t within [gl_RayTminEXT,
-// gl_RayTmaxEXT].
-// With per-pixel outputs it also adds its evaluations (march and normal) and sets the
-// exhausted, started-inside and NaN flags.
+// What the paper scene's marched intersection shaders share: clip the ray to the own AABB, the
+// object's knobs (constants.knobs[arguments.object_id]) as MarchSettings, and the report of t
+// within [gl_RayTminEXT, gl_RayTmaxEXT]. Each shader marches its own distance with the marcher it
+// generates (marching/marcher.glsl); with per-pixel outputs the report adds its evaluations (march
+// and normal) and sets the exhausted, started-inside and NaN flags.
 //
-//   float march_distance(vec3 p) { ... }          // object space
-//   void march_prepare(float footprint) { ... }   // per ray, before the march: e.g. the iterations
-//   vec3 march_normal(vec3 p, float h) { ... }    // unit, outward; march_knobs_normal(object_knobs, p, h)
 //   #include "march.glsl"
-//   void main() { march_and_report(mandelbulb_aabb_min, mandelbulb_aabb_max); }
+//   void main() {
+//     MarchKnobs k = constants.knobs[arguments.object_id];
+//     vec3 o, u; float len, footprint; vec2 range; MarchSettings m;
+//     if (!paper_march_begin(mandelbulb_aabb_min, mandelbulb_aabb_max, k, o, u, len, range, m, footprint)) return;
+//     BulbField b = BulbField(march_iterations(k, footprint));          // what the distance reads
+//     paper_march_started(bulb_distance(o + range.x * u, b));            // under #ifdef PROCEDURAY_OUTPUTS
+//     float s; uint steps;
+//     bool found = bulb_trace(o, u, range.x, range.y, m, b, s, steps);
+//     vec3 p = o + s * u;
+//     vec3 n = bulb_normal(k.normal, p, paper_normal_offset(k, m, p, s), b);
+//     paper_march_report(found, s / len, steps, m, n, march_normal_evaluations(k));
+//   }
 //
 // Marching runs in object space along the unit direction u = d / |d|, so distances are
 // object-space lengths s = t |d|. World lengths in the knobs (epsilon, an absolute threshold)
@@ -22,44 +30,54 @@
 #include "common/ray.glsl"
 #include "marching/knobs.glsl"
 
-MarchKnobs object_knobs;  // this object's, set by march_and_report
-void march_prepare(float footprint);
-vec3 march_normal(vec3 p, float h);
-
-void march_and_report(vec3 box_min, vec3 box_max) {
-  vec3 o = gl_ObjectRayOriginEXT;
+/// Clips the ray to [box_min, box_max] (false: it misses the box) and gives the march its
+/// object-space origin o, unit direction u, |d| (t = s / len), the range (s_lo, s_hi), the
+/// settings of knobs k at this ray's scale, and a pixel footprint at the box entry (world units,
+/// for by-distance iterations).
+bool paper_march_begin(vec3 box_min, vec3 box_max, MarchKnobs k, out vec3 o, out vec3 u, out float len,
+                       out vec2 range, out MarchSettings m, out float footprint) {
+  o = gl_ObjectRayOriginEXT;
   vec3 d = gl_ObjectRayDirectionEXT;
   float t0 = gl_RayTminEXT;
   float t1 = gl_RayTmaxEXT;
   // Drivers may report AABB hits outside the box (it may be enlarged): clip to our own.
-  if (!ray_clip_aabb(o, d, box_min, box_max, t0, t1)) return;
-  float len = length(d);
-  if (!(len > 0.0)) return;
-  vec3 u = d / len;
+  if (!ray_clip_aabb(o, d, box_min, box_max, t0, t1)) return false;
+  len = length(d);
+  if (!(len > 0.0)) return false;
+  u = d / len;
+  range = vec2(t0 * len, t1 * len);
   float world_per_object = max(length(gl_WorldRayDirectionEXT) / len, 1.0e-20);
-  object_knobs = constants.knobs[arguments.object_id];
-  // The footprint at the box entry, world units (by-distance iterations): t is world distance.
-  march_prepare(constants.camera.pixel_angle * max(t0, 0.0) * length(gl_WorldRayDirectionEXT));
-  MarchSettings m = march_settings(object_knobs, world_per_object, constants.camera.pixel_angle, 1.0);
-  float s;
-  uint steps;
+  m = march_settings(k, world_per_object, constants.camera.pixel_angle, 1.0);
+  footprint = constants.camera.pixel_angle * max(t0, 0.0) * length(gl_WorldRayDirectionEXT);
+  return true;
+}
+
+/// Flags a march whose first point is inside: the caller's one extra evaluation, which it makes
+/// only when outputs are asked for (#ifdef PROCEDURAY_OUTPUTS).
+void paper_march_started(float first_distance) {
 #ifdef PROCEDURAY_OUTPUTS
-  // One more evaluation, only when outputs are asked for: does the march start inside?
-  if (march_distance(o + t0 * len * u) < 0.0) output_flags(output_flag_started_inside);
+  if (first_distance < 0.0) output_flags(output_flag_started_inside);
 #endif
-  bool found = sphere_trace(o, u, t0 * len, t1 * len, m, s, steps);
+}
+
+/// The difference normal's offset at p, a hit at s: the knobs' normal_scale thresholds.
+float paper_normal_offset(MarchKnobs k, MarchSettings m, vec3 p, float s) {
+  return march_knobs_normal_offset(k, p, max(march_epsilon(m, s), 1.0e-5));
+}
+
+/// Reports the march's hit at t (when found and in range) with `normal`; counts the march's and
+/// the normal's evaluations.
+void paper_march_report(bool found, float t, uint steps, MarchSettings m, vec3 normal, uint normal_evaluations) {
   output_steps(steps);
 #ifdef PROCEDURAY_OUTPUTS
   if (!found && steps >= m.max_steps) output_flags(output_flag_exhausted);
 #endif
-  if (!found) return;
-  float t = s / len;
-  if (!t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
-  hit.normal = march_normal(o + s * u, max(march_epsilon(m, s), 1.0e-5));
-  output_steps(march_normal_evaluations(object_knobs));  // the normal's evaluations (at most)
+  if (!found || !t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
+  output_steps(normal_evaluations);  // the normal's evaluations (at most)
 #ifdef PROCEDURAY_OUTPUTS
-  if (isnan(t) || any(isnan(hit.normal))) output_flags(output_flag_nan);
+  if (isnan(t) || any(isnan(normal))) output_flags(output_flag_nan);
 #endif
+  hit.normal = normal;
   hit.steps = float(steps);
   reportIntersectionEXT(t, 0u);
 }

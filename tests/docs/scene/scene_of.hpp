@@ -1,7 +1,0 @@
-#include "tests/docs/scene/scene_names.hpp"
-using namespace doc_scene;
-
-// @declarations
-void usage() {
-  // @statements
-}
