@@ -272,7 +272,7 @@ inline const pr::MarchCapabilities& capabilities(PrimitiveKind k) {
   static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
   static const pr::MarchCapabilities torus = [] {
     pr::MarchCapabilities c = pr::sdf_capabilities();
-    c.defaults.method = static_cast<std::uint32_t>(pr::MarchMethod::relaxed);
+    c.defaults.method = pr::MarchMethod::relaxed;
     c.defaults.relaxation = 1.5f;
     c.defaults.threshold = 0.25f;
     return c;
@@ -298,6 +298,7 @@ inline SceneConstants default_constants(const pr::Camera& camera, float time) {
   const glm::vec3 eye(camera.eye);
   SceneConstants c{camera, eye + glm::vec3(-6.0f, 9.0f, 2.0f), 0.2f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
                    flag_shadows | flag_reflections, max_depth_limit, {}};
+  for (pr::MarchKnobs& k : c.knobs) k = pr::march_base_knobs;  // ids no primitive has (the ground): unread, valid
   for (std::uint32_t k = 0; k < primitive_count; ++k) {
     c.knobs[object_id(static_cast<PrimitiveKind>(k))] = capabilities(static_cast<PrimitiveKind>(k)).defaults;
   }

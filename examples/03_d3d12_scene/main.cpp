@@ -28,7 +28,7 @@ void relax_sdfs(d3d12::SceneConstants& c, float w) {
   if (w == 1.0f) return;
   for (std::uint32_t k = d3d12::mini_spheres; k < d3d12::primitive_count; ++k) {
     proceduray::MarchKnobs& knobs = d3d12::knobs(c, static_cast<d3d12::PrimitiveKind>(k));
-    knobs.method = static_cast<std::uint32_t>(proceduray::MarchMethod::relaxed);
+    knobs.method = proceduray::MarchMethod::relaxed;
     knobs.relaxation = w;
   }
 }
@@ -93,9 +93,9 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
     if (!bench) continue;
     bench_row(renderer, std::string(d3d12::primitive_names[k]), c, w, h, d3d12::object_id(kind));
     if (kind == d3d12::metaballs) {
-      d3d12::knobs(c, d3d12::metaballs).method = static_cast<std::uint32_t>(proceduray::MarchMethod::lipschitz);
+      d3d12::knobs(c, d3d12::metaballs).method = proceduray::MarchMethod::lipschitz;
       bench_row(renderer, "  (Lipschitz)", c, w, h, d3d12::object_id(kind));
-      d3d12::knobs(c, d3d12::metaballs).method = static_cast<std::uint32_t>(proceduray::MarchMethod::segment);
+      d3d12::knobs(c, d3d12::metaballs).method = proceduray::MarchMethod::segment;
       bench_row(renderer, "  (segment)", c, w, h, d3d12::object_id(kind));
     }
   }

@@ -7,7 +7,7 @@
 //   MarchSettings m = march_settings(k, world_per_object, constants.camera.pixel_angle, lipschitz);
 //   if (bulb_trace(o, u, s_lo, s_hi, m, field, s, steps)) {
 //     vec3 p = o + s * u;
-//     n = bulb_normal(k.normal, p, march_knobs_normal_offset(k, p, march_epsilon(m, s)), field);
+//     n = bulb_normal(uint(k.normal), p, march_knobs_normal_offset(k, p, march_epsilon(m, s)), field);
 //   }
 //
 // Marching runs in object space along a unit direction; `world_per_object` (world length per
@@ -39,14 +39,14 @@ PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, real world_per_obje
   MarchSettings m;
 #endif
   real scale = world_per_object > R(0.0) ? world_per_object : R(1.0);
-  bool absolute = k.threshold_mode == march_threshold_absolute;
+  bool absolute = uint(k.threshold_mode) == march_threshold_absolute;
   m.max_steps = k.max_steps;
   m.epsilon = real(absolute ? k.threshold : k.epsilon) / scale;
   m.footprint = absolute ? R(0.0) : real(k.threshold) * pixel_angle;
-  bool bounded = k.method == march_method_lipschitz || k.method == march_method_relaxed;
+  bool bounded = uint(k.method) == march_method_lipschitz || uint(k.method) == march_method_relaxed;
   m.step_scale = real(k.step_scale) / (bounded && lipschitz > R(0.0) ? lipschitz : R(1.0));
-  m.over_relaxation = k.method == march_method_relaxed ? real(k.relaxation) : R(1.0);
-  m.fixed_steps = k.method == march_method_fixed ? max(k.fixed_steps, 1u) : 0u;
+  m.over_relaxation = uint(k.method) == march_method_relaxed ? real(k.relaxation) : R(1.0);
+  m.fixed_steps = uint(k.method) == march_method_fixed ? max(k.fixed_steps, 1u) : 0u;
   m.hit_rule = k.refine != 0u ? march_hit_refined : march_hit_unrefined;
   return m;
 }
@@ -54,7 +54,7 @@ PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, real world_per_obje
 /// The hit threshold of knobs k at distance t, in world units (pixel_angle: radians per pixel):
 /// how far from the surface a hit may lie, e.g. to offset secondary rays.
 PROCEDURAY_INLINE real march_knobs_threshold(MarchKnobs k, real pixel_angle, real t) {
-  if (k.threshold_mode == march_threshold_absolute) return real(k.threshold);
+  if (uint(k.threshold_mode) == march_threshold_absolute) return real(k.threshold);
   return max(real(k.epsilon), real(k.threshold) * pixel_angle * t);
 }
 
@@ -67,14 +67,14 @@ PROCEDURAY_INLINE real march_knobs_normal_offset(MarchKnobs k, real3 p, real thr
 
 /// Distance evaluations the knobs' normal takes.
 PROCEDURAY_INLINE uint march_normal_evaluations(MarchKnobs k) {
-  return k.normal == march_normal_tetrahedral ? 4u : (k.normal == march_normal_central ? 6u : 0u);
+  return uint(k.normal) == march_normal_tetrahedral ? 4u : (uint(k.normal) == march_normal_central ? 6u : 0u);
 }
 
 /// A fractal's iteration count where a pixel footprint is `footprint` world units wide: all of
 /// them up to iteration_detail, one fewer per doubling beyond (at least 1); fixed mode: all.
 PROCEDURAY_INLINE uint march_iterations(MarchKnobs k, real footprint) {
   uint n = max(k.iterations, 1u);
-  if (k.iteration_mode != march_iterations_by_distance || !(footprint > real(k.iteration_detail))) return n;
+  if (uint(k.iteration_mode) != march_iterations_by_distance || !(footprint > real(k.iteration_detail))) return n;
   real doublings = ceil(log2(footprint / real(k.iteration_detail)));
   uint drop = uint(min(doublings, real(n - 1u)));
   return n - drop;

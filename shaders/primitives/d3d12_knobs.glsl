@@ -22,11 +22,11 @@ PROCEDURAY_INLINE bool d3d12_intersect_knobs(uint kind, real4 params, real spin,
   MarchSettings m = march_settings(k, world_per_object, pixel_angle, R(1.0));  // L per kind: d3d12_intersect
   m.step_scale = real(k.step_scale);
   D3d12SdfMarch sdf = d3d12_sdf_march_default();
-  sdf.lipschitz_steps = k.method == march_method_lipschitz || k.method == march_method_relaxed ? 1u : 0u;
-  sdf.normal_method = k.normal == march_normal_tetrahedral ? march_normal_tetrahedral : march_normal_central;
+  sdf.lipschitz_steps = uint(k.method) == march_method_lipschitz || uint(k.method) == march_method_relaxed ? 1u : 0u;
+  sdf.normal_method = uint(k.normal) == march_normal_tetrahedral ? march_normal_tetrahedral : march_normal_central;
   sdf.normal_scale = real(k.normal_scale);
-  uint metaball = k.method == march_method_segment ? metaball_method_segment
-                  : (k.method == march_method_fixed ? metaball_method_fixed : metaball_method_lipschitz);
+  uint metaball = uint(k.method) == march_method_segment ? metaball_method_segment
+                  : (uint(k.method) == march_method_fixed ? metaball_method_fixed : metaball_method_lipschitz);
   return d3d12_intersect(kind, params, spin, time, o, d, t_lo, t_hi, cull, m, metaball, k.fixed_steps, sdf, t_hit,
                          normal, steps);
 }

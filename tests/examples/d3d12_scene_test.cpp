@@ -33,7 +33,7 @@ struct Alone {
 d3d12::SceneConstants debug_constants(const Camera& camera, float time, MarchMethod metaball_method = MarchMethod::fixed) {
   d3d12::SceneConstants c = d3d12::default_constants(camera, time);
   c.flags = d3d12::flag_debug;
-  d3d12::knobs(c, d3d12::metaballs).method = static_cast<std::uint32_t>(metaball_method);
+  d3d12::knobs(c, d3d12::metaballs).method = metaball_method;
   return c;
 }
 
@@ -182,7 +182,7 @@ TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
   }
   // Both metaball marches find the same surface.
   // The three metaball marches see the same blob (segment tracing: Galin et al.'s bound).
-  const std::size_t fixed = metaball_coverage[static_cast<std::uint32_t>(MarchMethod::fixed)];
+  const std::size_t fixed = metaball_coverage[static_cast<std::size_t>(MarchMethod::fixed)];
   CHECK(fixed > 0);
   for (const MarchMethod m : {MarchMethod::lipschitz, MarchMethod::segment}) {
     CHECK(std::abs(double(fixed) - double(metaball_coverage[static_cast<std::uint32_t>(m)])) <= 0.01 * size * size);
@@ -320,7 +320,7 @@ TEST_CASE("d3d12 over-relaxation is a run-time knob that keeps the image and sav
     d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
     c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
     MarchKnobs& torus = d3d12::knobs(c, d3d12::twisted_torus);
-    torus.method = static_cast<std::uint32_t>(k == 0 ? MarchMethod::lipschitz : MarchMethod::relaxed);
+    torus.method = k == 0 ? MarchMethod::lipschitz : MarchMethod::relaxed;
     torus.relaxation = 1.6f;
     alone.renderer.set(d3d12::constants_slot, c);
     frames[k] = alone.renderer.render(size, size);

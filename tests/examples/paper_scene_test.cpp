@@ -285,3 +285,29 @@ TEST_CASE("paper scene generator --names prints what a shader can call, and refu
   CHECK(unknown.err.find("the scene has no closest_hit shader \"nope.rchit\"; its stages are:") != std::string::npos);
   CHECK(unknown.err.find("raygen raygen.rgen") != std::string::npos);
 }
+
+TEST_CASE("paper scene knobs a march cannot survive are refused when set, naming the member, before the device sees them") {
+  TestContext t;
+  Paper p(t.ctx);
+  paper::SceneConstants c = paper::default_constants(width, height, 0.0f);
+  c.knobs[paper::mandelbulb_id].max_steps = 0xFFFFFFFFu;  // 4 billion steps a ray: a hung device
+  c.knobs[paper::mandelbulb_id].step_scale = 1e-30f;
+  CHECK_THROWS_WITH_AS(p.renderer.set(paper::constants_slot, c),
+                       "Renderer::set: uniform 'constants'.knobs[5]: max_steps 4294967295 is out of range; give 1 to 65536 "
+                       "(0 steps never hit; more would hold the device for minutes)",
+                       UsageError);
+  c.knobs[paper::mandelbulb_id].max_steps = 256;
+  CHECK_THROWS_WITH_AS(p.renderer.set(paper::constants_slot, c),
+                       doctest::Contains("Renderer::set: uniform 'constants'.knobs[5]: step_scale 1e-30 must be in [1/1024, 1]"),
+                       UsageError);
+  c.knobs[paper::mandelbulb_id].step_scale = 1.0f;
+  c.knobs[paper::julia_id].iterations = 1u << 20;
+  CHECK_THROWS_WITH_AS(p.renderer.set(paper::constants_slot, c),
+                       doctest::Contains("'constants'.knobs[4]: iterations 1048576 is past 64"), UsageError);
+  // A refused value left the last good one in place: the frame is the default scene's.
+  c.knobs[paper::julia_id].iterations = 10;
+  p.renderer.set(paper::constants_slot, c);
+  const vk::Frame ids = p.render(0.0f, paper::flag_object_ids);
+  CHECK(at(ids, pixel_of(paper::mandelbulb_placement.translation)).r == paper::mandelbulb_id);
+  CHECK(t.ctx.validation_messages().empty());
+}

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <limits>
 #include <string>
 
 using namespace proceduray;
@@ -22,7 +23,8 @@ MarchKnobs with(const char* name, const char* value, MarchKnobs k = march_base_k
 
 TEST_CASE("march knobs - every knob round-trips through its text") {
   MarchKnobs a = march_base_knobs;
-  const MarchKnobs b{4u, 77u, 1u, 0.125f, 2.5e-3f, 0.75f, 1.5f, 33u, 0u, 2u, 0.5f, 9u, 1u, 0.03f};
+  const MarchKnobs b{MarchMethod::fixed, 77u, MarchThreshold::absolute, 0.125f, 2.5e-3f, 0.75f, 1.5f, 33u, 0u,
+                     MarchNormal::tetrahedral, 0.5f, 9u, MarchIterations::by_distance, 0.03f};
   for (const auto& [name, value] : knob_values(b)) set_knob(a, name, value);
   CHECK(std::memcmp(&a, &b, sizeof a) == 0);
   CHECK(knob_values(b).size() == march_knob_names.size());
@@ -63,8 +65,9 @@ TEST_CASE("march knobs - validate names the geometry, the knob, the value and th
       {"threshold", "nan", "threshold nan must be a positive number"},
       {"relaxation", "2", "relaxation 2 must be in [1, 2)"},
       {"relaxation", "0.9", "relaxation 0.9 must be in [1, 2)"},
-      {"step_scale", "0", "step_scale 0 must be in (0, 1]"},
-      {"step_scale", "1.5", "step_scale 1.5 must be in (0, 1]"},
+      {"step_scale", "0", "step_scale 0 must be in [1/1024, 1]"},
+      {"step_scale", "1e-30", "step_scale 1e-30 must be in [1/1024, 1]"},
+      {"step_scale", "1.5", "step_scale 1.5 must be in [1/1024, 1]"},
       {"epsilon", "-1", "epsilon -1 must be >= 0"},
       {"method", "segment", "method segment does not apply; valid: lipschitz, sphere, relaxed, fixed"},
       {"normal", "analytic", "normal analytic does not apply; valid: central, tetrahedral"},
@@ -84,7 +87,7 @@ TEST_CASE("march knobs - validate names the geometry, the knob, the value and th
   fixed.fixed_steps = 0;
   CHECK_THROWS_AS(validate(fixed, sdf, "cog"), UsageError);
   MarchKnobs bad_enum = march_base_knobs;
-  bad_enum.threshold_mode = 7;
+  bad_enum.threshold_mode = static_cast<MarchThreshold>(7);
   CHECK_THROWS_WITH_AS(validate(bad_enum, sdf, "cog"), doctest::Contains("threshold_mode 7 is unknown; valid: footprint, absolute"),
                        UsageError);
   bad_enum = march_base_knobs;
@@ -108,4 +111,34 @@ TEST_CASE("march knobs - fractal iterations are checked against the fractal's ra
                        UsageError);
   CHECK_THROWS_WITH_AS(validate(with("method", "lipschitz", bulb.defaults), bulb, "mandelbulb"),
                        doctest::Contains("valid: sphere, relaxed, fixed"), UsageError);
+}
+
+TEST_CASE("march knobs no geometry can take are refused wherever they go to a shader") {
+  // proceduray_validate is what the renderer runs on every uniform, storage buffer and push
+  // constant block holding MarchKnobs (shader/value_check.hpp): limits that keep a frame finite.
+  static_assert(type_ops<MarchKnobs>.checked);
+  MarchKnobs k = march_base_knobs;
+  CHECK_NOTHROW(proceduray_validate(k, "knobs"));
+  k.max_steps = 0xFFFFFFFFu;
+  CHECK_THROWS_WITH_AS(proceduray_validate(k, "knobs"), doctest::Contains("knobs: max_steps 4294967295 is out of range; give 1 to 65536"),
+                       UsageError);
+  k.max_steps = march_max_steps_limit;
+  CHECK_NOTHROW(proceduray_validate(k, "knobs"));
+  k.step_scale = 1e-30f;
+  CHECK_THROWS_WITH_AS(proceduray_validate(k, "knobs"), doctest::Contains("step_scale 1e-30 must be in [1/1024, 1]"), UsageError);
+  k.step_scale = march_min_step_scale;
+  CHECK_NOTHROW(proceduray_validate(k, "knobs"));
+  k.iterations = march_max_iterations_limit + 1;
+  CHECK_THROWS_WITH_AS(proceduray_validate(k, "knobs"), doctest::Contains("iterations 65 is past 64"), UsageError);
+  k.iterations = 8;
+  k.method = static_cast<MarchMethod>(9);
+  CHECK_THROWS_WITH_AS(proceduray_validate(k, "knobs"),
+                       doctest::Contains("method 9 is unknown; valid: sphere, relaxed, lipschitz, segment, fixed"), UsageError);
+  k.method = MarchMethod::sphere;
+  k.normal = static_cast<MarchNormal>(3);
+  CHECK_THROWS_WITH_AS(proceduray_validate(k, "knobs"), doctest::Contains("normal 3 is unknown"), UsageError);
+  k.normal = MarchNormal::central;
+  k.iteration_detail = std::numeric_limits<float>::quiet_NaN();
+  CHECK_THROWS_WITH_AS(proceduray_validate(k, "knobs"), doctest::Contains("iteration_detail nan must be a world size >= 0"),
+                       UsageError);
 }

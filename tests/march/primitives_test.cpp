@@ -11,8 +11,8 @@ TEST_CASE("march primitives - defaults validate and use the first listed method 
   for (const MarchCapabilities& caps : {sdf_capabilities(), metaball_capabilities(), fractal_capabilities(8)}) {
     CAPTURE(caps.kind);
     CHECK_NOTHROW(validate(caps.defaults, caps, "default"));
-    CHECK(caps.defaults.method == static_cast<std::uint32_t>(caps.methods.front()));
-    CHECK(caps.defaults.normal == static_cast<std::uint32_t>(caps.normals.front()));
+    CHECK(caps.defaults.method == caps.methods.front());
+    CHECK(caps.defaults.normal == caps.normals.front());
   }
   // Metaball fields are no distance: no plain or relaxed sphere tracing, and only the analytic gradient.
   const auto& m = metaball_capabilities().methods;

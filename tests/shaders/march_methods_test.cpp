@@ -43,7 +43,7 @@ namespace {
 MarchKnobs knobs(const char* method) {
   MarchKnobs k = proceduray::march_base_knobs;
   proceduray::set_knob(k, "method", method);
-  k.threshold_mode = static_cast<std::uint32_t>(proceduray::MarchThreshold::absolute);
+  k.threshold_mode = proceduray::MarchThreshold::absolute;
   k.threshold = 1e-3f;
   return k;
 }
@@ -72,16 +72,16 @@ TEST_CASE("march methods - knobs map to the settings the marches read") {
   CHECK(m.over_relaxation == 1.0f);
   CHECK(m.fixed_steps == 0u);
   CHECK(m.hit_rule == march_hit_refined);
-  k.method = static_cast<uint>(MarchMethod::sphere);
+  k.method = MarchMethod::sphere;
   CHECK(march_settings(k, 2.0f, 1e-3f, 4.0f).step_scale == 1.0f);  // plain: no bound applied
-  k.method = static_cast<uint>(MarchMethod::relaxed);
+  k.method = MarchMethod::relaxed;
   k.relaxation = 1.6f;
   m = march_settings(k, 2.0f, 1e-3f, 4.0f);
   CHECK(m.over_relaxation == doctest::Approx(1.6f));
   CHECK(m.step_scale == doctest::Approx(0.25f));
-  k.method = static_cast<uint>(MarchMethod::fixed);
+  k.method = MarchMethod::fixed;
   k.refine = 0;
-  k.threshold_mode = march_threshold_absolute;
+  k.threshold_mode = proceduray::MarchThreshold::absolute;
   k.threshold = 0.01f;
   m = march_settings(k, 2.0f, 1e-3f, 4.0f);
   CHECK(m.fixed_steps == 64u);
@@ -89,18 +89,18 @@ TEST_CASE("march methods - knobs map to the settings the marches read") {
   CHECK(m.epsilon == doctest::Approx(0.005f));
   CHECK(m.footprint == 0.0f);
   CHECK(march_knobs_threshold(k, 1e-3f, 100.0f) == doctest::Approx(0.01f));
-  k.threshold_mode = march_threshold_footprint;
+  k.threshold_mode = proceduray::MarchThreshold::footprint;
   k.threshold = 0.5f;
   CHECK(march_knobs_threshold(k, 1e-3f, 100.0f) == doctest::Approx(0.05f));
   CHECK(march_normal_evaluations(k) == 6u);
-  k.normal = march_normal_tetrahedral;
+  k.normal = proceduray::MarchNormal::tetrahedral;
   CHECK(march_normal_evaluations(k) == 4u);
 }
 
 TEST_CASE("march methods - fractal iterations by distance drop one per doubling of the footprint") {
   MarchKnobs k = proceduray::fractal_capabilities(8).defaults;
   CHECK(march_iterations(k, 1.0f) == 8u);  // fixed mode: all, however far
-  k.iteration_mode = march_iterations_by_distance;
+  k.iteration_mode = proceduray::MarchIterations::by_distance;
   k.iteration_detail = 0.01f;
   CHECK(march_iterations(k, 0.005f) == 8u);
   CHECK(march_iterations(k, 0.01f) == 8u);

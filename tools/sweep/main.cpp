@@ -155,14 +155,14 @@ std::vector<Point> methods_preset() {
 /// The D3D12 sample's settings on knobs `k`: a threshold of 1e-4 t (that many pixel angles), 512
 /// steps, its marches (Lipschitz-scaled sphere tracing, fixed 128 steps for the metaballs).
 void sample_settings(pr::MarchKnobs& k, std::string_view kind, float pixel_angle) {
-  k.threshold_mode = static_cast<std::uint32_t>(pr::MarchThreshold::footprint);
+  k.threshold_mode = pr::MarchThreshold::footprint;
   k.threshold = 1.0e-4f / pixel_angle;
   k.max_steps = 512;
   if (kind == "metaballs") {
-    k.method = static_cast<std::uint32_t>(pr::MarchMethod::fixed);
+    k.method = pr::MarchMethod::fixed;
     k.fixed_steps = 128;
   } else if (kind == "sdf") {
-    k.method = static_cast<std::uint32_t>(pr::MarchMethod::lipschitz);
+    k.method = pr::MarchMethod::lipschitz;
   }
 }
 

@@ -14,7 +14,7 @@
 //     float s; uint steps;
 //     bool found = bulb_trace(o, u, range.x, range.y, m, b, s, steps);
 //     vec3 p = o + s * u;
-//     vec3 n = bulb_normal(k.normal, p, paper_normal_offset(k, m, p, s), b);
+//     vec3 n = bulb_normal(uint(k.normal), p, paper_normal_offset(k, m, p, s), b);
 //     paper_march_report(found, s / len, steps, m, n, march_normal_evaluations(k));
 //   }
 //

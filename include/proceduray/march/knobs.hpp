@@ -65,23 +65,38 @@ inline constexpr std::array<std::string_view, 2> march_threshold_names{"footprin
 inline constexpr std::array<std::string_view, 3> march_normal_names{"analytic", "central", "tetrahedral"};
 inline constexpr std::array<std::string_view, 2> march_iterations_names{"fixed", "by_distance"};
 
-/// One geometry's knobs (GLSL: MarchKnobs, scalar layout).
+/// The most distance evaluations a march may take, and the most iterations a fractal's estimate
+/// may run: past them one frame would hold the device for minutes (a hang, then a device lost).
+inline constexpr std::uint32_t march_max_steps_limit = 65536;
+inline constexpr std::uint32_t march_max_iterations_limit = 64;
+/// The smallest step_scale: a bound that needs steps under 1/1024 of the distance is no bound a
+/// march can use (each ray would take thousands of steps); rescale the distance instead.
+inline constexpr float march_min_step_scale = 1.0f / 1024.0f;
+
+/// One geometry's knobs (GLSL: MarchKnobs, scalar layout; the enums are uints there, whose
+/// march_* consts in marching/knobs.glsl name the same values). Checked wherever it goes to a
+/// shader (proceduray_validate below, shader/value_check.hpp).
 struct MarchKnobs {
-  std::uint32_t method;          ///< MarchMethod
+  MarchMethod method;            ///< how the ray finds the surface
   std::uint32_t max_steps;       ///< evaluations at most, refinement included; then a miss
-  std::uint32_t threshold_mode;  ///< MarchThreshold
+  MarchThreshold threshold_mode; ///< how `threshold` is given
   float threshold;               ///< pixel footprints (footprint mode) or world units (absolute)
   float epsilon;                 ///< footprint mode: the threshold's floor in world units
   float step_scale;              ///< factor on every step, (0, 1]: a fudge for estimates that overshoot
   float relaxation;              ///< relaxed: w in [1, 2)
   std::uint32_t fixed_steps;     ///< fixed: equal steps across the box, < max_steps
   std::uint32_t refine;          ///< 1: bisect the crossing to 1/32 threshold; 0: report the last outside point
-  std::uint32_t normal;          ///< MarchNormal
+  MarchNormal normal;            ///< how the normal at a hit is found
   float normal_scale;            ///< differences' offset h as a fraction of the threshold at the hit
   std::uint32_t iterations;      ///< fractals: iterations (the most, by distance)
-  std::uint32_t iteration_mode;  ///< MarchIterations
+  MarchIterations iteration_mode;  ///< fixed or by distance
   float iteration_detail;        ///< by_distance: world size of a footprint up to which all iterations run
 };
+/// Throws UsageError, naming `where`, the knob, its value and the valid range, for knobs no
+/// geometry can take: an unknown enum value, steps or iterations past the limits above, a
+/// non-finite or non-positive threshold, a step_scale outside [march_min_step_scale, 1], ...
+/// What one geometry accepts is validate(k, caps, geometry)'s business.
+PROCEDURAY_DECL void proceduray_validate(const MarchKnobs& k, std::string_view where);
 PROCEDURAY_STRUCT(MarchKnobs, scalar, method, max_steps, threshold_mode, threshold, epsilon, step_scale, relaxation,
                   fixed_steps, refine, normal, normal_scale, iterations, iteration_mode, iteration_detail);
 
@@ -96,7 +111,9 @@ struct MarchCapabilities {
 
 /// Defaults for a distance bound: Lipschitz-scaled sphere tracing, 512 steps, half a footprint
 /// (at least 1e-4), refined hits, central normals at the threshold.
-inline constexpr MarchKnobs march_base_knobs{2u, 512u, 0u, 0.5f, 1.0e-4f, 1.0f, 1.0f, 64u, 1u, 1u, 1.0f, 0u, 0u, 0.01f};
+inline constexpr MarchKnobs march_base_knobs{MarchMethod::lipschitz, 512u, MarchThreshold::footprint, 0.5f, 1.0e-4f,
+                                             1.0f, 1.0f, 64u, 1u, MarchNormal::central, 1.0f, 0u,
+                                             MarchIterations::fixed, 0.01f};
 
 namespace detail {
 
@@ -177,9 +194,9 @@ namespace proceduray {
 
 PROCEDURAY_DECL void set_knob(MarchKnobs& k, std::string_view name, std::string_view value) {
   using detail::parse_number;
-  if (name == "method") k.method = static_cast<std::uint32_t>(detail::parse_name<MarchMethod>(value, march_method_names, name));
+  if (name == "method") k.method = detail::parse_name<MarchMethod>(value, march_method_names, name);
   else if (name == "max_steps") k.max_steps = parse_number<std::uint32_t>(name, value);
-  else if (name == "threshold_mode") k.threshold_mode = static_cast<std::uint32_t>(detail::parse_name<MarchThreshold>(value, march_threshold_names, name));
+  else if (name == "threshold_mode") k.threshold_mode = detail::parse_name<MarchThreshold>(value, march_threshold_names, name);
   else if (name == "threshold") k.threshold = parse_number<float>(name, value);
   else if (name == "epsilon") k.epsilon = parse_number<float>(name, value);
   else if (name == "step_scale") k.step_scale = parse_number<float>(name, value);
@@ -189,16 +206,17 @@ PROCEDURAY_DECL void set_knob(MarchKnobs& k, std::string_view name, std::string_
     if (value == "on" || value == "1") k.refine = 1;
     else if (value == "off" || value == "0") k.refine = 0;
     else throw UsageError("march knobs: refine '" + std::string(value) + "' is not on/off; valid: on, off, 1, 0");
-  } else if (name == "normal") k.normal = static_cast<std::uint32_t>(detail::parse_name<MarchNormal>(value, march_normal_names, name));
+  } else if (name == "normal") k.normal = detail::parse_name<MarchNormal>(value, march_normal_names, name);
   else if (name == "normal_scale") k.normal_scale = parse_number<float>(name, value);
   else if (name == "iterations") k.iterations = parse_number<std::uint32_t>(name, value);
-  else if (name == "iteration_mode") k.iteration_mode = static_cast<std::uint32_t>(detail::parse_name<MarchIterations>(value, march_iterations_names, name));
+  else if (name == "iteration_mode") k.iteration_mode = detail::parse_name<MarchIterations>(value, march_iterations_names, name);
   else if (name == "iteration_detail") k.iteration_detail = parse_number<float>(name, value);
   else throw UsageError("march knobs: unknown knob '" + std::string(name) + "'; valid: " + detail::joined(march_knob_names));
 }
 
 PROCEDURAY_DECL std::vector<std::pair<std::string, std::string>> knob_values(const MarchKnobs& k) {
-  auto name_of = [](const auto& names, std::uint32_t v) {
+  auto name_of = [](const auto& names, auto e) {
+    const auto v = static_cast<std::uint32_t>(e);
     return v < names.size() ? std::string(names[v]) : "invalid(" + std::to_string(v) + ")";
   };
   return {{"method", name_of(march_method_names, k.method)},
@@ -223,61 +241,84 @@ PROCEDURAY_DECL std::string describe(const MarchKnobs& k) {
   return out;
 }
 
-PROCEDURAY_DECL void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::string_view geometry) {
-  const std::string where = "march knobs of '" + std::string(geometry) + "' (" + std::string(caps.kind) + "): ";
-  auto fail = [&](const std::string& what) { throw UsageError(where + what); };
+PROCEDURAY_DECL void proceduray_validate(const MarchKnobs& k, std::string_view where) {
+  auto fail = [&](const std::string& what) { throw UsageError(std::string(where) + ": " + what); };
   auto finite = [](float v) { return std::isfinite(v); };
-  if (caps.methods.empty()) fail("this geometry is not marched (analytic): it takes no march knobs");
-  bool method_ok = false;
-  for (MarchMethod m : caps.methods) method_ok = method_ok || static_cast<std::uint32_t>(m) == k.method;
-  if (!method_ok) {
-    fail("method " + (k.method < march_method_names.size() ? std::string(march_method_names[k.method])
-                                                            : std::to_string(k.method)) +
-         " does not apply; valid: " + detail::joined_of(caps.methods, march_method_names));
+  auto code = [](auto e) { return static_cast<std::uint32_t>(e); };
+  if (code(k.method) >= march_method_names.size()) {
+    fail("method " + std::to_string(code(k.method)) + " is unknown; valid: " + detail::joined(march_method_names));
   }
-  if (k.max_steps == 0 || k.max_steps > 65536) {
-    fail("max_steps " + std::to_string(k.max_steps) + " is out of range; give 1 to 65536 (0 steps never hit)");
+  if (k.max_steps == 0 || k.max_steps > march_max_steps_limit) {
+    fail("max_steps " + std::to_string(k.max_steps) + " is out of range; give 1 to " +
+         std::to_string(march_max_steps_limit) + " (0 steps never hit; more would hold the device for minutes)");
   }
-  if (k.threshold_mode >= march_threshold_names.size()) {
-    fail("threshold_mode " + std::to_string(k.threshold_mode) + " is unknown; valid: " + detail::joined(march_threshold_names));
+  if (code(k.threshold_mode) >= march_threshold_names.size()) {
+    fail("threshold_mode " + std::to_string(code(k.threshold_mode)) + " is unknown; valid: " +
+         detail::joined(march_threshold_names));
   }
   if (!(finite(k.threshold) && k.threshold > 0.0f)) {
     fail("threshold " + detail::number(k.threshold) + " must be a positive number (" +
-         (k.threshold_mode == 0 ? "pixel footprints, e.g. 0.5" : "world units, e.g. 1e-3") + ")");
+         (k.threshold_mode == MarchThreshold::footprint ? "pixel footprints, e.g. 0.5" : "world units, e.g. 1e-3") + ")");
   }
   if (!(finite(k.epsilon) && k.epsilon >= 0.0f)) fail("epsilon " + detail::number(k.epsilon) + " must be >= 0 world units");
-  if (!(finite(k.step_scale) && k.step_scale > 0.0f && k.step_scale <= 1.0f)) {
-    fail("step_scale " + detail::number(k.step_scale) + " must be in (0, 1]: larger steps than the bound allows skip surfaces");
+  if (!(finite(k.step_scale) && k.step_scale >= march_min_step_scale && k.step_scale <= 1.0f)) {
+    fail("step_scale " + detail::number(k.step_scale) + " must be in [1/1024, 1]: larger steps than the bound allows "
+         "skip surfaces, and a bound needing smaller ones is no bound to march (rescale the distance)");
   }
   if (!(finite(k.relaxation) && k.relaxation >= 1.0f && k.relaxation < 2.0f)) {
     fail("relaxation " + detail::number(k.relaxation) + " must be in [1, 2): at 2 and above relaxed steps "
          "never keep their spheres overlapping (Keinert et al. 2014)");
   }
-  if (k.method == static_cast<std::uint32_t>(MarchMethod::fixed) && (k.fixed_steps == 0 || k.fixed_steps >= k.max_steps)) {
+  if (k.method == MarchMethod::fixed && (k.fixed_steps == 0 || k.fixed_steps >= k.max_steps)) {
     fail("fixed_steps " + std::to_string(k.fixed_steps) + " must be in [1, max_steps) = [1, " +
          std::to_string(k.max_steps) + "): the crossing's refinement needs steps left");
   }
   if (k.refine > 1) fail("refine " + std::to_string(k.refine) + " must be 0 (off) or 1 (on)");
-  bool normal_ok = false;
-  for (MarchNormal n : caps.normals) normal_ok = normal_ok || static_cast<std::uint32_t>(n) == k.normal;
-  if (!normal_ok) {
-    fail("normal " + (k.normal < march_normal_names.size() ? std::string(march_normal_names[k.normal])
-                                                           : std::to_string(k.normal)) +
-         " does not apply; valid: " + detail::joined_of(caps.normals, march_normal_names));
+  if (code(k.normal) >= march_normal_names.size()) {
+    fail("normal " + std::to_string(code(k.normal)) + " is unknown; valid: " + detail::joined(march_normal_names));
   }
   if (!(finite(k.normal_scale) && k.normal_scale > 0.0f && k.normal_scale <= 64.0f)) {
     fail("normal_scale " + detail::number(k.normal_scale) + " must be in (0, 64] thresholds");
   }
-  if (k.iteration_mode >= march_iterations_names.size()) {
-    fail("iteration_mode " + std::to_string(k.iteration_mode) + " is unknown; valid: " + detail::joined(march_iterations_names));
+  if (k.iterations > march_max_iterations_limit) {
+    fail("iterations " + std::to_string(k.iterations) + " is past " + std::to_string(march_max_iterations_limit) +
+         ": an estimate's points inside never bail out, and each would run them all");
+  }
+  if (code(k.iteration_mode) >= march_iterations_names.size()) {
+    fail("iteration_mode " + std::to_string(code(k.iteration_mode)) + " is unknown; valid: " +
+         detail::joined(march_iterations_names));
+  }
+  if (!(finite(k.iteration_detail) && k.iteration_detail >= 0.0f)) {
+    fail("iteration_detail " + detail::number(k.iteration_detail) + " must be a world size >= 0");
+  }
+}
+
+PROCEDURAY_DECL void validate(const MarchKnobs& k, const MarchCapabilities& caps, std::string_view geometry) {
+  const std::string where = "march knobs of '" + std::string(geometry) + "' (" + std::string(caps.kind) + ")";
+  auto fail = [&](const std::string& what) { throw UsageError(where + ": " + what); };
+  if (caps.methods.empty()) fail("this geometry is not marched (analytic): it takes no march knobs");
+  proceduray_validate(k, where);
+  bool method_ok = false;
+  for (MarchMethod m : caps.methods) method_ok = method_ok || m == k.method;
+  if (!method_ok) {
+    fail("method " + std::string(march_method_names[static_cast<std::uint32_t>(k.method)]) +
+         " does not apply; valid: " + detail::joined_of(caps.methods, march_method_names));
+  }
+  bool normal_ok = false;
+  for (MarchNormal n : caps.normals) normal_ok = normal_ok || n == k.normal;
+  if (!normal_ok) {
+    fail("normal " + std::string(march_normal_names[static_cast<std::uint32_t>(k.normal)]) +
+         " does not apply; valid: " + detail::joined_of(caps.normals, march_normal_names));
   }
   if (caps.max_iterations == 0) {
-    if (k.iteration_mode != 0) fail("iteration_mode by_distance needs a fractal; this geometry has no iterations");
+    if (k.iteration_mode != MarchIterations::fixed) {
+      fail("iteration_mode by_distance needs a fractal; this geometry has no iterations");
+    }
   } else {
     if (k.iterations == 0 || k.iterations > caps.max_iterations) {
       fail("iterations " + std::to_string(k.iterations) + " must be in [1, " + std::to_string(caps.max_iterations) + "]");
     }
-    if (k.iteration_mode == 1 && !(finite(k.iteration_detail) && k.iteration_detail > 0.0f)) {
+    if (k.iteration_mode == MarchIterations::by_distance && !(k.iteration_detail > 0.0f)) {
       fail("iteration_detail " + detail::number(k.iteration_detail) + " must be a positive world size");
     }
   }

@@ -59,9 +59,9 @@ PROCEDURAY_DECL const MarchCapabilities& metaball_capabilities() {
                         {MarchNormal::analytic},
                         0,
                         march_base_knobs};
-    c.defaults.method = static_cast<std::uint32_t>(MarchMethod::segment);
+    c.defaults.method = MarchMethod::segment;
     c.defaults.fixed_steps = 128;
-    c.defaults.normal = static_cast<std::uint32_t>(MarchNormal::analytic);
+    c.defaults.normal = MarchNormal::analytic;
     return c;
   }();
   return caps;
@@ -73,7 +73,7 @@ PROCEDURAY_DECL MarchCapabilities fractal_capabilities(std::uint32_t iterations)
                       {MarchNormal::central, MarchNormal::tetrahedral},
                       16,
                       march_base_knobs};
-  c.defaults.method = static_cast<std::uint32_t>(MarchMethod::sphere);
+  c.defaults.method = MarchMethod::sphere;
   c.defaults.max_steps = 256;
   c.defaults.normal_scale = 0.25f;
   c.defaults.iterations = iterations;

@@ -51,6 +51,10 @@ struct TypeOps {
   std::size_t cpp_align = 0;             ///< alignof on the host
   std::string_view (*cpp_name)() = nullptr;  ///< the C++ type's name, for error messages
   const TypeOps* mesh_vertex = nullptr;  ///< MeshRef<V> (shader/mesh_ref.hpp): V; nullptr for other types
+  /// The type's own check of a value (proceduray_validate(const T&, std::string_view where), found
+  /// by argument-dependent lookup where T is registered); throws UsageError. nullptr: none.
+  void (*validate)(const void* value, std::string_view where) = nullptr;
+  bool checked = false;  ///< the type, or a member or element of it, has a validate: check_value walks it
 };
 
 template <class Vertex>
@@ -115,6 +119,22 @@ struct IsAddress<DeviceAddress<T>> : std::true_type {};
 template <class T>
 constexpr TypeOps make_type_ops();
 
+/// A type whose values the library checks before they reach a shader (shader/value_check.hpp).
+template <class T>
+concept HasValidator = requires(const T& value) { proceduray_validate(value, std::string_view{}); };
+
+template <HasValidator T>
+void validate_erased(const void* value, std::string_view where) {
+  proceduray_validate(*static_cast<const T*>(value), where);
+}
+
+constexpr bool any_field_checked(const Field* fields, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (fields[i].type->checked) return true;
+  }
+  return false;
+}
+
 }  // namespace detail
 
 /// True when T was registered with PROCEDURAY_STRUCT (visible at this point of the program).
@@ -150,6 +170,14 @@ constexpr TypeOps make_type_ops() {
     t.kind = TypeKind::scalar;
     t.glsl_name = ScalarInfo<T>::name;
     t.component_size = sizeof(T);
+  } else if constexpr (std::is_enum_v<T>) {
+    // A typed knob: in GLSL the underlying int or uint, whose consts name its values.
+    using U = std::underlying_type_t<T>;
+    if constexpr (std::is_same_v<U, std::uint32_t> || std::is_same_v<U, std::int32_t>) {
+      t.kind = TypeKind::scalar;
+      t.glsl_name = ScalarInfo<U>::name;
+      t.component_size = sizeof(U);
+    }
   } else if constexpr (IsGlm<T>::value) {
     using C = typename T::value_type;
     if constexpr (requires { typename T::col_type; }) {
@@ -175,8 +203,14 @@ constexpr TypeOps make_type_ops() {
     t.field_count = sizeof(F::fields) / sizeof(Field);
     t.rule = F::rule;
     if constexpr (IsMeshRef<T>::value) t.mesh_vertex = &type_ops<typename T::vertex_type>;
+    t.checked = any_field_checked(t.fields, t.field_count);
   } else if constexpr (std::is_class_v<T>) {
     t.kind = TypeKind::unregistered_struct;
+  }
+  if constexpr (std::is_array_v<T>) t.checked = t.element->checked;
+  if constexpr (HasValidator<T>) {
+    t.validate = &validate_erased<T>;
+    t.checked = true;
   }
   if constexpr (!std::is_void_v<T> && !std::is_function_v<T> && !std::is_reference_v<T>) {
     t.cpp_size = sizeof(T);

@@ -23,3 +23,4 @@
 #include <proceduray/shader/layout_rule.hpp>
 #include <proceduray/shader/lights.hpp>
 #include <proceduray/shader/mesh_ref.hpp>
+#include <proceduray/shader/value_check.hpp>

@@ -19,6 +19,7 @@
 #include <proceduray/error.hpp>
 #include <proceduray/scene/global_signature.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
+#include <proceduray/shader/value_check.hpp>
 #include <proceduray/vk/acceleration.hpp>
 #include <proceduray/vk/descriptors.hpp>
 #include <proceduray/vk/texture.hpp>
@@ -48,6 +49,7 @@ class Bindings {
   template <class T>
   void set(UniformSlot<T> slot, const std::type_identity_t<T>& value, std::string_view op = "Bindings::set") {
     Uniform& u = uniform(slot, &type_ops<T>, sizeof(T), op);
+    check_value(value, [&] { return std::string(op) + ": uniform '" + slot.name + "'"; });  // before it is kept
     std::memcpy(u.value.data(), &value, sizeof(T));
     u.dirty = true;
   }
@@ -55,11 +57,15 @@ class Bindings {
   template <class T>
   void set_storage(StorageSlot<T> slot, std::span<const std::type_identity_t<T>> values,
                    std::string_view op = "Bindings::set_storage") {
+    for (std::size_t i = 0; type_ops<T>.checked && i < values.size(); ++i) {
+      check_value(values[i], [&] { return std::string(op) + ": storage buffer '" + slot.name + "'[" + std::to_string(i) + "]"; });
+    }
     set_storage_bytes(slot, &type_ops<T>, std::as_bytes(values), op);
   }
   /// Sets the push constants. Other types do not compile; a slot other than the signature's throws.
   template <class T>
   void set_push(PushConstantSlot<T> slot, const std::type_identity_t<T>& value, std::string_view op = "Bindings::set_push") {
+    check_value(value, [&] { return std::string(op) + ": push constants '" + slot.name + "'"; });
     set_push_bytes(slot, &type_ops<T>, std::as_bytes(std::span<const T>(&value, 1)), op);
   }
   /// Writes `view` to every storage-image binding.
