@@ -29,6 +29,8 @@
 // loops, one thread.
 #pragma once
 
+#include <proceduray/accuracy/parallel.hpp>
+
 #include "reference_objects.hpp"
 
 #include <proceduray/accuracy/metrics.hpp>
@@ -49,6 +51,14 @@ struct ObjectCost {
   std::uint64_t hits = 0;             ///< of those, rays that hit it (nearest or not)
   std::uint64_t evaluations = 0;      ///< evaluations on all those rays
   std::uint64_t hit_evaluations = 0;  ///< evaluations on the rays that hit it
+
+  ObjectCost& operator+=(const ObjectCost& o) {
+    rays += o.rays;
+    hits += o.hits;
+    evaluations += o.evaluations;
+    hit_evaluations += o.hit_evaluations;
+    return *this;
+  }
 };
 
 /// The nearest hit along one ray, and the object it belongs to (sky_id on a miss or undetermined).
@@ -119,8 +129,15 @@ inline RayReference reference_ray(const ReferenceScene& s, glm::dvec3 dir,
   return best;
 }
 
-/// Row y of the image into out (width entries from out.pixels[y * width]); costs into out.costs.
-inline void reference_row(const ReferenceScene& s, std::uint32_t y, ReferenceImage& out) {
+/// What one worker of reference_image adds up over its rows.
+struct RowTally {
+  std::array<ObjectCost, object_id_count> costs{};
+  std::uint64_t undetermined = 0;
+};
+
+/// Row y of the image into out (width entries from out.pixels[y * width], written by this call
+/// only); costs and undetermined pixels into `tally`.
+inline void reference_row(const ReferenceScene& s, std::uint32_t y, ReferenceImage& out, RowTally& tally) {
   for (std::uint32_t x = 0; x < out.width; ++x) {
     const glm::dvec3 dir = camera_direction(s, x, y, out.width, out.height);
     if (!acc::detail::finite(dir)) {
@@ -128,11 +145,11 @@ inline void reference_row(const ReferenceScene& s, std::uint32_t y, ReferenceIma
                                    ") has direction " + acc::detail::show(dir) + "; pass a camera whose forward, right "
                                    "and up span a view (proceduray::look_at)");
     }
-    const RayReference r = reference_ray(s, dir, &out.costs);
+    const RayReference r = reference_ray(s, dir, &tally.costs);
     const std::size_t pixel = static_cast<std::size_t>(y) * out.width + x;
     out.pixels[pixel] = r.reference;
     out.objects[pixel] = r.object;
-    out.undetermined += r.reference.outcome == acc::Outcome::undetermined;
+    tally.undetermined += r.reference.outcome == acc::Outcome::undetermined;
   }
 }
 
@@ -146,7 +163,15 @@ inline ReferenceImage reference_image(const ReferenceScene& s, std::uint32_t wid
   out.pixel_angle = s.pixel_angle;
   out.pixels.resize(static_cast<std::size_t>(width) * height);
   out.objects.resize(out.pixels.size(), sky_id);
-  for (std::uint32_t y = 0; y < height; ++y) reference_row(s, y, out);
+  // Every core (accuracy/parallel.hpp): each ray's truth depends on that ray alone.
+  std::vector<RowTally> tally(acc::worker_count());
+  acc::parallel_rows(
+      height, [&](std::uint32_t y, std::uint32_t worker) { reference_row(s, y, out, tally[worker]); },
+      static_cast<std::uint32_t>(tally.size()));
+  for (const RowTally& t : tally) {
+    for (std::size_t i = 0; i < out.costs.size(); ++i) out.costs[i] += t.costs[i];
+    out.undetermined += t.undetermined;
+  }
   for (const ObjectCost& c : out.costs) out.evaluations += c.evaluations;
   return out;
 }
