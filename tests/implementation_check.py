@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Checks that <proceduray/implementation.hpp> compiles the bodies of every header that has any.
+"""Checks that <proceduray/implementation.hpp> compiles the bodies of every header that has any, and that
+bodies live in <header>-inl.hpp files, never in an `#if PROCEDURAY_BODIES` block of a header.
 
 A header whose bodies sit in an `#if PROCEDURAY_BODIES` block (include/proceduray/config.hpp) but is
 not reached from implementation.hpp would leave a PROCEDURAY_SEPARATE program with undefined
@@ -21,10 +22,17 @@ def main(argv):
     compiler = argv[argv.index('--') + 1:]
     include = os.path.join(ROOT, 'include')
     with_bodies = set()
+    in_headers = []
     for path in glob.glob(os.path.join(include, 'proceduray', '**', '*.hpp'), recursive=True):
         with open(path, encoding='utf-8') as f:
             if '#if PROCEDURAY_BODIES' in f.read():
                 with_bodies.add(os.path.realpath(path))
+                if not path.endswith('-inl.hpp') and os.path.basename(path) != 'config.hpp':
+                    in_headers.append(os.path.relpath(path, include))
+    if in_headers:
+        print('bodies belong in <header>-inl.hpp beside the header (config.hpp), not in an `#if PROCEDURAY_BODIES` '
+              'block of the header:\n  ' + '\n  '.join(sorted(in_headers)))
+        return 1
     if len(with_bodies) < 10:
         sys.exit(f'implementation_check: only {len(with_bodies)} headers have bodies blocks; the search is broken')
     run = subprocess.run(compiler + ['-I' + include, '-M', '-x', 'c++', os.path.join(include, 'proceduray',

@@ -233,32 +233,4 @@ class Calibration {
 
 }  // namespace proceduray
 
-#if PROCEDURAY_BODIES
-
-namespace proceduray {
-
-PROCEDURAY_DECL bool dominates(const CalibrationRow& a, const CalibrationRow& b) {
-  const double av[] = {a.evals, a.depth_median, a.depth_p99, a.silhouette_false_hits, a.false_misses, a.normal_p95};
-  const double bv[] = {b.evals, b.depth_median, b.depth_p99, b.silhouette_false_hits, b.false_misses, b.normal_p95};
-  bool better = false;
-  for (std::size_t i = 0; i < 6; ++i) {
-    if (av[i] > bv[i]) return false;
-    better = better || av[i] < bv[i];
-  }
-  return better;
-}
-
-PROCEDURAY_DECL std::filesystem::path shipped_calibration() {
-  std::filesystem::path dir = "shaders";
-  if (const char* env = std::getenv("PROCEDURAY_SHADER_DIR"); env != nullptr && *env != '\0') {
-    dir = env;
-  } else {
-#ifdef PROCEDURAY_SHADER_DIR
-    dir = PROCEDURAY_SHADER_DIR;
-#endif
-  }
-  return dir / "calibration" / "primitives.csv";
-}
-
-}  // namespace proceduray
-#endif  // PROCEDURAY_BODIES
+#include "proceduray/march/calibration-inl.hpp"  // the bodies (config.hpp)

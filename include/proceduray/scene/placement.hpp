@@ -47,16 +47,4 @@ PROCEDURAY_DECL std::vector<InstanceTransform> transforms(std::span<const Placem
 
 }  // namespace proceduray
 
-#if PROCEDURAY_BODIES
-
-namespace proceduray {
-
-PROCEDURAY_DECL std::vector<InstanceTransform> transforms(std::span<const Placement> placements) {
-  std::vector<InstanceTransform> out;
-  out.reserve(placements.size());
-  for (const Placement& p : placements) out.push_back(p.transform());
-  return out;
-}
-
-}  // namespace proceduray
-#endif  // PROCEDURAY_BODIES
+#include "proceduray/scene/placement-inl.hpp"  // the bodies (config.hpp)

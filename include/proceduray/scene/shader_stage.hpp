@@ -17,14 +17,4 @@ PROCEDURAY_DECL const char* to_string(ShaderStage stage);
 
 }  // namespace proceduray
 
-#if PROCEDURAY_BODIES
-
-namespace proceduray {
-
-PROCEDURAY_DECL const char* to_string(ShaderStage stage) {
-  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable"};
-  return names[static_cast<std::uint32_t>(stage)];
-}
-
-}  // namespace proceduray
-#endif  // PROCEDURAY_BODIES
+#include "proceduray/scene/shader_stage-inl.hpp"  // the bodies (config.hpp)

@@ -129,15 +129,4 @@ class WorldOrigin {
 
 }  // namespace proceduray
 
-#if PROCEDURAY_BODIES
-
-namespace proceduray {
-
-PROCEDURAY_DECL double float_spacing(double x) {
-  const double a = std::abs(x);
-  if (!(a >= 0x1p-126)) return 0x1p-149;
-  return std::ldexp(1.0, std::ilogb(a) - 23);
-}
-
-}  // namespace proceduray
-#endif  // PROCEDURAY_BODIES
+#include "proceduray/scene/world_origin-inl.hpp"  // the bodies (config.hpp)

@@ -96,22 +96,4 @@ PROCEDURAY_DECL FrameTimes time_frames(Renderer& renderer, std::uint32_t width, 
 
 }  // namespace proceduray::vk
 
-#if PROCEDURAY_BODIES
-
-namespace proceduray::vk {
-
-PROCEDURAY_DECL Stats stats(std::span<const double> samples) {
-  if (samples.empty()) throw UsageError("stats: no samples; time at least one frame");
-  std::vector<double> v(samples.begin(), samples.end());
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  const double median = n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  return {v.front(), median, v.back(), n};
-}
-
-PROCEDURAY_DECL FrameTimes time_frames(Renderer& renderer, std::uint32_t width, std::uint32_t height, TimingOptions options) {
-  return time_frames(renderer, width, height, options, [](std::uint32_t) {});
-}
-
-}  // namespace proceduray::vk
-#endif  // PROCEDURAY_BODIES
+#include "proceduray/vk/timing-inl.hpp"  // the bodies (config.hpp)

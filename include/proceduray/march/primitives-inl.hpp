@@ -1,0 +1,50 @@
+// The bodies of proceduray/march/primitives.hpp, compiled in every file that includes it (header-only,
+// the default) or once, by implementation.hpp, in a PROCEDURAY_SEPARATE program (config.hpp).
+// Include the header, never this file.
+#pragma once
+
+#include "proceduray/march/primitives.hpp"
+
+#if PROCEDURAY_BODIES
+namespace proceduray {
+
+PROCEDURAY_DECL const MarchCapabilities& sdf_capabilities() {
+  static const MarchCapabilities caps{
+      "sdf",
+      {MarchMethod::lipschitz, MarchMethod::sphere, MarchMethod::relaxed, MarchMethod::fixed},
+      {MarchNormal::central, MarchNormal::tetrahedral},
+      0,
+      march_base_knobs};
+  return caps;
+}
+
+PROCEDURAY_DECL const MarchCapabilities& metaball_capabilities() {
+  static const MarchCapabilities caps = [] {
+    MarchCapabilities c{"metaballs",
+                        {MarchMethod::segment, MarchMethod::fixed, MarchMethod::lipschitz},
+                        {MarchNormal::analytic},
+                        0,
+                        march_base_knobs};
+    c.defaults.method = MarchMethod::segment;
+    c.defaults.fixed_steps = 128;
+    c.defaults.normal = MarchNormal::analytic;
+    return c;
+  }();
+  return caps;
+}
+
+PROCEDURAY_DECL MarchCapabilities fractal_capabilities(std::uint32_t iterations) {
+  MarchCapabilities c{"fractal",
+                      {MarchMethod::sphere, MarchMethod::relaxed, MarchMethod::fixed},
+                      {MarchNormal::central, MarchNormal::tetrahedral},
+                      16,
+                      march_base_knobs};
+  c.defaults.method = MarchMethod::sphere;
+  c.defaults.max_steps = 256;
+  c.defaults.normal_scale = 0.25f;
+  c.defaults.iterations = iterations;
+  return c;
+}
+
+}  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

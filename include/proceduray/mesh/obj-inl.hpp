@@ -1,0 +1,147 @@
+// The bodies of proceduray/mesh/obj.hpp, compiled in every file that includes it (header-only,
+// the default) or once, by implementation.hpp, in a PROCEDURAY_SEPARATE program (config.hpp).
+// Include the header, never this file.
+#pragma once
+
+#include "proceduray/mesh/obj.hpp"
+
+#if PROCEDURAY_BODIES
+#include <proceduray/error.hpp>
+#include <proceduray/scene/errors.hpp>
+
+#include <tiny_obj_loader.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+#include <tuple>
+
+namespace proceduray {
+namespace detail {
+
+/// The mesh of a parsed file: corners deduplicated, indices checked, normals completed.
+PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                                 std::string_view name) {
+  const auto positions = static_cast<long long>(attrib.vertices.size() / 3);
+  const auto normals = static_cast<long long>(attrib.normals.size() / 3);
+  const auto uvs = static_cast<long long>(attrib.texcoords.size() / 2);
+  const std::string where = "load_obj: '" + std::string(name) + "'";
+  bool all_normals = true, all_uvs = true;
+  std::size_t corners = 0;
+  for (const tinyobj::shape_t& shape : shapes) {
+    for (std::size_t c = 0; c < shape.mesh.indices.size(); ++c) {
+      const tinyobj::index_t& i = shape.mesh.indices[c];
+      const auto check = [&](int index, long long count, const char* what, const char* line) {
+        if (index >= 0 && index < count) return;
+        throw InvalidGeometryError(where + " shape \"" + shape.name + "\" face " + std::to_string(c / 3 + 1) + " uses " +
+                                   what + " " + std::to_string(index + 1) + " but the file has " +
+                                   std::to_string(count) + " (`" + line + "` lines); fix the face's index or add the " +
+                                   what);
+      };
+      check(i.vertex_index, positions, "position", "v");
+      if (i.normal_index >= 0) check(i.normal_index, normals, "normal", "vn");
+      if (i.texcoord_index >= 0) check(i.texcoord_index, uvs, "texture coordinate", "vt");
+      all_normals = all_normals && i.normal_index >= 0;
+      all_uvs = all_uvs && i.texcoord_index >= 0;
+      ++corners;
+    }
+  }
+  if (corners == 0) throw InvalidGeometryError(where + " has no faces (`f` lines); a mesh needs at least one triangle");
+  for (float x : attrib.vertices) {
+    if (!std::isfinite(x)) throw InvalidGeometryError(where + " has a position that is not finite; fix its `v` line");
+  }
+  ObjMesh mesh;
+  mesh.normals_computed = !all_normals;
+  // One vertex per distinct (position, normal, uv) triple; -1 where that part is not used.
+  std::map<std::tuple<int, int, int>, std::uint32_t> vertex_of;
+  for (const tinyobj::shape_t& shape : shapes) {
+    for (const tinyobj::index_t& i : shape.mesh.indices) {
+      const std::tuple key(i.vertex_index, all_normals ? i.normal_index : -1, all_uvs ? i.texcoord_index : -1);
+      auto [it, added] = vertex_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+      if (added) {
+        const float* p = &attrib.vertices[3 * static_cast<std::size_t>(i.vertex_index)];
+        mesh.positions.emplace_back(p[0], p[1], p[2]);
+        if (all_normals) {
+          const float* n = &attrib.normals[3 * static_cast<std::size_t>(i.normal_index)];
+          const glm::vec3 v(n[0], n[1], n[2]);
+          const float length = glm::length(v);
+          mesh.normals.push_back(length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0, 0, 1));
+        }
+        if (all_uvs) {
+          const float* t = &attrib.texcoords[2 * static_cast<std::size_t>(i.texcoord_index)];
+          mesh.uvs.emplace_back(t[0], t[1]);
+        }
+      }
+      mesh.indices.push_back(it->second);
+    }
+  }
+  if (!all_normals) {
+    // Positions with equal coordinates are one point (exporters repeat them at seams and poles).
+    std::map<std::tuple<float, float, float>, std::size_t> point_of_coordinates;
+    std::vector<std::size_t> point(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const glm::vec3& p = mesh.positions[v];
+      point[v] = point_of_coordinates.try_emplace({p.x, p.y, p.z}, point_of_coordinates.size()).first->second;
+    }
+    // Weighted by the triangle's angle at the point (Thürmer and Wüthrich 1998): unlike area
+    // weights, the result does not depend on how the faces were split into triangles.
+    std::vector<glm::vec3> sum(point_of_coordinates.size(), glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const glm::vec3 p[3] = {mesh.positions[mesh.indices[t]], mesh.positions[mesh.indices[t + 1]],
+                              mesh.positions[mesh.indices[t + 2]]};
+      const glm::vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+      const float length = glm::length(n);
+      if (!(length > 0.0f)) continue;  // no area, no direction
+      for (std::size_t k = 0; k < 3; ++k) {
+        const glm::vec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
+        const float angle = std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
+        sum[point[mesh.indices[t + k]]] += n * (angle / length);
+      }
+    }
+    mesh.normals.reserve(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const glm::vec3 n = sum[point[v]];
+      const float length = glm::length(n);
+      mesh.normals.push_back(length > 0.0f ? n / length : glm::vec3(0, 0, 1));
+    }
+  }
+  return mesh;
+}
+
+/// Parses `text` with tinyobjloader; throws InvalidGeometryError with its message.
+PROCEDURAY_DECL ObjMesh parse_obj_text(const std::string& text, std::string_view name) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(text, std::string(), config) || !reader.Valid()) {
+    std::string message = reader.Error();
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+    throw InvalidGeometryError("load_obj: '" + std::string(name) + "' is not a valid OBJ file: " +
+                               (message.empty() ? std::string("tinyobjloader gave no reason") : message));
+  }
+  return obj_mesh(reader.GetAttrib(), reader.GetShapes(), name);
+}
+
+}  // namespace detail
+
+PROCEDURAY_DECL ObjMesh parse_obj(std::string_view text, std::string_view name) {
+  return detail::parse_obj_text(std::string(text), name);
+}
+
+PROCEDURAY_DECL ObjMesh load_obj(const std::filesystem::path& path) {
+  // Read here rather than by tinyobjloader, so a missing file is told apart from a bad one.
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw EnvironmentError("load_obj: cannot read '" + path.string() +
+                           "'; check the path (relative paths start at the working directory)");
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw EnvironmentError("load_obj: reading '" + path.string() + "' failed");
+  return detail::parse_obj_text(text, path.string());
+}
+
+}  // namespace proceduray
+#endif  // PROCEDURAY_BODIES
