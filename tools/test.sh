@@ -1,24 +1,24 @@
 #!/usr/bin/env bash
-# Builds and runs every test, with the Khronos validation layer on in every Vulkan test:
-#   1. CMake build (GCC) of the library, tests and examples
+# Builds and runs every test, with the Khronos validation layer on in every Vulkan test. One test
+# runner, CTest, run with both compilers:
+#   1. CMake build with GCC: CMAKE_BUILD_TYPE=Release and its default flags (-O3), plus -Werror
+#      (PROCEDURAY_WERROR, on here and for developers, off in a user's build)
 #   2. cmake --install, then tests/consumer built against the installed package (CMake and Meson)
-#   3. Meson build with the second compiler (Debian's clang) and `meson test`: every header and
-#      every test compiled and run by both compilers
-#   4. CTest
-#   5. the CMake and Meson test lists compared (tests/list_tests.py compare)
+#   3. CTest (GCC)
+#   4. CMake build with the second compiler (Debian's clang, -O2, -Werror) and CTest again: every
+#      header, every usage block and every test compiled and run by both compilers
+#   5. Meson build of the examples (clang, -Werror) and its smoke test (each example renders)
 #   6. sanitizers: an ASan+UBSan (GCC) build of the non-Vulkan tests and of a Vulkan subset
 #      (proceduray_vk_sanitize_tests), run with leak detection on and no suppressions
-# PROCEDURAY_TEST_STEPS="cmake meson ctest sanitize" runs a subset (default: all).
+# PROCEDURAY_TEST_STEPS="cmake ctest clang meson sanitize" runs a subset (default: all).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${PROCEDURAY_BUILD_DIR:-$root/build}
 jobs=$(nproc)
-steps=${PROCEDURAY_TEST_STEPS:-cmake meson ctest sanitize}
+steps=${PROCEDURAY_TEST_STEPS:-cmake ctest clang meson sanitize}
 start=$SECONDS
 step() { echo; echo "== $* (at $(( (SECONDS - start) / 60 )) min $(( (SECONDS - start) % 60 )) s)"; }
 want() { [[ " $steps " == *" $1 "* ]]; }
-# No debug info in these builds: it is a third of the compile time and CI reads no core files.
-release=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG")
 
 # README's first scene, built against the installed package, run where its shaders folder is.
 first_scene() {
@@ -27,8 +27,8 @@ first_scene() {
 }
 
 if want cmake; then
-  step "CMake build (GCC)"
-  cmake -S "$root" -B "$out/cmake" -G Ninja "${release[@]}"
+  step "CMake build (GCC, Release with its default flags, -Werror)"
+  cmake -S "$root" -B "$out/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROCEDURAY_WERROR=ON
   cmake --build "$out/cmake" -j"$jobs"
 
   step "install and consumer project"
@@ -46,40 +46,49 @@ if want cmake; then
   first_scene "$out/consumer-meson"
 fi
 
+if want ctest; then
+  step "CTest (GCC)"
+  ctest --test-dir "$out/cmake" -j"$jobs" --output-on-failure
+fi
+
+if want clang; then
+  step "CMake build (clang, -O2, -Werror) and CTest"
+  if [ -d "$out/clang" ] && ! grep -q "clang++" "$out/clang/CMakeCache.txt" 2>/dev/null; then
+    rm -rf "$out/clang"  # an older build by another compiler
+  fi
+  # The benchmarks are not tests: the GCC build compiles them.
+  CC=clang CXX=clang++ cmake -S "$root" -B "$out/clang" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" -DPROCEDURAY_WERROR=ON -DPROCEDURAY_BUILD_BENCHES=OFF >/dev/null
+  grep -q "clang++" "$out/clang/CMakeCache.txt" || { echo "the second build is not using clang++"; exit 1; }
+  cmake --build "$out/clang" -j"$jobs"
+  ctest --test-dir "$out/clang" -j"$jobs" --output-on-failure
+fi
+
 if want meson; then
-  step "Meson build (clang) and tests"
+  step "Meson build of the examples (clang) and its smoke test"
   if [ -d "$out/meson" ] && ! grep -q "clang++" "$out/meson/build.ninja" 2>/dev/null; then
     rm -rf "$out/meson"  # an older build by another compiler
   fi
   if [ -d "$out/meson" ]; then
     meson setup --reconfigure "$out/meson" "$root" >/dev/null
   else
-    CC=clang CXX=clang++ meson setup "$out/meson" "$root" -Doptimization=2 -Ddebug=false >/dev/null
+    CC=clang CXX=clang++ meson setup "$out/meson" "$root" -Doptimization=1 -Ddebug=false -Dwerror=true >/dev/null
   fi
-  grep -q "clang++" "$out/meson/build.ninja" || { echo "the Meson build is not using clang++"; exit 1; }
   meson compile -C "$out/meson" -j "$jobs"
   meson test -C "$out/meson" --num-processes "$jobs" --print-errorlogs
-fi
-
-if want ctest; then
-  step "CTest"
-  ctest --test-dir "$out/cmake" -j"$jobs" --output-on-failure
-
-  step "CMake and Meson register the same tests"
-  python3 "$root/tests/list_tests.py" compare "$out/cmake" "$out/meson"
 fi
 
 if want sanitize; then
   step "ASan + UBSan build"
   # vptr is left out: its checks need the typeinfo of every polymorphic class, and Debian builds
   # glslang's static libraries without RTTI (undefined `typeinfo for glslang::TShader`).
-  # GCC 12 also warns maybe-uninitialized inside libstdc++'s <regex> when ASan instruments it (a
-  # false positive, not in our code), so that one warning is not an error here.
+  # GCC 12 also warns maybe-uninitialized inside libstdc++ when ASan instruments it (a false
+  # positive, not in our code), so that one warning is not an error here.
   flags="-fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
   flags+=" -Wno-maybe-uninitialized"
   # -O0: a third of -O1's compile time under ASan; these tests are fast either way.
   cmake -S "$root" -B "$out/sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O0 -g1" \
-    "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
+    -DPROCEDURAY_WERROR=ON "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
   binaries=(proceduray_shader_tests proceduray_scene_tests proceduray_march_tests proceduray_accuracy_tests
             proceduray_image_tests proceduray_vk_sanitize_tests)
   cmake --build "$out/sanitize" -j"$jobs" --target "${binaries[@]}"

@@ -12,17 +12,17 @@ using namespace shader_test;
 
 TEST_CASE("the interface derives its maxima from its types") {
   static_assert(Interface::max_payload_size == sizeof(RadiancePayload));
-  CHECK(Interface::max_payload_size == 16);
-  CHECK(Interface::max_attribute_size == sizeof(SphereHit));
-  CHECK(Interface::max_root_arguments_size == sizeof(Material430));
-  CHECK(Interface::max_attribute_size <= proceduray::max_hit_attribute_size);
+  static_assert(Interface::max_payload_size == 16);
+  static_assert(Interface::max_attribute_size == sizeof(SphereHit));
+  static_assert(Interface::max_root_arguments_size == sizeof(Material430));
+  static_assert(Interface::max_attribute_size <= proceduray::max_hit_attribute_size);
 }
 
 TEST_CASE("payload locations are list positions") {
   static_assert(Interface::payload_location<RadiancePayload>() == 0);
-  CHECK(Interface::payload_location<ShadowPayload>() == 1);
-  CHECK(Interface::root_arguments_index<Material430>() == 1);
-  CHECK(Interface::attributes_index<SphereHit>() == 0);
+  static_assert(Interface::payload_location<ShadowPayload>() == 1);
+  static_assert(Interface::root_arguments_index<Material430>() == 1);
+  static_assert(Interface::attributes_index<SphereHit>() == 0);
   CHECK(Interface::root_component_index<proceduray::DeviceAddress<Sphere>>() == 1);
 }
 

@@ -85,8 +85,8 @@ using proceduray::type_ops;
 TEST_CASE("a defined struct has the field list of the same struct registered by hand") {
   check_same_fields(type_ops<Defined430>, type_ops<shader_test::Material430>);
   check_same_fields(type_ops<DefinedScalar>, type_ops<shader_test::ScalarMix>);
-  CHECK(type_ops<Defined430>.glsl_name == "Defined430");
-  CHECK(type_ops<Defined430>.fields[2].type->element == &type_ops<Light>);
+  static_assert(type_ops<Defined430>.glsl_name == "Defined430");
+  static_assert(type_ops<Defined430>.fields[2].type->element == &type_ops<Light>);
   CHECK(sizeof(Defined430) == sizeof(shader_test::Material430));
   CHECK(sizeof(DefinedScalar) == sizeof(shader_test::ScalarMix));
 }
@@ -108,12 +108,12 @@ TEST_CASE("a defined struct is a plain aggregate with its members in order") {
   constexpr Outer o{{7u}, 0.5f};
   static_assert(o.inner.occluded == 7u && o.weight == 0.5f);
   CHECK(offsetof(Outer, weight) == 4);
-  CHECK(type_ops<Outer>.fields[1].offset == 4);
+  static_assert(type_ops<Outer>.fields[1].offset == 4);
 }
 
 TEST_CASE("a defined struct takes 32 members") {
   static_assert(type_ops<Widest>.field_count == 32);
-  CHECK(type_ops<Widest>.fields[31].name == "m31");
-  CHECK(type_ops<Widest>.fields[31].offset == 31 * sizeof(float));
+  static_assert(type_ops<Widest>.fields[31].name == "m31");
+  static_assert(type_ops<Widest>.fields[31].offset == 31 * sizeof(float));
   CHECK(sizeof(Widest) == 32 * sizeof(float));
 }

@@ -49,9 +49,9 @@ TEST_CASE("a struct may point to its own type") {
 }
 
 TEST_CASE("32 members are supported") {
-  CHECK(type_ops<field_list_test::Wide>.field_count == 32);
-  CHECK(type_ops<field_list_test::Wide>.fields[31].name == "m31");
-  CHECK(type_ops<field_list_test::Wide>.fields[31].offset == 124);
+  static_assert(type_ops<field_list_test::Wide>.field_count == 32);
+  static_assert(type_ops<field_list_test::Wide>.fields[31].name == "m31");
+  static_assert(type_ops<field_list_test::Wide>.fields[31].offset == 124);
 }
 
 TEST_CASE("registration is visible through the RegisteredStruct concept") {

@@ -16,44 +16,44 @@ struct NotRegistered {
 }  // namespace glsl_type_test
 
 TEST_CASE("scalars map to their GLSL names") {
-  CHECK(type_ops<float>.glsl_name == "float");
-  CHECK(type_ops<std::int32_t>.glsl_name == "int");
-  CHECK(type_ops<std::uint32_t>.glsl_name == "uint");
-  CHECK(type_ops<double>.glsl_name == "double");
-  CHECK(type_ops<std::uint64_t>.glsl_name == "uint64_t");
-  CHECK(type_ops<double>.component_size == 8);
-  CHECK(type_ops<float>.kind == TypeKind::scalar);
+  static_assert(type_ops<float>.glsl_name == "float");
+  static_assert(type_ops<std::int32_t>.glsl_name == "int");
+  static_assert(type_ops<std::uint32_t>.glsl_name == "uint");
+  static_assert(type_ops<double>.glsl_name == "double");
+  static_assert(type_ops<std::uint64_t>.glsl_name == "uint64_t");
+  static_assert(type_ops<double>.component_size == 8);
+  static_assert(type_ops<float>.kind == TypeKind::scalar);
 }
 
 TEST_CASE("glm vectors and matrices map to their GLSL names") {
-  CHECK(type_ops<glm::vec2>.glsl_name == "vec2");
-  CHECK(type_ops<glm::ivec3>.glsl_name == "ivec3");
-  CHECK(type_ops<glm::uvec4>.glsl_name == "uvec4");
-  CHECK(type_ops<glm::dvec3>.glsl_name == "dvec3");
-  CHECK(type_ops<glm::mat4>.glsl_name == "mat4");
-  CHECK(type_ops<glm::mat3x4>.glsl_name == "mat3x4");
-  CHECK(type_ops<glm::mat4x3>.glsl_name == "mat4x3");
-  CHECK(type_ops<glm::mat4x3>.columns == 4);
-  CHECK(type_ops<glm::mat4x3>.rows == 3);
-  CHECK(type_ops<glm::vec3>.kind == TypeKind::vector);
-  CHECK(type_ops<glm::mat4>.kind == TypeKind::matrix);
+  static_assert(type_ops<glm::vec2>.glsl_name == "vec2");
+  static_assert(type_ops<glm::ivec3>.glsl_name == "ivec3");
+  static_assert(type_ops<glm::uvec4>.glsl_name == "uvec4");
+  static_assert(type_ops<glm::dvec3>.glsl_name == "dvec3");
+  static_assert(type_ops<glm::mat4>.glsl_name == "mat4");
+  static_assert(type_ops<glm::mat3x4>.glsl_name == "mat3x4");
+  static_assert(type_ops<glm::mat4x3>.glsl_name == "mat4x3");
+  static_assert(type_ops<glm::mat4x3>.columns == 4);
+  static_assert(type_ops<glm::mat4x3>.rows == 3);
+  static_assert(type_ops<glm::vec3>.kind == TypeKind::vector);
+  static_assert(type_ops<glm::mat4>.kind == TypeKind::matrix);
 }
 
 TEST_CASE("arrays and addresses describe their element") {
-  CHECK(type_ops<float[3]>.kind == TypeKind::array);
-  CHECK(type_ops<float[3]>.count == 3);
-  CHECK(type_ops<float[3]>.element == &type_ops<float>);
-  CHECK(type_ops<glm::vec2[2][5]>.element->count == 5);
-  CHECK(type_ops<proceduray::DeviceAddress<float>>.kind == TypeKind::address);
+  static_assert(type_ops<float[3]>.kind == TypeKind::array);
+  static_assert(type_ops<float[3]>.count == 3);
+  static_assert(type_ops<float[3]>.element == &type_ops<float>);
+  static_assert(type_ops<glm::vec2[2][5]>.element->count == 5);
+  static_assert(type_ops<proceduray::DeviceAddress<float>>.kind == TypeKind::address);
   CHECK(type_ops<proceduray::DeviceAddress<float>>.pointee() == &type_ops<float>);
 }
 
 TEST_CASE("types without a GLSL equivalent are reported unsupported") {
-  CHECK(type_ops<bool>.kind == TypeKind::unsupported);
-  CHECK(type_ops<float*>.kind == TypeKind::unsupported);
-  CHECK(type_ops<std::int64_t>.kind == TypeKind::unsupported);
-  CHECK(type_ops<glm::dmat4>.kind == TypeKind::unsupported);
-  CHECK(type_ops<glsl_type_test::NotRegistered>.kind == TypeKind::unregistered_struct);
+  static_assert(type_ops<bool>.kind == TypeKind::unsupported);
+  static_assert(type_ops<float*>.kind == TypeKind::unsupported);
+  static_assert(type_ops<std::int64_t>.kind == TypeKind::unsupported);
+  static_assert(type_ops<glm::dmat4>.kind == TypeKind::unsupported);
+  static_assert(type_ops<glsl_type_test::NotRegistered>.kind == TypeKind::unregistered_struct);
   CHECK_FALSE(proceduray::GlslMember<bool>);
   CHECK_FALSE(proceduray::GlslMember<std::string>);
   CHECK_FALSE(proceduray::GlslMember<bool[2]>);

@@ -16,6 +16,6 @@ using Interface = proceduray::ShaderInterface<proceduray::Payload<Probe>, proced
 TEST_CASE("the umbrella header declares a whole interface") {
   const std::string glsl = proceduray::glsl_declarations(umbrella_test::Interface::types);
   CHECK(glsl.find("struct Probe {\n    vec3 normal;\n    float t;\n};\n") != std::string::npos);
-  CHECK(umbrella_test::Interface::max_attribute_size == 16);
+  static_assert(umbrella_test::Interface::max_attribute_size == 16);
   CHECK(proceduray::matches_host(proceduray::type_ops<umbrella_test::Probe>, proceduray::LayoutRule::std430));
 }

@@ -1,4 +1,4 @@
-// vk/renderer_readback.hpp: the frame loop reads frames back as render() does, with the uniforms
+// vk/renderer.hpp (reading frames back, renderer-inl.hpp): the frame loop reads frames back as render() does, with the uniforms
 // each was submitted with, allocates nothing in steady state, and refuses stale or unread frames.
 #include "frame_pixels.hpp"
 #include "renderer_scene.hpp"
