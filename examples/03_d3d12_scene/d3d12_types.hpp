@@ -267,7 +267,7 @@ inline pr::Camera isolated_camera(PrimitiveKind k, std::uint32_t width, std::uin
 /// The knobs primitive kind k accepts (analytic kinds: no methods), with its defaults: the
 /// library's per kind, except where this primitive's measured front says otherwise (the twisted
 /// torus: its Lipschitz bound 5.2 is loose, and over-relaxed steps of w 1.5 at a quarter
-/// footprint beat plain ones at half a footprint in cost and every error; README, "Defaults").
+/// footprint beat plain ones at half a footprint in cost and every error; docs/accuracy.md, "Defaults from the front").
 inline const pr::MarchCapabilities& capabilities(PrimitiveKind k) {
   static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
   static const pr::MarchCapabilities torus = [] {

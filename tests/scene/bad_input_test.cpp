@@ -305,7 +305,7 @@ TEST_CASE("bad input: recursion depth 0") {
 
 TEST_CASE("bad input: a ninth layer") {
   TestScene s;
-  for (int i = 0; i < 8; ++i) s.add_layer(std::to_string(i).insert(0, 1, 'l'));
+  for (int i = 0; i < 8; ++i) s.add_layer("l" + std::to_string(i));
   CHECK_THROWS_WITH_AS(s.add_layer("l8"), Contains("would be the ninth; an instance mask has 8 bits"), SceneError);
 }
 

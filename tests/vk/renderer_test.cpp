@@ -331,7 +331,7 @@ TEST_CASE("renderer with unbound geometry fails at build naming the missing pair
 }
 
 TEST_CASE("renderer a ray without a miss shader leaves a missed payload as the raygen set it") {
-  // Defined behaviour (README, "Errors you may see"): the miss record is null, so a miss runs no
+  // Defined behaviour (docs/guide/errors.md): the miss record is null, so a miss runs no
   // shader; the raygen must initialise the payload before traceRayEXT.
   TestContext t;
   namespace rs = renderer_scene;

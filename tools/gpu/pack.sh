@@ -7,9 +7,9 @@
 #   tools/gpu/pack.sh proceduray_vk_tests   # only these targets
 #   BUILD=build/fast tools/gpu/pack.sh      # from an existing Release build folder instead
 #
-# glslang, CLI11 and stb are linked in (Debian ships glslang as static libraries); the Vulkan
-# loader, the GL vendor-neutral libraries the NVIDIA ICD needs and tinyobjloader (shared only in
-# Debian) come as .deb files that run.sh unpacks there. Ubuntu 24.04's glibc is newer than Debian 12's, so these binaries run unchanged.
+# glslang and CLI11 are linked in (Debian ships glslang as static libraries); the Vulkan loader,
+# the GL vendor-neutral libraries the NVIDIA ICD needs, tinyobjloader and stb (the targets link
+# Debian's shared libraries) come as .deb files that run.sh unpacks there. Ubuntu 24.04's glibc is newer than Debian 12's, so these binaries run unchanged.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 targets=("$@")
@@ -34,13 +34,13 @@ done
 cp -r "$build/examples/02_paper_scene_glsl" gpu/
 
 mkdir -p .gl
-if ! ls .gl/libvulkan1_*.deb .gl/libtinyobjloader2rc10_*.deb > /dev/null 2>&1; then
+if ! ls .gl/libvulkan1_*.deb .gl/libtinyobjloader2rc10_*.deb .gl/libstb0_*.deb > /dev/null 2>&1; then
   lists=$(mktemp -d)
   o="-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=$lists"
   mkdir -p "$lists/partial"
   apt-get $o update > /dev/null
   (cd .gl && apt-get $o download libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 \
-                                 vulkan-validationlayers libtinyobjloader2rc10)
+                                 vulkan-validationlayers libtinyobjloader2rc10 libstb0)
 fi
 du -sh gpu .gl
 echo "pack.sh: carry [\".gl\", \"gpu\"] and run: bash tools/gpu/run.sh (logs in \$OUT or gpu-logs/)"

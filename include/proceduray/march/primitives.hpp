@@ -28,7 +28,7 @@ PROCEDURAY_DECL const MarchCapabilities& sdf_capabilities();
 
 /// Metaballs: segment tracing by default (on the measured front: at half a footprint 22.5
 /// evaluations per ray where the sample's fixed 128 steps take 59, with a third of their depth
-/// error; README, "Defaults from the front"), analytic normals. Fixed steps keep 128.
+/// error; docs/accuracy.md, "Defaults from the front"), analytic normals. Fixed steps keep 128.
 PROCEDURAY_DECL const MarchCapabilities& metaball_capabilities();
 
 /// Escape-time fractals with `iterations` by default (at most 16): sphere tracing of the
