@@ -142,26 +142,60 @@ struct Key {
 };
 
 /// One random scene: random rays, geometries (some sharing BLASes), instances, bindings,
-/// data sizes and insertion order; returns the number of checked (ray, geometry, instance).
-std::uint64_t check_random_scene(std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  auto pick = [&](std::uint32_t n) { return static_cast<std::uint32_t>(rng() % n); };
-  TestScene s;
-  const std::uint32_t ray_count = 1 + pick(4);
-  std::vector<RayId<TestPayload>> rays;
-  for (std::uint32_t r = 0; r < ray_count; ++r) rays.push_back(s.add_ray<TestPayload>("ray" + std::to_string(r), {.miss = "miss" + std::to_string(pick(2))}));
-  std::array<std::vector<HitGroupId>, 2> groups;
+/// data sizes and insertion order, with the oracle of which entry each record must hold.
+class RandomScene {
+ public:
+  explicit RandomScene(std::uint32_t seed) : m_seed(seed), m_rng(seed) {
+    add_entities();
+    plan_bindings();
+    add_bindings();
+  }
+
+  /// Checks every (ray, geometry, instance) against the oracle; returns how many were checked.
+  std::uint64_t check() const;
+
+ private:
+  struct Planned { Key key; bool is_default; std::uint32_t group; std::uint32_t size_class; std::uint32_t tag; };
+
+  std::uint32_t pick(std::uint32_t n) { return static_cast<std::uint32_t>(m_rng() % n); }
+  void add_entities();
+  void plan_bindings();
+  void plan(Key key, bool is_default, std::uint32_t kind);
+  void add_bindings();
+  void add_binding(const Planned& p);
+  std::uint32_t expected_tag(std::uint32_t r, GeometryId g, std::uint32_t i, std::uint32_t kind) const;
+
+  std::uint32_t m_seed;
+  std::mt19937 m_rng;
+  TestScene m_scene;
+  std::uint32_t m_ray_count = 0;
+  std::vector<RayId<TestPayload>> m_rays;
+  std::array<std::vector<HitGroupId>, 2> m_groups;
+  LocalSignatureId<Args4> m_sig4;
+  LocalSignatureId<Args16> m_sig16;
+  LocalSignatureId<Args40> m_sig40;
+  std::vector<GeometryId> m_geometries;
+  std::vector<Planned> m_plan;
+  std::uint32_t m_tag = 1;
+  std::map<Key, std::uint32_t> m_wide_tag, m_specific_tag;
+  std::array<std::vector<std::uint32_t>, 2> m_default_tag;
+  std::map<std::uint32_t, std::uint32_t> m_entry_of_tag;
+};
+
+void RandomScene::add_entities() {
+  TestScene& s = m_scene;
+  m_ray_count = 1 + pick(4);
+  for (std::uint32_t r = 0; r < m_ray_count; ++r) m_rays.push_back(s.add_ray<TestPayload>("ray" + std::to_string(r), {.miss = "miss" + std::to_string(pick(2))}));
   for (std::uint32_t h = 0; h < 3; ++h) {
-    groups[0].push_back(s.add_hit_group("tri" + std::to_string(h), {.closest_hit = "chit" + std::to_string(h)}));
-    groups[1].push_back(s.add_hit_group<Args16>("proc" + std::to_string(h), {.kind = HitGroupKind::procedural,
+    m_groups[0].push_back(s.add_hit_group("tri" + std::to_string(h), {.closest_hit = "chit" + std::to_string(h)}));
+    m_groups[1].push_back(s.add_hit_group<Args16>("proc" + std::to_string(h), {.kind = HitGroupKind::procedural,
         .closest_hit = "chit" + std::to_string(h), .intersection = "isect" + std::to_string(h)}));
   }
-  const auto sig4 = s.add_local_signature<Args4>("a4");
-  const auto sig16 = s.add_local_signature<Args16>("a16");
-  const auto sig40 = s.add_local_signature<Args40>("a40");
+  m_sig4 = s.add_local_signature<Args4>("a4");
+  m_sig16 = s.add_local_signature<Args16>("a16");
+  m_sig40 = s.add_local_signature<Args40>("a40");
   const std::uint32_t geometry_count = 1 + pick(6);
   const std::array<GeometryKind, 2> shared_kind{GeometryKind(pick(2)), GeometryKind(pick(2))};
-  std::vector<GeometryId> geometries;
   TriangleMesh tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}};
   for (std::uint32_t g = 0; g < geometry_count; ++g) {
     const std::uint32_t blas = pick(3);  // 0: own, 1/2: shared "S1"/"S2"
@@ -170,87 +204,96 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
     d.instances = translations(pick(5), float(g));
     if (blas != 0) {
       d.blas = "S" + std::to_string(blas);
-      const std::string& name = d.blas;
       // Instances belong to the BLAS: the first member declares them, the others inherit.
       for (const Blas& b : s.blases()) {
-        if (b.name == name) d.instances.clear();
+        if (b.name == d.blas) d.instances.clear();
       }
     }
-    geometries.push_back(s.add_geometry("geometry" + std::to_string(g), std::move(d)));
+    m_geometries.push_back(s.add_geometry("geometry" + std::to_string(g), std::move(d)));
   }
+}
 
-  // Plan the bindings, then add them in a random order.
-  struct Planned { Key key; bool is_default; std::uint32_t group; std::uint32_t size_class; std::uint32_t tag; };
-  std::vector<Planned> plan;
-  std::uint32_t tag = 1;
-  // compile() derives each shader's record block, so one shader takes one record type: the
-  // entries of hit groups tri<h> and proc<h> (shaders chit<h>, isect<h>) carry no data or, for
-  // h = 0, 1, 2, Args4, Args16 or Args40. Record sizes still vary within a scene.
-  auto binding = [&](Key key, bool is_default, std::uint32_t kind) {
-    const std::uint32_t h = pick(3);
-    const std::uint32_t size_class = pick(4) == 0 ? 0 : h + 1;
-    plan.push_back({key, is_default, groups[kind][h].index(), size_class, tag++});
-  };
-  std::array<std::vector<bool>, 2> has_default{std::vector<bool>(ray_count), std::vector<bool>(ray_count)};
+// compile() derives each shader's record block, so one shader takes one record type: the
+// entries of hit groups tri<h> and proc<h> (shaders chit<h>, isect<h>) carry no data or, for
+// h = 0, 1, 2, Args4, Args16 or Args40. Record sizes still vary within a scene.
+void RandomScene::plan(Key key, bool is_default, std::uint32_t kind) {
+  const std::uint32_t h = pick(3);
+  const std::uint32_t size_class = pick(4) == 0 ? 0 : h + 1;
+  m_plan.push_back({key, is_default, m_groups[kind][h].index(), size_class, m_tag++});
+}
+
+/// Plans the bindings, then shuffles them so they are added in a random order.
+void RandomScene::plan_bindings() {
+  std::array<std::vector<bool>, 2> has_default{std::vector<bool>(m_ray_count), std::vector<bool>(m_ray_count)};
   for (std::uint32_t k = 0; k < 2; ++k) {
-    for (std::uint32_t r = 0; r < ray_count; ++r) {
+    for (std::uint32_t r = 0; r < m_ray_count; ++r) {
       if (pick(3) == 0) {
         has_default[k][r] = true;
-        binding({r, no_index, no_index}, true, k);
+        plan({r, no_index, no_index}, true, k);
       }
     }
   }
-  for (GeometryId g : geometries) {
-    const auto kind = static_cast<std::uint32_t>(s.geometry(g).desc.kind);
-    const auto instances = static_cast<std::uint32_t>(s.blas_of(g).instances.size());
-    for (std::uint32_t r = 0; r < ray_count; ++r) {
+  for (GeometryId g : m_geometries) {
+    const auto kind = static_cast<std::uint32_t>(m_scene.geometry(g).desc.kind);
+    const auto instances = static_cast<std::uint32_t>(m_scene.blas_of(g).instances.size());
+    for (std::uint32_t r = 0; r < m_ray_count; ++r) {
       const std::uint32_t mode = pick(4);
       const bool wide = mode == 0 || mode == 1 || (mode == 3 && !has_default[kind][r]);
-      if (wide) binding({r, g.index(), no_index}, false, kind);
+      if (wide) plan({r, g.index(), no_index}, false, kind);
       for (std::uint32_t i = 0; i < instances; ++i) {
-        if (mode == 2 || (mode == 1 && pick(2) == 0)) {
-          binding({r, g.index(), i}, false, kind);
-        }
+        if (mode == 2 || (mode == 1 && pick(2) == 0)) plan({r, g.index(), i}, false, kind);
       }
     }
   }
-  std::shuffle(plan.begin(), plan.end(), rng);
+  std::shuffle(m_plan.begin(), m_plan.end(), m_rng);
+}
 
-  TestScene& t = s;  // the entries, added after every entity
-  t.add_raygen("rgen");
-  if (pick(2)) t.add_miss(rays[0], sig4, Args4{0xABCDu});
-  std::map<Key, std::uint32_t> wide_tag, specific_tag;
-  std::array<std::vector<std::uint32_t>, 2> default_tag{std::vector<std::uint32_t>(ray_count, 0),
-                                                         std::vector<std::uint32_t>(ray_count, 0)};
-  std::map<std::uint32_t, std::uint32_t> entry_of_tag;
-  for (const Planned& p : plan) {
-    const HitGroupId group(p.group);
-    const RayId<TestPayload> ray = rays[p.key.ray];
-    const GeometryId geometry(p.key.geometry);
-    const std::uint32_t instance = p.key.instance == no_index ? all_instances : p.key.instance;
-    EntryId id;
-    if (p.is_default) {
-      switch (p.size_class) {
-        case 0: id = t.set_default_hit(ray, group); break;
-        case 1: id = t.set_default_hit(ray, group, sig4, Args4{p.tag}); break;
-        case 2: id = t.set_default_hit(ray, group, sig16, Args16{p.tag, {}}); break;
-        default: id = t.set_default_hit(ray, group, sig40, Args40{p.tag, {}}); break;
-      }
-      default_tag[static_cast<std::uint32_t>(s.hit_group(group).desc.kind)][p.key.ray] = p.tag;
-    } else {
-      switch (p.size_class) {
-        case 0: id = t.add_hit(ray, group, geometry, instance); break;
-        case 1: id = t.add_hit(ray, group, sig4, Args4{p.tag}, geometry, instance); break;
-        case 2: id = t.add_hit(ray, group, sig16, Args16{p.tag, {}}, geometry, instance); break;
-        default: id = t.add_hit(ray, group, sig40, Args40{p.tag, {}}, geometry, instance); break;
-      }
-      (p.key.instance == no_index ? wide_tag : specific_tag)[p.key] = p.tag;
+/// The entries, added after every entity.
+void RandomScene::add_bindings() {
+  m_scene.add_raygen("rgen");
+  if (pick(2)) m_scene.add_miss(m_rays[0], m_sig4, Args4{0xABCDu});
+  m_default_tag = {std::vector<std::uint32_t>(m_ray_count, 0), std::vector<std::uint32_t>(m_ray_count, 0)};
+  for (const Planned& p : m_plan) add_binding(p);
+}
+
+void RandomScene::add_binding(const Planned& p) {
+  TestScene& t = m_scene;
+  const HitGroupId group(p.group);
+  const RayId<TestPayload> ray = m_rays[p.key.ray];
+  const GeometryId geometry(p.key.geometry);
+  const std::uint32_t instance = p.key.instance == no_index ? all_instances : p.key.instance;
+  EntryId id;
+  if (p.is_default) {
+    switch (p.size_class) {
+      case 0: id = t.set_default_hit(ray, group); break;
+      case 1: id = t.set_default_hit(ray, group, m_sig4, Args4{p.tag}); break;
+      case 2: id = t.set_default_hit(ray, group, m_sig16, Args16{p.tag, {}}); break;
+      default: id = t.set_default_hit(ray, group, m_sig40, Args40{p.tag, {}}); break;
     }
-    entry_of_tag[p.tag] = id.index();
+    m_default_tag[static_cast<std::uint32_t>(t.hit_group(group).desc.kind)][p.key.ray] = p.tag;
+  } else {
+    switch (p.size_class) {
+      case 0: id = t.add_hit(ray, group, geometry, instance); break;
+      case 1: id = t.add_hit(ray, group, m_sig4, Args4{p.tag}, geometry, instance); break;
+      case 2: id = t.add_hit(ray, group, m_sig16, Args16{p.tag, {}}, geometry, instance); break;
+      default: id = t.add_hit(ray, group, m_sig40, Args40{p.tag, {}}, geometry, instance); break;
+    }
+    (p.key.instance == no_index ? m_wide_tag : m_specific_tag)[p.key] = p.tag;
   }
+  m_entry_of_tag[p.tag] = id.index();
+}
 
+/// The oracle: instance-specific, else geometry-wide, else the ray's default for the kind.
+std::uint32_t RandomScene::expected_tag(std::uint32_t r, GeometryId g, std::uint32_t i, std::uint32_t kind) const {
+  if (auto it = m_specific_tag.find({r, g.index(), i}); it != m_specific_tag.end()) return it->second;
+  if (auto w = m_wide_tag.find({r, g.index(), no_index}); w != m_wide_tag.end()) return w->second;
+  return m_default_tag[kind][r];
+}
+
+std::uint64_t RandomScene::check() const {
+  const TestScene& s = m_scene;
   const auto all = all_limits();
-  const auto limits = all[seed % all.size()];
+  const auto limits = all[m_seed % all.size()];
   const Plan sbt = compile(s);
   const SbtLayout layout = sbt.layout(limits);
   const auto hit = sbt.records(SbtRegionKind::hit);
@@ -258,37 +301,31 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   sbt.write(layout, buffer, fake_handles(sbt, layout));
   std::vector<bool> reached(hit.size(), false);
   std::uint64_t checked = 0;
-  for (GeometryId g : geometries) {
+  for (GeometryId g : m_geometries) {
     const Blas& blas = s.blas_of(g);
-    const auto kind = static_cast<std::uint32_t>(blas.kind);
     for (std::uint32_t i = 0; i < blas.instances.size(); ++i) {
-      for (std::uint32_t r = 0; r < ray_count; ++r) {
-        // The oracle: instance-specific, else geometry-wide, else the ray's default for the kind.
-        std::uint32_t expected_tag = 0;
-        if (auto it = specific_tag.find({r, g.index(), i}); it != specific_tag.end()) expected_tag = it->second;
-        else if (auto w = wide_tag.find({r, g.index(), no_index}); w != wide_tag.end()) expected_tag = w->second;
-        else expected_tag = default_tag[kind][r];
-        REQUIRE(expected_tag != 0);
-        const std::uint32_t expected_entry = entry_of_tag.at(expected_tag);
+      for (std::uint32_t r = 0; r < m_ray_count; ++r) {
+        const std::uint32_t tag = expected_tag(r, g, i, static_cast<std::uint32_t>(blas.kind));
+        REQUIRE(tag != 0);
+        const Entry& expected = s.entries().all()[m_entry_of_tag.at(tag)];
         // The Vulkan rule, computed from what the TLAS instance and BLAS carry.
         const TlasInstance& inst = sbt.instances()[sbt.tlas_index(g, i)];
         CHECK(inst.blas == s.geometry(g).blas);
         CHECK(inst.instance == i);
-        const std::uint32_t record = inst.sbt_offset + s.geometry(g).geometry_index * ray_count + r;
+        const std::uint32_t record = inst.sbt_offset + s.geometry(g).geometry_index * m_ray_count + r;
         REQUIRE(record < hit.size());
-        CHECK(hit[record].entry == expected_entry);
-        const HitResolution res = sbt.resolve(rays[r], g, i);
+        CHECK(hit[record].entry == m_entry_of_tag.at(tag));
+        const HitResolution res = sbt.resolve(m_rays[r], g, i);
         CHECK(res.record == record);
-        CHECK(*res.entry == t.entries().all()[expected_entry]);
-        CHECK(sbt.pipeline().groups[hit[record].group].hit_group.index() == t.entries().all()[expected_entry].hit_group);
+        CHECK(*res.entry == expected);
+        CHECK(sbt.pipeline().groups[hit[record].group].hit_group.index() == expected.hit_group);
         // The bytes the GPU reads at that record: the handle of the bound group, then its data.
         const std::uint64_t at = layout.record_offset(SbtRegionKind::hit, record);
         CHECK(buffer[at] == std::byte(hit[record].group + 1));
-        const auto data = t.entries().data(t.entries().all()[expected_entry]);
-        if (!data.empty()) {
+        if (!s.entries().data(expected).empty()) {
           std::uint32_t written = 0;
           std::memcpy(&written, buffer.data() + at + limits.sbt.handle_size, 4);
-          CHECK(written == expected_tag);
+          CHECK(written == tag);
         }
         reached[record] = true;
         ++checked;
@@ -298,7 +335,7 @@ std::uint64_t check_random_scene(std::uint32_t seed) {
   // No record is unreachable: the table holds no more than the scene needs.
   CHECK(std::count(reached.begin(), reached.end(), false) == 0);
   check_layout_invariants(layout, {{{1, sbt.pipeline().max_root_arguments_size[0]},
-                                    {ray_count, sbt.pipeline().max_root_arguments_size[1]},
+                                    {m_ray_count, sbt.pipeline().max_root_arguments_size[1]},
                                     {static_cast<std::uint32_t>(hit.size()), sbt.pipeline().max_root_arguments_size[2]},
                                     {}}});
   return checked;
@@ -310,7 +347,7 @@ TEST_CASE("compile 1000 random scenes resolve every ray geometry and instance to
   std::uint64_t checked = 0;
   for (std::uint32_t seed = 0; seed < 1000; ++seed) {
     INFO("seed " << seed);
-    checked += check_random_scene(seed);
+    checked += RandomScene(seed).check();
   }
   CHECK(checked > 10000);
 }

@@ -137,9 +137,9 @@ TEST_CASE("metaball marches agree on coverage with a footprint threshold") {
   for (int y = 0; y < 40; ++y) {
     for (int x = 0; x < 40; ++x) {
       const glm::vec3 o(-1.0f + 0.05f * x, -1.0f + 0.05f * y, -4.0f);
-      float s;
+      float s = 0.0f;
       glm::vec3 n;
-      std::uint32_t steps;
+      std::uint32_t steps = 0;
       const bool a = metaballs_march(o, {0.0f, 0.0f, 1.0f}, 3.0f, 5.0f, 0.6f, 0.25f, 0.0f, metaball_method_fixed, 128u,
                                      m, s, n, steps);
       const bool b = metaballs_march(o, {0.0f, 0.0f, 1.0f}, 3.0f, 5.0f, 0.6f, 0.25f, 0.0f, metaball_method_lipschitz,

@@ -89,7 +89,7 @@ Ray cast(const Neck& n, double radius, double offset) {
     ray.chord = exit.t - entry.t;
   }
   glm::vec3 normal;
-  std::uint32_t steps;
+  std::uint32_t steps = 0;
   ray.fixed = blob::metaballs_march(o, u, 0.0f, ray_length, r, threshold, 0.0f, blob::metaball_method_fixed,
                                     fixed_steps, settings, ray.fixed_t, normal, steps);
   ray.lipschitz = blob::metaballs_march(o, u, 0.0f, ray_length, r, threshold, 0.0f, blob::metaball_method_lipschitz,

@@ -290,90 +290,106 @@ double leak_gap(const Sample& s, glm::dvec3 l, Method method) {
   return last_leak;
 }
 
+/// Acne of every method for sample s, lit by a random light on the normal's side.
+void measure_acne(Measurement& m, const Object& obj, int pk, int k, const Sample& s, Random& rng) {
+  // Any light on the normal's side; grazing ones are the hard cases.
+  glm::dvec3 l;
+  if (!light_direction(rng, s, 1.0e-3, l)) return;
+  const glm::vec3 light = to_float(s.p_true + static_cast<double>(light_distance) * l);
+  glm::vec3 dir;
+  float dist;
+  towards(s.p, light, dir, dist);
+  for (int mk = 0; mk < method_count; ++mk) {
+    const ShadowStart st = start(static_cast<Method>(mk), s.p, s.n, s.hit);
+    Cell& c = m.cell[pk][k][mk];
+    FloatHit ignored;
+    ++c.rays;
+    if (intersect(obj, st.origin, dir, st.t_min, dist, ignored)) ++c.acne;
+    const acc::Result in = truth(obj, glm::dvec3(st.origin), glm::dvec3(dir), 0.0, 1.0e-30);
+    if (in.starts_inside) ++c.inside;
+  }
+}
+
+/// Leaks of every method for sample s: the light behind the occluder, steep enough (cos >= 0.5)
+/// that the radius-4 occluder covers the way to it at every gap up to 2^-1. Returns whether
+/// the marched primitive's scene - ulps gap was measured.
+bool measure_leaks(Measurement& m, int pk, int k, const Sample& s, double bound, Random& rng) {
+  glm::dvec3 l;
+  if (!light_direction(rng, s, 0.5, l)) return false;
+  std::array<double, method_count> gaps{};
+  for (int mk = 0; mk < method_count; ++mk) {
+    gaps[mk] = leak_gap(s, l, static_cast<Method>(mk));
+    Cell& c = m.cell[pk][k][mk];
+    ++c.leak_samples;
+    c.leak_gap = std::max(c.leak_gap, gaps[mk]);
+    c.leak_over_bound = std::max(c.leak_over_bound, gaps[mk] / bound);
+  }
+  if (pk != marched) return false;
+  // The scene's origin is offset_ray_origin's from p + 2 thr n: the same ulps on a point
+  // 2 thr higher, give or take the rounding of p + 2 thr n and the float grid of the
+  // occluder centres behind both measured gaps (sqrt(3) / 2 ulps of the largest
+  // coordinate each), and n's angle to n* (which only lowers it).
+  const double thr = static_cast<double>(s.hit.threshold);
+  const double extra = gaps[scene] - gaps[ulps];
+  const double rounding = 3.0 * std::sqrt(3.0) * 0.5 * ulp(static_cast<float>(max_abs(s.p)));
+  m.extra_excess[k] = std::max(m.extra_excess[k], (extra - 2.0 * thr - rounding) / thr);
+  m.extra_mean[k] += extra / thr;
+  return true;
+}
+
+/// One primitive at one distance: hit errors, bounds, acne and leaks of every method.
+void measure_cell(Measurement& m, int pk, int k, int& extra_count) {
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.8, 0.5, 0.33));  // every coordinate far from 0
+  const Object obj{static_cast<Primitive>(pk), to_float(distances[k] * axis)};
+  const std::vector<Sample> hits = camera_hits(obj, acne_samples, 1000u + 10u * k + pk);
+  m.samples[pk][k] = static_cast<int>(hits.size());
+  Random rng(7000u + 10u * k + pk);
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const Sample& s = hits[i];
+    const double hit_error = glm::length(glm::dvec3(s.p) - s.p_true);
+    m.max_hit_error[pk][k] = std::max(m.max_hit_error[pk][k], hit_error);
+    // offset_ray_origin leaks up to its displacement plus the float point's own error
+    // (for a march that includes the up to 1/32 threshold it reports outside the crossing).
+    const double bound = hit_error + ulps_offset_bound(s.p, start(ulps, s.p, s.n, s.hit).origin);
+    m.ulp_bound[pk][k] = std::max(m.ulp_bound[pk][k], bound);
+    if (pk == marched) m.max_threshold[k] = std::max(m.max_threshold[k], static_cast<double>(s.hit.threshold));
+    measure_acne(m, obj, pk, k, s, rng);
+    // Leaks, on the first samples only.
+    if (static_cast<int>(i) < leak_samples && measure_leaks(m, pk, k, s, bound, rng)) ++extra_count;
+  }
+}
+
+/// The table behind the numbers, with PROCEDURAY_SHADOW_TABLE set.
+void print_table(const Measurement& m) {
+  std::printf("%-15s %-8s %-18s %10s %10s %7s %11s\n", "primitive", "distance", "method", "acne rate", "leak gap",
+              "inside", "leak/bound");
+  for (int pk = 0; pk < primitive_count; ++pk) {
+    for (int k = 0; k < distance_count; ++k) {
+      for (int mk = 0; mk < method_count; ++mk) {
+        const Cell& c = m.cell[pk][k][mk];
+        std::printf("%-15s %-8.0e %-18s %10.5f %10.3e %7d %11.3f\n", primitive_names[pk], distances[k],
+                    method_names[mk], c.rays > 0 ? static_cast<double>(c.acne) / c.rays : 0.0, c.leak_gap,
+                    c.inside, c.leak_over_bound);
+      }
+      std::printf("  %d hits (%d lit, %d leak sweeps), max |p - p*| %.3e, ulps bound %.3e\n", m.samples[pk][k],
+                  m.cell[pk][k][0].rays, m.cell[pk][k][0].leak_samples, m.max_hit_error[pk][k], m.ulp_bound[pk][k]);
+      if (pk == marched) {
+        std::printf("  max threshold %.3e, scene - ulps leak: mean %.3f thr, max excess over 2 thr + rounding %.4f thr\n",
+                    m.max_threshold[k], m.extra_mean[k], m.extra_excess[k]);
+      }
+    }
+  }
+}
+
 const Measurement& measure() {
   static const Measurement result = [] {
     Measurement m{};
-    const glm::dvec3 axis = glm::normalize(glm::dvec3(0.8, 0.5, 0.33));  // every coordinate far from 0
     for (int k = 0; k < distance_count; ++k) {
       int extra_count = 0;
-      for (int pk = 0; pk < primitive_count; ++pk) {
-        const Object obj{static_cast<Primitive>(pk), to_float(distances[k] * axis)};
-        const std::vector<Sample> hits = camera_hits(obj, acne_samples, 1000u + 10u * k + pk);
-        m.samples[pk][k] = static_cast<int>(hits.size());
-        Random rng(7000u + 10u * k + pk);
-        for (std::size_t i = 0; i < hits.size(); ++i) {
-          const Sample& s = hits[i];
-          const double hit_error = glm::length(glm::dvec3(s.p) - s.p_true);
-          m.max_hit_error[pk][k] = std::max(m.max_hit_error[pk][k], hit_error);
-          // offset_ray_origin leaks up to its displacement plus the float point's own error
-          // (for a march that includes the up to 1/32 threshold it reports outside the crossing).
-          const double bound = hit_error + ulps_offset_bound(s.p, start(ulps, s.p, s.n, s.hit).origin);
-          m.ulp_bound[pk][k] = std::max(m.ulp_bound[pk][k], bound);
-          if (pk == marched) m.max_threshold[k] = std::max(m.max_threshold[k], static_cast<double>(s.hit.threshold));
-          // Acne: any light on the normal's side; grazing ones are the hard cases.
-          glm::dvec3 l;
-          if (light_direction(rng, s, 1.0e-3, l)) {
-            const glm::vec3 light = to_float(s.p_true + static_cast<double>(light_distance) * l);
-            glm::vec3 dir;
-            float dist;
-            towards(s.p, light, dir, dist);
-            for (int mk = 0; mk < method_count; ++mk) {
-              const ShadowStart st = start(static_cast<Method>(mk), s.p, s.n, s.hit);
-              Cell& c = m.cell[pk][k][mk];
-              FloatHit ignored;
-              ++c.rays;
-              if (intersect(obj, st.origin, dir, st.t_min, dist, ignored)) ++c.acne;
-              const acc::Result in = truth(obj, glm::dvec3(st.origin), glm::dvec3(dir), 0.0, 1.0e-30);
-              if (in.starts_inside) ++c.inside;
-            }
-          }
-          // Leaks, on the first samples: the light behind the occluder, steep enough (cos >= 0.5)
-          // that the radius-4 occluder covers the way to it at every gap up to 2^-1.
-          if (static_cast<int>(i) >= leak_samples || !light_direction(rng, s, 0.5, l)) continue;
-          std::array<double, method_count> gaps{};
-          for (int mk = 0; mk < method_count; ++mk) {
-            gaps[mk] = leak_gap(s, l, static_cast<Method>(mk));
-            Cell& c = m.cell[pk][k][mk];
-            ++c.leak_samples;
-            c.leak_gap = std::max(c.leak_gap, gaps[mk]);
-            c.leak_over_bound = std::max(c.leak_over_bound, gaps[mk] / bound);
-          }
-          if (pk == marched) {
-            // The scene's origin is offset_ray_origin's from p + 2 thr n: the same ulps on a point
-            // 2 thr higher, give or take the rounding of p + 2 thr n and the float grid of the
-            // occluder centres behind both measured gaps (sqrt(3) / 2 ulps of the largest
-            // coordinate each), and n's angle to n* (which only lowers it).
-            const double thr = static_cast<double>(s.hit.threshold);
-            const double extra = gaps[scene] - gaps[ulps];
-            const double rounding = 3.0 * std::sqrt(3.0) * 0.5 * ulp(static_cast<float>(max_abs(s.p)));
-            m.extra_excess[k] = std::max(m.extra_excess[k], (extra - 2.0 * thr - rounding) / thr);
-            m.extra_mean[k] += extra / thr;
-            ++extra_count;
-          }
-        }
-      }
+      for (int pk = 0; pk < primitive_count; ++pk) measure_cell(m, pk, k, extra_count);
       m.extra_mean[k] /= std::max(extra_count, 1);
     }
-    if (std::getenv("PROCEDURAY_SHADOW_TABLE") != nullptr) {
-      std::printf("%-15s %-8s %-18s %10s %10s %7s %11s\n", "primitive", "distance", "method", "acne rate", "leak gap",
-                  "inside", "leak/bound");
-      for (int pk = 0; pk < primitive_count; ++pk) {
-        for (int k = 0; k < distance_count; ++k) {
-          for (int mk = 0; mk < method_count; ++mk) {
-            const Cell& c = m.cell[pk][k][mk];
-            std::printf("%-15s %-8.0e %-18s %10.5f %10.3e %7d %11.3f\n", primitive_names[pk], distances[k],
-                        method_names[mk], c.rays > 0 ? static_cast<double>(c.acne) / c.rays : 0.0, c.leak_gap,
-                        c.inside, c.leak_over_bound);
-          }
-          std::printf("  %d hits (%d lit, %d leak sweeps), max |p - p*| %.3e, ulps bound %.3e\n", m.samples[pk][k],
-                      m.cell[pk][k][0].rays, m.cell[pk][k][0].leak_samples, m.max_hit_error[pk][k], m.ulp_bound[pk][k]);
-          if (pk == marched) {
-            std::printf("  max threshold %.3e, scene - ulps leak: mean %.3f thr, max excess over 2 thr + rounding %.4f thr\n",
-                        m.max_threshold[k], m.extra_mean[k], m.extra_excess[k]);
-          }
-        }
-      }
-    }
+    if (std::getenv("PROCEDURAY_SHADOW_TABLE") != nullptr) print_table(m);
     return m;
   }();
   return result;

@@ -39,8 +39,8 @@ MarchSettings settings(float w = 1.0f, std::uint32_t steps = 256) { return March
 TEST_CASE("sphere_trace hits the unit sphere within epsilon") {
   shape = 0;
   for (float w : {1.0f, 1.2f, 1.6f, 1.9f}) {
-    float s;
-    std::uint32_t steps;
+    float s = 0.0f;
+    std::uint32_t steps = 0;
     REQUIRE(shape_trace(glm::vec3(0.0f, 0.3f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(w), {}, s, steps));
     CAPTURE(w);
     CHECK(s == doctest::Approx(5.0f - std::sqrt(1.0f - 0.09f)).epsilon(1e-4));
@@ -51,16 +51,16 @@ TEST_CASE("sphere_trace hits the unit sphere within epsilon") {
 
 TEST_CASE("sphere_trace misses when the ray misses or the range ends") {
   shape = 0;
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.5f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), {}, s, steps));
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 3.5f, settings(), {}, s, steps));
 }
 
 TEST_CASE("sphere_trace reports a miss when steps run out") {
   shape = 0;
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   // A grazing ray needs many steps near the silhouette: with 4 it must not claim a hit.
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.0f + 1e-4f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.0f, 4), {}, s, steps));
   CHECK(steps == 4u);
@@ -73,7 +73,7 @@ TEST_CASE("sphere_trace footprint threshold grows with distance") {
   m.footprint = 0.01f;
   CHECK(march_epsilon(m, 0.0f) == 1e-5f);
   CHECK(march_epsilon(m, 10.0f) == doctest::Approx(0.1f));
-  float s;
+  float s = 0.0f;
   std::uint32_t coarse, fine;
   // A threshold of ~0.04 at s = 4: probes and the bisection's tolerance scale with it.
   REQUIRE(shape_trace(glm::vec3(0.0f, 0.6f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, coarse));
@@ -96,8 +96,8 @@ TEST_CASE("sphere_trace: a grazing ray that passes within the threshold is a mis
   for (const float eps : {1e-3f, 1e-2f}) {
     MarchSettings m = settings(1.0f, 4096);
     m.epsilon = eps;
-    float s;
-    std::uint32_t steps;
+    float s = 0.0f;
+    std::uint32_t steps = 0;
     CAPTURE(eps);
     CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.0f + 0.3f * eps, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
     // Plain steps shrink towards the closest approach, then probes of 0.6 to 1 threshold cover
@@ -124,8 +124,8 @@ TEST_CASE("sphere_trace: a hit is refined to a fraction of the threshold and sta
       for (const float w : {1.0f, 1.6f}) {
         MarchSettings m = settings(w, 4096);
         m.epsilon = eps;
-        float s;
-        std::uint32_t steps;
+        float s = 0.0f;
+        std::uint32_t steps = 0;
         CAPTURE(eps);
         CAPTURE(y);
         CAPTURE(w);
@@ -144,8 +144,8 @@ TEST_CASE("sphere_trace: the threshold compares the unscaled distance") {
   MarchSettings m = settings(1.0f, 4096);
   m.epsilon = 1e-3f;
   m.step_scale = 0.5f;
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 1.0015f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
   REQUIRE(shape_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
   CHECK(std::abs(s - sphere_t(0.8f)) <= 0.05f * m.epsilon);
@@ -159,8 +159,8 @@ TEST_CASE("sphere_trace: probes and bisection stay within max_steps") {
   for (std::uint32_t n = 1; n <= 40; ++n) {
     MarchSettings m = settings(1.0f, n);
     m.epsilon = 1e-3f;
-    float s;
-    std::uint32_t steps;
+    float s = 0.0f;
+    std::uint32_t steps = 0;
     const bool hit = shape_trace(glm::vec3(0.0f, 0.8f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps);
     CAPTURE(n);
     CHECK(steps <= n);
@@ -183,7 +183,7 @@ TEST_CASE("sphere_trace: a march that starts inside an SDF reports where it leav
       MarchSettings m = settings(w);
       m.epsilon = 1e-3f;
       float s = -1.0f;
-      std::uint32_t steps;
+      std::uint32_t steps = 0;
       REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, z), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, m, {}, s, steps));
       const float exit = 1.0f - z;
       CHECK(s <= exit);
@@ -193,8 +193,8 @@ TEST_CASE("sphere_trace: a march that starts inside an SDF reports where it leav
     }
   }
   // The exit lies beyond the range: a miss, not a hit at the range's end.
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.0f, settings(), {}, s, steps));
 }
 
@@ -202,8 +202,8 @@ TEST_CASE("sphere_trace: inside an estimate that is zero there or on the surface
   // No bound to march out on: no exit is claimed, and no hit at the start (the old rule's
   // wrong surface with an arbitrary normal). One evaluation decides it.
   shape = 2;
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -0.5f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(), {}, s, steps));
   CHECK(steps == 1u);
   // From outside the same estimate is hit as the exact sphere is.
@@ -220,8 +220,8 @@ TEST_CASE("over-relaxation does not tunnel through a thin plate") {
   const glm::vec3 dir = glm::normalize(glm::vec3(1.0f, 0.0f, 0.05f));  // shallow: long relaxed steps
   const float expected = (-0.01f + 2.0f) / dir.z;                     // from z = -2 to z = -0.01
   for (float w : {1.0f, 1.2f, 1.6f, 1.9f}) {
-    float s;
-    std::uint32_t steps;
+    float s = 0.0f;
+    std::uint32_t steps = 0;
     REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -2.0f), dir, 0.0f, 100.0f, settings(w, 4096), {}, s, steps));
     CAPTURE(w);
     CHECK(s == doctest::Approx(expected).epsilon(1e-3));
@@ -235,8 +235,8 @@ TEST_CASE("over-relaxation finds a thin plate just before the end of the range")
   // pass through the plate (a thin part near the AABB's exit), so it must retry the plain step.
   shape = 1;
   for (float w : {1.0f, 1.2f, 1.6f, 1.9f}) {
-    float s;
-    std::uint32_t steps;
+    float s = 0.0f;
+    std::uint32_t steps = 0;
     CAPTURE(w);
     REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 2.0f, settings(w), {}, s, steps));
     CHECK(s == doctest::Approx(1.99f).epsilon(1e-5));
@@ -245,8 +245,8 @@ TEST_CASE("over-relaxation finds a thin plate just before the end of the range")
     CHECK(steps <= 8u);
   }
   // Beyond the range it stays a miss, relaxed or not.
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   CHECK_FALSE(shape_trace(glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 1.9f, settings(1.6f), {}, s, steps));
   shape = 0;
 }
@@ -257,8 +257,8 @@ TEST_CASE("relaxed steps fall back once they stop overlapping and then march pla
   // to s = 4 (the plain step's end), exactly on the surface (distance 0: inside), so the hit
   // is refined there: one probe a threshold back (outside), 5 bisections.
   shape = 0;
-  float s;
-  std::uint32_t steps;
+  float s = 0.0f;
+  std::uint32_t steps = 0;
   REQUIRE(shape_trace(glm::vec3(0.0f, 0.0f, -5.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, 10.0f, settings(1.6f), {}, s, steps));
   CHECK(s == doctest::Approx(4.0f));
   CHECK(s < 4.0f);

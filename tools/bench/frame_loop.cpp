@@ -82,6 +82,116 @@ struct Side {
   std::vector<double> wall, gpu, copy, host;
 };
 
+enum class Mode { none, copy, view };
+
+/// The scene both sides trace: a grid of boxes, one ray, one hit group.
+bench::BenchScene box_scene(const std::vector<pr::Aabb>& boxes) {
+  bench::BenchScene scene;
+  const auto primary = scene.add_ray<bench::Colour>("primary", {.miss = "bench.rmiss"});
+  const auto group = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
+                                                  .intersection = "bench.rint"});
+  scene.add_geometry("boxes", pr::GeometryDesc::procedural(boxes));
+  scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                            {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
+  scene.add_raygen("bench.rgen");
+  scene.set_default_hit(primary, group);
+  return scene;
+}
+
+/// The raw side's shaders: the same SPIR-V (the plan's stages with their generated declarations).
+std::array<raw::Shader, 4> raw_shaders(const pr::Plan& plan, const std::filesystem::path& dir) {
+  std::array<raw::Shader, 4> shaders;
+  const pr::ShaderStage order[4] = {pr::ShaderStage::raygen, pr::ShaderStage::miss, pr::ShaderStage::closest_hit,
+                                    pr::ShaderStage::intersection};
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (const pr::PlannedStage& s : plan.pipeline().stages) {
+      if (s.stage != order[i]) continue;
+      shaders[i] = {stage_bit(s.stage), pr::vk::compile_glsl_file(s.stage, dir / s.shader, s.declarations)};
+    }
+  }
+  return shaders;
+}
+
+/// One block of n library frames: frame i submitted, then frame i-1 waited for (and read), so the
+/// host records one frame while the device traces the one before; with one frame in flight there
+/// is no before: frame i is waited for itself.
+void library_block(pr::vk::Renderer& library, std::uint32_t size, Mode mode, int n, std::uint32_t in_flight, Side& lib,
+                   std::vector<std::uint8_t>& pixels, unsigned& touched) {
+  const auto submit = [&] {
+    return library.submit(size, size, mode != Mode::none ? pr::vk::Readback::rgba : pr::vk::Readback::none);
+  };
+  pr::vk::FrameTicket prev = in_flight > 1 ? submit() : pr::vk::FrameTicket{};
+  for (int i = 0; i < n; ++i) {
+    const auto start = Clock::now();
+    const pr::vk::FrameTicket t = submit();
+    const pr::vk::FrameTicket done_frame = in_flight > 1 ? prev : t;
+    if (mode == Mode::copy) library.read_rgba(done_frame, pixels);
+    if (mode == Mode::view) {
+      const std::span<const std::uint8_t> view = library.rgba(done_frame);
+      touched += view.front() + view.back();
+    }
+    const pr::vk::Frame f = library.wait(done_frame);
+    lib.wall.push_back(ms(start, Clock::now()));
+    lib.gpu.push_back(f.trace_ms);
+    lib.host.push_back(f.host_ms);
+    prev = t;
+  }
+  library.wait(prev);
+}
+
+/// The same block on the raw side.
+void raw_block(raw::RawTracer& reference, std::uint32_t size, Mode mode, int n, std::uint32_t in_flight, Side& ref,
+               std::vector<std::uint8_t>& pixels, unsigned& touched) {
+  const bool readback = mode != Mode::none;
+  raw::RawTracer::Ticket prev = in_flight > 1 ? reference.submit(size, size, readback) : raw::RawTracer::Ticket{};
+  for (int i = 0; i < n; ++i) {
+    const auto start = Clock::now();
+    const raw::RawTracer::Ticket t = reference.submit(size, size, readback);
+    const raw::RawTracer::Ticket done_frame = in_flight > 1 ? prev : t;
+    if (mode == Mode::copy) reference.read(done_frame, pixels);
+    if (mode == Mode::view) {
+      const std::span<const std::uint8_t> view = reference.view(done_frame);
+      touched += view.front() + view.back();
+    }
+    const auto [trace, copy_ms] = reference.gpu_ms(done_frame);
+    ref.wall.push_back(ms(start, Clock::now()));
+    ref.gpu.push_back(trace);
+    ref.copy.push_back(copy_ms);
+    prev = t;
+  }
+  reference.gpu_ms(prev);
+}
+
+/// Both sides at one size, in each readback mode, blocks interleaved; a line per mode. Returns 1
+/// when their pixels differ.
+int compare_size(pr::vk::Renderer& library, raw::RawTracer& reference, std::uint32_t size, int frames, int block,
+                 std::uint32_t in_flight) {
+  std::vector<std::uint8_t> lib_pixels(std::size_t{size} * size * 4), raw_pixels(lib_pixels.size());
+  int status = 0;
+  // Same pixels first: the comparison is of the same work.
+  library.read_rgba(library.submit(size, size), lib_pixels);
+  reference.read(reference.submit(size, size, true), raw_pixels);
+  if (lib_pixels != raw_pixels) {
+    std::fprintf(stderr, "bench_frame_loop: the library's and the raw reference's pixels differ at %ux%u\n", size, size);
+    status = 1;
+  }
+  for (const Mode mode : {Mode::none, Mode::view, Mode::copy}) {
+    Side lib, ref;
+    unsigned touched = 0;  // what the view reads, printed so it is not optimised away
+    for (int done = 0; done < frames; done += block) {
+      const int n = std::min(block, frames - done);
+      library_block(library, size, mode, n, in_flight, lib, lib_pixels, touched);
+      raw_block(reference, size, mode, n, in_flight, ref, raw_pixels, touched);
+    }
+    const double lw = median(lib.wall), rw = median(ref.wall), lg = median(lib.gpu), rg = median(ref.gpu);
+    const char* name = mode == Mode::none ? "none" : mode == Mode::copy ? "rgba8 copy" : "rgba8 view";
+    std::printf("%6u %10s | %10.3f %10.3f %6.3f | %10.3f %10.3f %6.3f | %9.3f %9.4f   (%u)\n", size, name, lw, rw,
+                lw / rw, lg, rg, lg / rg, median(ref.copy), median(lib.host), touched % 10);
+    std::fflush(stdout);
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,107 +213,21 @@ int main(int argc, char** argv) {
                                                                 : pr::vk::DevicePreference::automatic;
   pr::vk::Context ctx({.device = preference});
   const std::vector<pr::Aabb> boxes = grid(boxes_per_side);
-
-  bench::BenchScene scene;
-  const auto primary = scene.add_ray<bench::Colour>("primary", {.miss = "bench.rmiss"});
-  const auto group = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
-                                                  .intersection = "bench.rint"});
-  scene.add_geometry("boxes", pr::GeometryDesc::procedural(boxes));
-  scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
-                                            {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
-  scene.add_raygen("bench.rgen");
-  scene.set_default_hit(primary, group);
   const char* env_dir = std::getenv("PROCEDURAY_BENCH_SHADER_DIR");  // for binaries carried to another machine
   const std::filesystem::path dir = env_dir != nullptr ? env_dir : PROCEDURAY_BENCH_SHADER_DIR;
   pr::vk::RendererOptions options{.shader_dirs = {dir}};
   options.frames_in_flight = in_flight;
-  pr::vk::Renderer library(ctx, scene, options);
-
-  // The raw side: the same SPIR-V (the plan's stages with their generated declarations).
-  std::array<raw::Shader, 4> shaders;
-  const pr::ShaderStage order[4] = {pr::ShaderStage::raygen, pr::ShaderStage::miss, pr::ShaderStage::closest_hit,
-                                    pr::ShaderStage::intersection};
-  for (std::size_t i = 0; i < 4; ++i) {
-    for (const pr::PlannedStage& s : library.plan().pipeline().stages) {
-      if (s.stage != order[i]) continue;
-      shaders[i] = {stage_bit(s.stage), pr::vk::compile_glsl_file(s.stage, dir / s.shader, s.declarations)};
-    }
-  }
+  pr::vk::Renderer library(ctx, box_scene(boxes), options);
   std::vector<raw::Box> raw_boxes;
   for (const pr::Aabb& b : boxes) raw_boxes.push_back({{b.min.x, b.min.y, b.min.z}, {b.max.x, b.max.y, b.max.z}});
-  raw::RawTracer reference(ctx.device(), ctx.physical_device(), ctx.queue(), ctx.queue_family(), shaders, raw_boxes,
-                           in_flight);
+  raw::RawTracer reference(ctx.device(), ctx.physical_device(), ctx.queue(), ctx.queue_family(),
+                           raw_shaders(library.plan(), dir), raw_boxes, in_flight);
 
   std::printf("device: %s; %ux%u boxes, %u frames in flight, %d frames per side in blocks of %d\n", ctx.name().c_str(),
               boxes_per_side, boxes_per_side, in_flight, frames, block);
   std::printf("%6s %10s | %10s %10s %6s | %10s %10s %6s | %9s %9s\n", "size", "readback", "lib wall", "raw wall",
               "ratio", "lib gpu", "raw gpu", "ratio", "raw copy", "lib host");
   int status = 0;
-  for (const std::uint32_t size : sizes) {
-    std::vector<std::uint8_t> lib_pixels(std::size_t{size} * size * 4), raw_pixels(lib_pixels.size());
-    // Same pixels first: the comparison is of the same work.
-    library.read_rgba(library.submit(size, size), lib_pixels);
-    reference.read(reference.submit(size, size, true), raw_pixels);
-    if (lib_pixels != raw_pixels) {
-      std::fprintf(stderr, "bench_frame_loop: the library's and the raw reference's pixels differ at %ux%u\n", size, size);
-      status = 1;
-    }
-    enum Mode { none, copy, view };
-    for (const Mode mode : {none, view, copy}) {
-      const bool readback = mode != none;
-      Side lib, ref;
-      unsigned touched = 0;  // what the view reads, printed so it is not optimised away
-      for (int done = 0; done < frames; done += block) {
-        const int n = std::min(block, frames - done);
-        // Library block: frame i submitted, then frame i-1 waited for (and read), so the host
-        // records one frame while the device traces the one before; with one frame in flight
-        // there is no before: frame i is waited for itself.
-        const auto lib_submit = [&] {
-          return library.submit(size, size, readback ? pr::vk::Readback::rgba : pr::vk::Readback::none);
-        };
-        pr::vk::FrameTicket prev = in_flight > 1 ? lib_submit() : pr::vk::FrameTicket{};
-        for (int i = 0; i < n; ++i) {
-          const auto start = Clock::now();
-          const pr::vk::FrameTicket t = lib_submit();
-          const pr::vk::FrameTicket done_frame = in_flight > 1 ? prev : t;
-          if (mode == copy) library.read_rgba(done_frame, lib_pixels);
-          if (mode == view) {
-            const std::span<const std::uint8_t> pixels = library.rgba(done_frame);
-            touched += pixels.front() + pixels.back();
-          }
-          const pr::vk::Frame f = library.wait(done_frame);
-          lib.wall.push_back(ms(start, Clock::now()));
-          lib.gpu.push_back(f.trace_ms);
-          lib.host.push_back(f.host_ms);
-          prev = t;
-        }
-        library.wait(prev);
-        // Raw block, the same loop.
-        raw::RawTracer::Ticket rprev = in_flight > 1 ? reference.submit(size, size, readback) : raw::RawTracer::Ticket{};
-        for (int i = 0; i < n; ++i) {
-          const auto start = Clock::now();
-          const raw::RawTracer::Ticket t = reference.submit(size, size, readback);
-          const raw::RawTracer::Ticket done_frame = in_flight > 1 ? rprev : t;
-          if (mode == copy) reference.read(done_frame, raw_pixels);
-          if (mode == view) {
-            const std::span<const std::uint8_t> pixels = reference.view(done_frame);
-            touched += pixels.front() + pixels.back();
-          }
-          const auto [trace, copy_ms] = reference.gpu_ms(done_frame);
-          ref.wall.push_back(ms(start, Clock::now()));
-          ref.gpu.push_back(trace);
-          ref.copy.push_back(copy_ms);
-          rprev = t;
-        }
-        reference.gpu_ms(rprev);
-      }
-      const double lw = median(lib.wall), rw = median(ref.wall), lg = median(lib.gpu), rg = median(ref.gpu);
-      const char* names[] = {"none", "rgba8 copy", "rgba8 view"};
-      std::printf("%6u %10s | %10.3f %10.3f %6.3f | %10.3f %10.3f %6.3f | %9.3f %9.4f   (%u)\n", size,
-                  names[mode == none ? 0 : mode == copy ? 1 : 2], lw, rw, lw / rw, lg, rg, lg / rg, median(ref.copy),
-                  median(lib.host), touched % 10);
-      std::fflush(stdout);
-    }
-  }
+  for (const std::uint32_t size : sizes) status |= compare_size(library, reference, size, frames, block, in_flight);
   return status;
 }

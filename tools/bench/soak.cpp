@@ -161,116 +161,88 @@ struct Options {
   bool validation = false;
 };
 
-int run(const Options& o, std::uint32_t width, std::uint32_t height) {
-  pr::vk::Context ctx({.device = o.device == "cpu"   ? pr::vk::DevicePreference::cpu
-                                 : o.device == "gpu" ? pr::vk::DevicePreference::gpu
-                                                     : pr::vk::DevicePreference::automatic,
-                       .validation = o.validation});
+/// The soak scene: instances that move, boxes that change, a sheet that waves.
+struct SoakScene {
   soak::BenchScene scene;
-  const auto primary = scene.add_ray<soak::Colour>("primary", {.miss = "bench.rmiss"});
-  const auto box = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
-                                                .intersection = "bench.rint"});
-  const auto triangle = scene.add_hit_group("triangle", {.closest_hit = "bench.rchit"});
-  const auto with = [](pr::GeometryDesc d, pr::UpdatePolicy update) {
-    d.update = update;
-    return d;
-  };
-  std::vector<pr::InstanceTransform> placed;
-  for (std::uint32_t i = 0; i < instances; ++i) placed.push_back(pr::instance_transform(place(i, 0.0f)));
-  const pr::GeometryId movers = scene.add_geometry(
-      "instances", with(pr::GeometryDesc::procedural({pr::Aabb{}}, placed), pr::UpdatePolicy::DynamicTransform));
-  std::vector<pr::Aabb> next;
-  boxes_at(next, boxes, 0.0f);
-  const pr::GeometryId cloud =
-      scene.add_geometry("boxes", with(pr::GeometryDesc::procedural(next), pr::UpdatePolicy::DynamicGeometry));
-  const pr::GeometryId sheet =
-      scene.add_geometry("sheet", with(pr::GeometryDesc::triangles(mesh()), pr::UpdatePolicy::DynamicGeometry));
-  scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
-                                            {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
-  scene.add_raygen("bench.rgen");
-  scene.set_default_hit(primary, box);
-  scene.set_default_hit(primary, triangle);
-  const char* dir = std::getenv("PROCEDURAY_BENCH_SHADER_DIR");  // for binaries carried to another machine
-  pr::vk::Renderer renderer(ctx, scene, {.shader_dirs = {dir != nullptr ? dir : PROCEDURAY_BENCH_SHADER_DIR}});
-  renderer.warm_up();
-  // A first frame with readback, before any count: the readback's lazy allocations are not growth.
-  if (one_colour(renderer.render(width, height, true).rgba)) {
-    std::fprintf(stderr, "bench_soak: the first frame is all one colour: the scene renders nothing\n");
-    return 1;
-  }
+  pr::GeometryId movers, cloud, sheet;
 
-  std::printf("bench_soak: device %s; %ux%u, %u frames, a line every %u%s\n", ctx.name().c_str(), width, height,
-              o.frames, o.every, ctx.validation_enabled() ? ", validation on" : "");
-  std::printf("%8s %12s %12s %9s   %s\n", "frame", "heap bytes", "rss bytes", "ms/frame",
-              "work in these frames: BLAS builds, BLAS refits, TLAS builds, TLAS updates");
-  std::vector<glm::mat4> transforms(instances);
+  SoakScene() {
+    const auto primary = scene.add_ray<soak::Colour>("primary", {.miss = "bench.rmiss"});
+    const auto box = scene.add_hit_group("box", {.kind = pr::HitGroupKind::procedural, .closest_hit = "bench.rchit",
+                                                  .intersection = "bench.rint"});
+    const auto triangle = scene.add_hit_group("triangle", {.closest_hit = "bench.rchit"});
+    const auto with = [](pr::GeometryDesc d, pr::UpdatePolicy update) {
+      d.update = update;
+      return d;
+    };
+    std::vector<pr::InstanceTransform> placed;
+    for (std::uint32_t i = 0; i < instances; ++i) placed.push_back(pr::instance_transform(place(i, 0.0f)));
+    movers = scene.add_geometry(
+        "instances", with(pr::GeometryDesc::procedural({pr::Aabb{}}, placed), pr::UpdatePolicy::DynamicTransform));
+    std::vector<pr::Aabb> first;
+    boxes_at(first, boxes, 0.0f);
+    cloud = scene.add_geometry("boxes", with(pr::GeometryDesc::procedural(first), pr::UpdatePolicy::DynamicGeometry));
+    sheet = scene.add_geometry("sheet", with(pr::GeometryDesc::triangles(mesh()), pr::UpdatePolicy::DynamicGeometry));
+    scene.set_global_signature({.bindings = {{pr::BindingKind::acceleration_structure, 0, 0, 1, "tlas"},
+                                              {pr::BindingKind::storage_image, 1, 0, 1, "image"}}});
+    scene.add_raygen("bench.rgen");
+    scene.set_default_hit(primary, box);
+    scene.set_default_hit(primary, triangle);
+  }
+};
+
+/// Frame f's update, a kind in turn: moves (one instance, or all every 8th frame), new boxes
+/// (their count changing every recount_every frames), new vertices, a mask toggled.
+struct Animation {
+  std::vector<glm::mat4> transforms = std::vector<glm::mat4>(instances);
   std::vector<glm::vec3> vertices;
-  std::vector<std::uint8_t> masks(instances, 0xFF);
-  pr::vk::FrameWork sum, total;
-  std::size_t first_heap = 0, last_heap = 0, first_rss = 0, last_rss = 0;
-  const auto start = std::chrono::steady_clock::now();
-  auto interval = start;
-  for (std::uint32_t f = 1; f <= o.frames; ++f) {
+  std::vector<pr::Aabb> next;
+  std::vector<std::uint8_t> masks = std::vector<std::uint8_t>(instances, 0xFF);
+
+  void apply(pr::vk::Renderer& renderer, const SoakScene& s, std::uint32_t f) {
     const float t = 0.01f * static_cast<float>(f);
     switch (f % 4) {
       case 0:
         if (f % 8 == 0) {
           for (std::uint32_t i = 0; i < instances; ++i) transforms[i] = place(i, t);
-          renderer.set_transforms(movers, transforms);
+          renderer.set_transforms(s.movers, transforms);
         } else {
-          renderer.set_transform(movers, (f / 8) % instances, place((f / 8) % instances, t));
+          renderer.set_transform(s.movers, (f / 8) % instances, place((f / 8) % instances, t));
         }
         break;
       case 1:
         boxes_at(next, (f / recount_every) % 2 == 0 ? boxes : boxes - 1, 0.05f * std::sin(t));
-        renderer.set_aabbs(cloud, next);
+        renderer.set_aabbs(s.cloud, next);
         break;
       case 2:
         wave(vertices, t);
-        renderer.set_vertices(sheet, vertices);
+        renderer.set_vertices(s.sheet, vertices);
         break;
       default: {
         const std::uint32_t i = (f / 8) % instances;  // hidden at one mask frame, shown at the next
         masks[i] = masks[i] == 0xFF ? 0x00 : 0xFF;
-        renderer.set_mask(movers, i, masks[i]);
+        renderer.set_mask(s.movers, i, masks[i]);
       }
     }
-    const bool check = f % o.every == 0;
-    bool blank = false;
-    {  // the frame and its pixels are freed before the heap is sampled below
-      const pr::vk::Frame frame = renderer.render(width, height, check);
-      add(sum, frame.work);
-      add(total, frame.work);
-      blank = check && one_colour(frame.rgba);
-    }
-    if (!check) continue;
-    if (blank) {
-      std::fprintf(stderr, "bench_soak: frame %u is all one colour: the animated scene renders nothing\n", f);
-      return 1;
-    }
-    const auto now = std::chrono::steady_clock::now();
-    const double ms = std::chrono::duration<double, std::milli>(now - interval).count() / o.every;
-    interval = now;
-    last_heap = heap_bytes();
-    last_rss = rss_bytes();
-    if (f == o.every) {  // the end of the warm-up: the baseline
-      first_heap = last_heap;
-      first_rss = last_rss;
-    }
-    std::printf("%8u %12zu %12zu %9.3f   %u, %u, %u, %u\n", f, last_heap, last_rss, ms, sum.blas_builds,
-                sum.blas_refits, sum.tlas_builds, sum.tlas_updates);
-    std::fflush(stdout);  // a line as it comes, for runs watched or cut short
-    sum = {};
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+};
+
+/// Heap and resident bytes at the end of the warm-up and at the last check.
+struct Memory {
+  std::size_t first_heap = 0, last_heap = 0, first_rss = 0, last_rss = 0;
+};
+
+/// The summary lines and the verdict: 0, or 1 when the heap grew past --max-growth, some kind of
+/// structure work never happened, or the validation layer spoke.
+int verdict(const Options& o, const pr::vk::Context& ctx, const Memory& m, const pr::vk::FrameWork& total, double seconds) {
   const auto change = [](std::size_t a, std::size_t b) { return 100.0 * (static_cast<double>(b) - a) / a; };
-  const double growth = change(first_heap, last_heap);
+  const double growth = change(m.first_heap, m.last_heap);
   const auto delta = [](std::size_t a, std::size_t b) { return static_cast<long long>(b) - static_cast<long long>(a); };
   std::printf("heap after the warm-up (frame %u) %zu bytes, at the end (frame %u) %zu bytes: %+lld bytes, %+.3f%% "
-              "(limit %g%%)\n", o.every, first_heap, o.frames - o.frames % o.every, last_heap,
-              delta(first_heap, last_heap), growth, o.max_growth);
-  std::printf("rss  after the warm-up %zu bytes, at the end %zu bytes: %+lld bytes, %+.3f%% (not checked)\n", first_rss,
-              last_rss, delta(first_rss, last_rss), change(first_rss, last_rss));
+              "(limit %g%%)\n", o.every, m.first_heap, o.frames - o.frames % o.every, m.last_heap,
+              delta(m.first_heap, m.last_heap), growth, o.max_growth);
+  std::printf("rss  after the warm-up %zu bytes, at the end %zu bytes: %+lld bytes, %+.3f%% (not checked)\n", m.first_rss,
+              m.last_rss, delta(m.first_rss, m.last_rss), change(m.first_rss, m.last_rss));
   std::printf("wall time %.1f s, %.3f ms/frame\n", seconds, 1000.0 * seconds / o.frames);
   int status = 0;
   if (growth > o.max_growth) {
@@ -289,6 +261,63 @@ int run(const Options& o, std::uint32_t width, std::uint32_t height) {
     status = 1;
   }
   return status;
+}
+
+int run(const Options& o, std::uint32_t width, std::uint32_t height) {
+  pr::vk::Context ctx({.device = o.device == "cpu"   ? pr::vk::DevicePreference::cpu
+                                 : o.device == "gpu" ? pr::vk::DevicePreference::gpu
+                                                     : pr::vk::DevicePreference::automatic,
+                       .validation = o.validation});
+  const SoakScene s;
+  const char* dir = std::getenv("PROCEDURAY_BENCH_SHADER_DIR");  // for binaries carried to another machine
+  pr::vk::Renderer renderer(ctx, s.scene, {.shader_dirs = {dir != nullptr ? dir : PROCEDURAY_BENCH_SHADER_DIR}});
+  renderer.warm_up();
+  // A first frame with readback, before any count: the readback's lazy allocations are not growth.
+  if (one_colour(renderer.render(width, height, true).rgba)) {
+    std::fprintf(stderr, "bench_soak: the first frame is all one colour: the scene renders nothing\n");
+    return 1;
+  }
+
+  std::printf("bench_soak: device %s; %ux%u, %u frames, a line every %u%s\n", ctx.name().c_str(), width, height,
+              o.frames, o.every, ctx.validation_enabled() ? ", validation on" : "");
+  std::printf("%8s %12s %12s %9s   %s\n", "frame", "heap bytes", "rss bytes", "ms/frame",
+              "work in these frames: BLAS builds, BLAS refits, TLAS builds, TLAS updates");
+  Animation animation;
+  pr::vk::FrameWork sum, total;
+  Memory memory;
+  const auto start = std::chrono::steady_clock::now();
+  auto interval = start;
+  for (std::uint32_t f = 1; f <= o.frames; ++f) {
+    animation.apply(renderer, s, f);
+    const bool check = f % o.every == 0;
+    bool blank = false;
+    {  // the frame and its pixels are freed before the heap is sampled below
+      const pr::vk::Frame frame = renderer.render(width, height, check);
+      add(sum, frame.work);
+      add(total, frame.work);
+      blank = check && one_colour(frame.rgba);
+    }
+    if (!check) continue;
+    if (blank) {
+      std::fprintf(stderr, "bench_soak: frame %u is all one colour: the animated scene renders nothing\n", f);
+      return 1;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - interval).count() / o.every;
+    interval = now;
+    memory.last_heap = heap_bytes();
+    memory.last_rss = rss_bytes();
+    if (f == o.every) {  // the end of the warm-up: the baseline
+      memory.first_heap = memory.last_heap;
+      memory.first_rss = memory.last_rss;
+    }
+    std::printf("%8u %12zu %12zu %9.3f   %u, %u, %u, %u\n", f, memory.last_heap, memory.last_rss, ms, sum.blas_builds,
+                sum.blas_refits, sum.tlas_builds, sum.tlas_updates);
+    std::fflush(stdout);  // a line as it comes, for runs watched or cut short
+    sum = {};
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return verdict(o, ctx, memory, total, seconds);
 }
 
 }  // namespace

@@ -34,6 +34,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -315,20 +316,13 @@ std::vector<acc::Label> labels(const Options& o, const std::string& device, unsi
   return out;
 }
 
-int run(const Options& o) {
-  // Named, not a structured binding: clang 14 cannot capture one in the lambdas below.
-  const auto size = parse_pair(o.size, 'x', "--size", "WxH with positive numbers, e.g. 256x256");
-  const auto width = size.first, height = size.second;
-  if (width == 0 || height == 0) throw BadInput("--size '" + o.size + "' is not WxH with positive numbers, e.g. 256x256");
-  const auto [shard, shards] = parse_pair(o.shard, '/', "--shard", "i/n with 0 <= i < n, e.g. 0/4");
-  if (shards == 0 || shard >= shards) throw BadInput("--shard '" + o.shard + "' is not i/n with 0 <= i < n, e.g. 0/4");
-  if (o.alone && o.scene != "d3d12") throw BadInput("--alone renders the D3D12 primitives one by one; use --scene d3d12");
-  if (!o.preset.empty() && !o.vary.empty()) throw BadInput("give --preset or --vary, not both");
-  const std::vector<Object> objects = selected(scene_objects(o.scene), o.objects);
-  std::vector<Point> all = o.preset == "methods" ? methods_preset() : grid(o.vary);
-  Assignment fixed;
-  for (const std::string& s : o.set) fixed.push_back(split_assignment(s, "--set"));
-  // Check names before any rendering: an unknown knob or value is refused with the valid ones.
+/// The points of this shard, each checked: names before any rendering (an unknown knob or value is
+/// refused with the valid ones), and a point of the user's grid that no selected object accepts
+/// is a mistake (0 steps, a negative threshold), not a skip; a preset's points are for kinds the
+/// selection may not hold.
+std::vector<std::pair<std::size_t, Point>> shard_points(const Options& o, const std::vector<Point>& all,
+                                                        const std::vector<Object>& objects, const Assignment& fixed,
+                                                        unsigned shard, unsigned shards) {
   for (const Point& p : all) {
     pr::MarchKnobs scratch = pr::march_base_knobs;
     for (const auto& [name, value] : p.knobs) pr::set_knob(scratch, name, value);
@@ -337,14 +331,10 @@ int run(const Options& o) {
     pr::MarchKnobs scratch = pr::march_base_knobs;
     pr::set_knob(scratch, name, value);
   }
-  std::vector<std::pair<std::size_t, Point>> points;
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    if (i % shards == shard) points.push_back({i, all[i]});
-  }
-  // A point of the user's grid that no selected object accepts is a mistake (0 steps, a negative
-  // threshold), not a skip; a preset's points are for kinds the selection may not hold.
   std::vector<std::pair<std::size_t, Point>> kept;
-  for (const auto& [index, p] : points) {
+  for (std::size_t index = 0; index < all.size(); ++index) {
+    if (index % shards != shard) continue;
+    const Point& p = all[index];
     std::string first_error;
     bool any = false;
     for (const Object& obj : objects) {
@@ -359,7 +349,121 @@ int run(const Options& o) {
     }
     if (any) kept.push_back({index, p});
   }
-  points = std::move(kept);
+  return kept;
+}
+
+/// What every view of a sweep shares: the options, the device, the points and how a result is reported.
+struct Sweep {
+  const Options& o;
+  pr::vk::Context& ctx;
+  std::uint32_t width, height;
+  const Assignment& fixed;
+  const std::vector<std::pair<std::size_t, Point>>& points;
+  std::function<void(std::size_t, const Point&, const Object&, const pr::MarchKnobs&, double, const ObjectResult&)> report;
+  Progress progress;
+
+  /// Constants `base` with point p's knobs for each of `objects` that takes them: the ids and knobs taken.
+  template <class Constants>
+  std::vector<std::pair<const Object*, pr::MarchKnobs>> apply(Constants& c, const std::vector<Object>& objects,
+                                                              const Point& p, std::vector<std::uint32_t>& ids) const {
+    std::vector<std::pair<const Object*, pr::MarchKnobs>> taken;
+    for (const Object& obj : objects) {
+      pr::MarchKnobs k = c.knobs[obj.id];
+      for (const auto& [name, value] : fixed) pr::set_knob(k, name, value);
+      const auto [knobs, error] = knobs_at(obj, p, k, c.camera.pixel_angle);
+      if (!error.empty()) continue;
+      c.knobs[obj.id] = knobs;
+      ids.push_back(obj.id);
+      taken.emplace_back(&obj, knobs);
+    }
+    return taken;
+  }
+};
+
+void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
+  const paper::PaperScene measured_scene(paper::accuracy_outputs), timed_scene;
+  pr::vk::Renderer measured(sw.ctx, measured_scene, measured_scene.renderer_options());
+  pr::vk::Renderer timed(sw.ctx, timed_scene, timed_scene.renderer_options());
+  paper::SceneConstants base = paper::default_constants(sw.width, sw.height, sw.o.time);
+  base.flags = 0;
+  std::fprintf(stderr, "sweep: reference of the paper scene (spacing %g footprints) ...\n", sw.o.spacing);
+  const paper::ReferenceImage truth = paper::reference_image(base, sw.width, sw.height, {.spacing = sw.o.spacing});
+  sw.progress.total = sw.points.size();
+  for (const auto& [index, p] : sw.points) {
+    paper::SceneConstants c = base;
+    std::vector<std::uint32_t> ids;
+    const auto taken = sw.apply(c, objects, p, ids);
+    const double ms = time_frames(timed, paper::constants_slot, c, sw.o, sw.width, sw.height);
+    const auto results = measure(
+        measured, paper::constants_slot, c, truth, sw.width, sw.height, ids,
+        [](const pr::Plan& plan, std::span<const std::uint32_t> raw) { return paper::device_objects(plan, raw); },
+        [](const paper::ReferenceImage& t, std::span<const acc::Sample> s, const std::vector<paper::ObjectId>& seen,
+           std::uint32_t id) { return paper::measure_object(t, s, seen, static_cast<paper::ObjectId>(id)); });
+    for (const auto& [obj, k] : taken) sw.report(index, p, *obj, k, ms, results.at(obj->id));
+    sw.progress.tick(p.label);
+  }
+}
+
+void sweep_d3d12(Sweep& sw, const std::vector<Object>& objects) {
+  // One view per selected object (--alone) or one of the whole sample scene.
+  struct D3d12View {
+    std::vector<Object> objects;
+    d3d12::SceneConstants base;
+    d3d12::Layout layout;
+  };
+  std::vector<D3d12View> views;
+  if (sw.o.alone) {
+    for (const Object& obj : objects) {
+      const auto kind = static_cast<d3d12::PrimitiveKind>(obj.id - 2u);
+      views.push_back({{obj}, d3d12::default_constants(d3d12::isolated_camera(kind, sw.width, sw.height), sw.o.time),
+                       d3d12::Layout::isolated});
+    }
+  } else {
+    views.push_back({objects, d3d12::default_constants(d3d12::sample_camera(sw.width, sw.height), sw.o.time),
+                     d3d12::Layout::sample});
+  }
+  sw.progress.total = sw.points.size() * views.size();
+  for (const D3d12View& view : views) {
+    const d3d12::D3d12Scene measured_scene(d3d12::default_primitives(), view.layout, d3d12::accuracy_outputs);
+    const d3d12::D3d12Scene timed_scene(d3d12::default_primitives(), view.layout);
+    pr::vk::Renderer measured(sw.ctx, measured_scene, d3d12::renderer_options());
+    pr::vk::Renderer timed(sw.ctx, timed_scene, d3d12::renderer_options());
+    d3d12::SceneConstants base = view.base;
+    base.flags = 0;
+    const std::array<d3d12::Primitive, d3d12::primitive_count> prims = d3d12::default_primitives();
+    const d3d12::ReferenceImage truth = d3d12::reference_image(base, prims, view.layout, sw.width, sw.height);
+    for (const auto& [index, p] : sw.points) {
+      d3d12::SceneConstants c = base;
+      std::vector<std::uint32_t> ids;
+      const auto taken = sw.apply(c, view.objects, p, ids);
+      if (!ids.empty()) {
+        const double ms = time_frames(timed, d3d12::constants_slot, c, sw.o, sw.width, sw.height);
+        const auto results = measure(
+            measured, d3d12::constants_slot, c, truth, sw.width, sw.height, ids,
+            [](const pr::Plan& plan, std::span<const std::uint32_t> raw) { return d3d12::device_objects(plan, raw); },
+            [](const d3d12::ReferenceImage& t, std::span<const acc::Sample> s, const std::vector<std::uint32_t>& seen,
+               std::uint32_t id) { return d3d12::measure_object(t, s, seen, id); });
+        for (const auto& [obj, k] : taken) sw.report(index, p, *obj, k, ms, results.at(obj->id));
+      }
+      sw.progress.tick(view.objects.size() == 1 ? view.objects[0].name + ": " + p.label : p.label);
+    }
+  }
+}
+
+int run(const Options& o) {
+  // Named, not a structured binding: clang 14 cannot capture one in the lambdas below.
+  const auto size = parse_pair(o.size, 'x', "--size", "WxH with positive numbers, e.g. 256x256");
+  const auto width = size.first, height = size.second;
+  if (width == 0 || height == 0) throw BadInput("--size '" + o.size + "' is not WxH with positive numbers, e.g. 256x256");
+  const auto [shard, shards] = parse_pair(o.shard, '/', "--shard", "i/n with 0 <= i < n, e.g. 0/4");
+  if (shards == 0 || shard >= shards) throw BadInput("--shard '" + o.shard + "' is not i/n with 0 <= i < n, e.g. 0/4");
+  if (o.alone && o.scene != "d3d12") throw BadInput("--alone renders the D3D12 primitives one by one; use --scene d3d12");
+  if (!o.preset.empty() && !o.vary.empty()) throw BadInput("give --preset or --vary, not both");
+  const std::vector<Object> objects = selected(scene_objects(o.scene), o.objects);
+  const std::vector<Point> all = o.preset == "methods" ? methods_preset() : grid(o.vary);
+  Assignment fixed;
+  for (const std::string& s : o.set) fixed.push_back(split_assignment(s, "--set"));
+  const std::vector<std::pair<std::size_t, Point>> points = shard_points(o, all, objects, fixed, shard, shards);
   // The calibration table: loaded first with --append (a foreign or old one is refused here,
   // before any rendering), written at the end.
   std::vector<pr::CalibrationRow> table;
@@ -376,9 +480,9 @@ int run(const Options& o) {
               ctx.name().c_str(), points.size(), all.size(), shard, shards, objects.size(), width, height, o.frames,
               o.warmup);
   std::printf("%-16s %-58s %9s %9s %9s %9s %8s\n", "object", "point", "ms", "evals", "depth med", "depth p99", "sil fh%");
-  Progress progress;
-  auto report = [&](std::size_t index, const Point& p, const Object& obj, const pr::MarchKnobs& k, double ms,
-                    const ObjectResult& r) {
+  Sweep sweep{o, ctx, width, height, fixed, points, {}, {}};
+  sweep.report = [&](std::size_t index, const Point& p, const Object& obj, const pr::MarchKnobs& k, double ms,
+                     const ObjectResult& r) {
     const acc::ClassStats& a = r.metrics.all;
     std::printf("%-16s %-58.58s %9.3f %9.2f %9.3g %9.3g %8.2f\n", obj.name.c_str(), p.label.c_str(), ms, r.evals,
                 a.depth.median, a.depth.p99, 100.0 * r.metrics[acc::PixelClass::silhouette_1px].false_hit_rate());
@@ -391,90 +495,8 @@ int run(const Options& o) {
                        rate(a.normal_degrees.p95)});
     }
   };
-  if (o.scene == "paper") {
-    const paper::PaperScene measured_scene(paper::accuracy_outputs), timed_scene;
-    pr::vk::Renderer measured(ctx, measured_scene, measured_scene.renderer_options());
-    pr::vk::Renderer timed(ctx, timed_scene, timed_scene.renderer_options());
-    paper::SceneConstants base = paper::default_constants(width, height, o.time);
-    base.flags = 0;
-    std::fprintf(stderr, "sweep: reference of the paper scene (spacing %g footprints) ...\n", o.spacing);
-    const paper::ReferenceImage truth = paper::reference_image(base, width, height, {.spacing = o.spacing});
-    progress.total = points.size();
-    for (const auto& [index, p] : points) {
-      paper::SceneConstants c = base;
-      std::vector<std::uint32_t> ids;
-      std::vector<std::pair<const Object*, pr::MarchKnobs>> taken;
-      for (const Object& obj : objects) {
-        pr::MarchKnobs k = c.knobs[obj.id];
-        for (const auto& [name, value] : fixed) pr::set_knob(k, name, value);
-        const auto [knobs, error] = knobs_at(obj, p, k, c.camera.pixel_angle);
-        if (!error.empty()) continue;
-        c.knobs[obj.id] = knobs;
-        ids.push_back(obj.id);
-        taken.emplace_back(&obj, knobs);
-      }
-      const double ms = time_frames(timed, paper::constants_slot, c, o, width, height);
-      const auto results = measure(
-          measured, paper::constants_slot, c, truth, width, height, ids,
-          [](const pr::Plan& plan, std::span<const std::uint32_t> raw) { return paper::device_objects(plan, raw); },
-          [](const paper::ReferenceImage& t, std::span<const acc::Sample> s, const std::vector<paper::ObjectId>& seen,
-             std::uint32_t id) { return paper::measure_object(t, s, seen, static_cast<paper::ObjectId>(id)); });
-      for (const auto& [obj, k] : taken) report(index, p, *obj, k, ms, results.at(obj->id));
-      progress.tick(p.label);
-    }
-  } else {
-    // One view per selected object (--alone) or one of the whole sample scene.
-    struct D3d12View {
-      std::vector<Object> objects;
-      d3d12::SceneConstants base;
-      d3d12::Layout layout;
-    };
-    std::vector<D3d12View> views;
-    if (o.alone) {
-      for (const Object& obj : objects) {
-        const auto kind = static_cast<d3d12::PrimitiveKind>(obj.id - 2u);
-        views.push_back({{obj}, d3d12::default_constants(d3d12::isolated_camera(kind, width, height), o.time),
-                         d3d12::Layout::isolated});
-      }
-    } else {
-      views.push_back({objects, d3d12::default_constants(d3d12::sample_camera(width, height), o.time), d3d12::Layout::sample});
-    }
-    progress.total = points.size() * views.size();
-    for (const D3d12View& view : views) {
-      const d3d12::D3d12Scene measured_scene(d3d12::default_primitives(), view.layout, d3d12::accuracy_outputs);
-      const d3d12::D3d12Scene timed_scene(d3d12::default_primitives(), view.layout);
-      pr::vk::Renderer measured(ctx, measured_scene, d3d12::renderer_options());
-      pr::vk::Renderer timed(ctx, timed_scene, d3d12::renderer_options());
-      d3d12::SceneConstants base = view.base;
-      base.flags = 0;
-      const std::array<d3d12::Primitive, d3d12::primitive_count> prims = d3d12::default_primitives();
-      const d3d12::ReferenceImage truth = d3d12::reference_image(base, prims, view.layout, width, height);
-      for (const auto& [index, p] : points) {
-        d3d12::SceneConstants c = base;
-        std::vector<std::uint32_t> ids;
-        std::vector<std::pair<const Object*, pr::MarchKnobs>> taken;
-        for (const Object& obj : view.objects) {
-          pr::MarchKnobs k = c.knobs[obj.id];
-          for (const auto& [name, value] : fixed) pr::set_knob(k, name, value);
-          const auto [knobs, error] = knobs_at(obj, p, k, c.camera.pixel_angle);
-          if (!error.empty()) continue;
-          c.knobs[obj.id] = knobs;
-          ids.push_back(obj.id);
-          taken.emplace_back(&obj, knobs);
-        }
-        if (!ids.empty()) {
-          const double ms = time_frames(timed, d3d12::constants_slot, c, o, width, height);
-          const auto results = measure(
-              measured, d3d12::constants_slot, c, truth, width, height, ids,
-              [](const pr::Plan& plan, std::span<const std::uint32_t> raw) { return d3d12::device_objects(plan, raw); },
-              [](const d3d12::ReferenceImage& t, std::span<const acc::Sample> s, const std::vector<std::uint32_t>& seen,
-                 std::uint32_t id) { return d3d12::measure_object(t, s, seen, id); });
-          for (const auto& [obj, k] : taken) report(index, p, *obj, k, ms, results.at(obj->id));
-        }
-        progress.tick(view.objects.size() == 1 ? view.objects[0].name + ": " + p.label : p.label);
-      }
-    }
-  }
+  if (o.scene == "paper") sweep_paper(sweep, objects);
+  else sweep_d3d12(sweep, objects);
   if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
   if (!o.calibration.empty()) {
     std::ofstream out(o.calibration, std::ios::trunc);

@@ -21,14 +21,18 @@
 namespace proceduray {
 namespace detail {
 
-/// The mesh of a parsed file: corners deduplicated, indices checked, normals completed.
-PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
-                                 std::string_view name) {
+/// Which parts every corner has, after checking each index against the file's counts.
+struct ObjCorners {
+  bool all_normals = true;
+  bool all_uvs = true;
+};
+
+PROCEDURAY_DECL ObjCorners check_obj_corners(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                                             const std::string& where) {
   const auto positions = static_cast<long long>(attrib.vertices.size() / 3);
   const auto normals = static_cast<long long>(attrib.normals.size() / 3);
   const auto uvs = static_cast<long long>(attrib.texcoords.size() / 2);
-  const std::string where = "load_obj: '" + std::string(name) + "'";
-  bool all_normals = true, all_uvs = true;
+  ObjCorners out;
   std::size_t corners = 0;
   for (const tinyobj::shape_t& shape : shapes) {
     for (std::size_t c = 0; c < shape.mesh.indices.size(); ++c) {
@@ -43,8 +47,8 @@ PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vec
       check(i.vertex_index, positions, "position", "v");
       if (i.normal_index >= 0) check(i.normal_index, normals, "normal", "vn");
       if (i.texcoord_index >= 0) check(i.texcoord_index, uvs, "texture coordinate", "vt");
-      all_normals = all_normals && i.normal_index >= 0;
-      all_uvs = all_uvs && i.texcoord_index >= 0;
+      out.all_normals = out.all_normals && i.normal_index >= 0;
+      out.all_uvs = out.all_uvs && i.texcoord_index >= 0;
       ++corners;
     }
   }
@@ -52,24 +56,65 @@ PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vec
   for (float x : attrib.vertices) {
     if (!std::isfinite(x)) throw InvalidGeometryError(where + " has a position that is not finite; fix its `v` line");
   }
+  return out;
+}
+
+/// Unit normals per vertex where the file gives none: weighted by the triangle's angle at the
+/// point (Thürmer and Wüthrich 1998), over every vertex at the same coordinates.
+PROCEDURAY_DECL std::vector<glm::vec3> angle_weighted_normals(const std::vector<glm::vec3>& positions,
+                                                              const std::vector<std::uint32_t>& indices) {
+  // Positions with equal coordinates are one point (exporters repeat them at seams and poles).
+  std::map<std::tuple<float, float, float>, std::size_t> point_of_coordinates;
+  std::vector<std::size_t> point(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const glm::vec3& p = positions[v];
+    point[v] = point_of_coordinates.try_emplace({p.x, p.y, p.z}, point_of_coordinates.size()).first->second;
+  }
+  // Unlike area weights, angle weights do not depend on how the faces were split into triangles.
+  std::vector<glm::vec3> sum(point_of_coordinates.size(), glm::vec3(0.0f));
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::vec3 p[3] = {positions[indices[t]], positions[indices[t + 1]], positions[indices[t + 2]]};
+    const glm::vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const float length = glm::length(n);
+    if (!(length > 0.0f)) continue;  // no area, no direction
+    for (std::size_t k = 0; k < 3; ++k) {
+      const glm::vec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
+      const float angle = std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
+      sum[point[indices[t + k]]] += n * (angle / length);
+    }
+  }
+  std::vector<glm::vec3> normals;
+  normals.reserve(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const glm::vec3 n = sum[point[v]];
+    const float length = glm::length(n);
+    normals.push_back(length > 0.0f ? n / length : glm::vec3(0, 0, 1));
+  }
+  return normals;
+}
+
+/// The mesh of a parsed file: corners deduplicated, indices checked, normals completed.
+PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                                 std::string_view name) {
+  const ObjCorners has = check_obj_corners(attrib, shapes, "load_obj: '" + std::string(name) + "'");
   ObjMesh mesh;
-  mesh.normals_computed = !all_normals;
+  mesh.normals_computed = !has.all_normals;
   // One vertex per distinct (position, normal, uv) triple; -1 where that part is not used.
   std::map<std::tuple<int, int, int>, std::uint32_t> vertex_of;
   for (const tinyobj::shape_t& shape : shapes) {
     for (const tinyobj::index_t& i : shape.mesh.indices) {
-      const std::tuple key(i.vertex_index, all_normals ? i.normal_index : -1, all_uvs ? i.texcoord_index : -1);
+      const std::tuple key(i.vertex_index, has.all_normals ? i.normal_index : -1, has.all_uvs ? i.texcoord_index : -1);
       auto [it, added] = vertex_of.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
       if (added) {
         const float* p = &attrib.vertices[3 * static_cast<std::size_t>(i.vertex_index)];
         mesh.positions.emplace_back(p[0], p[1], p[2]);
-        if (all_normals) {
+        if (has.all_normals) {
           const float* n = &attrib.normals[3 * static_cast<std::size_t>(i.normal_index)];
           const glm::vec3 v(n[0], n[1], n[2]);
           const float length = glm::length(v);
           mesh.normals.push_back(length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0, 0, 1));
         }
-        if (all_uvs) {
+        if (has.all_uvs) {
           const float* t = &attrib.texcoords[2 * static_cast<std::size_t>(i.texcoord_index)];
           mesh.uvs.emplace_back(t[0], t[1]);
         }
@@ -77,36 +122,7 @@ PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vec
       mesh.indices.push_back(it->second);
     }
   }
-  if (!all_normals) {
-    // Positions with equal coordinates are one point (exporters repeat them at seams and poles).
-    std::map<std::tuple<float, float, float>, std::size_t> point_of_coordinates;
-    std::vector<std::size_t> point(mesh.positions.size());
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      const glm::vec3& p = mesh.positions[v];
-      point[v] = point_of_coordinates.try_emplace({p.x, p.y, p.z}, point_of_coordinates.size()).first->second;
-    }
-    // Weighted by the triangle's angle at the point (Thürmer and Wüthrich 1998): unlike area
-    // weights, the result does not depend on how the faces were split into triangles.
-    std::vector<glm::vec3> sum(point_of_coordinates.size(), glm::vec3(0.0f));
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      const glm::vec3 p[3] = {mesh.positions[mesh.indices[t]], mesh.positions[mesh.indices[t + 1]],
-                              mesh.positions[mesh.indices[t + 2]]};
-      const glm::vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-      const float length = glm::length(n);
-      if (!(length > 0.0f)) continue;  // no area, no direction
-      for (std::size_t k = 0; k < 3; ++k) {
-        const glm::vec3 e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
-        const float angle = std::atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
-        sum[point[mesh.indices[t + k]]] += n * (angle / length);
-      }
-    }
-    mesh.normals.reserve(mesh.positions.size());
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      const glm::vec3 n = sum[point[v]];
-      const float length = glm::length(n);
-      mesh.normals.push_back(length > 0.0f ? n / length : glm::vec3(0, 0, 1));
-    }
-  }
+  if (!has.all_normals) mesh.normals = angle_weighted_normals(mesh.positions, mesh.indices);
   return mesh;
 }
 

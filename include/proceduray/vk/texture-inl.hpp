@@ -14,10 +14,10 @@ PROCEDURAY_DECL VkFormat texture_format(const TextureData& data) {
   return data.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
 }
 
-PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, const SamplerDesc& sampler,
-                                 std::string_view op)
-    : m_width(data.width), m_height(data.height), m_levels(sampler.mipmaps ? data.mip_levels() : 1),
-      m_layers(data.faces) {
+/// The format of `data`, after checking that it is well formed and that the device can take it at
+/// `levels` mip levels with `sampler`; throws UsageError or DeviceLimitError naming `op`.
+PROCEDURAY_DECL VkFormat checked_texture_format(const Context& ctx, const TextureData& data, const SamplerDesc& sampler,
+                                                std::uint32_t levels, std::string_view op) {
   const std::string what = std::string(op) + ": a " + std::to_string(data.width) + "x" + std::to_string(data.height) +
                            (data.cube() ? " cube map" : " texture");
   if (data.width == 0 || data.height == 0 || (data.faces != 1 && data.faces != 6) ||
@@ -37,7 +37,7 @@ PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, co
   vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), format, &props);
   const VkFormatFeatureFlags have = props.optimalTilingFeatures;
   VkFormatFeatureFlags need = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
-  if (m_levels > 1) need |= VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+  if (levels > 1) need |= VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
   if (sampler.filter == TextureFilter::linear) need |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
   if ((have & need) != need) {
     throw DeviceLimitError(what + " in format " + std::to_string(static_cast<int>(format)) + " cannot be " +
@@ -46,7 +46,14 @@ PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, co
                                                                                             : "blitted for mipmaps") +
                            " on " + ctx.name() + "; use TextureFilter::nearest, mipmaps = false, or RGBA8 texels");
   }
+  return format;
+}
 
+PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, const SamplerDesc& sampler,
+                                 std::string_view op)
+    : m_width(data.width), m_height(data.height), m_levels(sampler.mipmaps ? data.mip_levels() : 1),
+      m_layers(data.faces) {
+  const VkFormat format = checked_texture_format(ctx, data, sampler, m_levels, op);
   auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   info.flags = data.cube() ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
   info.imageType = VK_IMAGE_TYPE_2D;
