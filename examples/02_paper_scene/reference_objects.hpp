@@ -45,7 +45,7 @@
 // normal differences.
 #pragma once
 
-#include "../common/glsl_cpp.hpp"
+#include <proceduray/march/primitives_glsl.hpp>
 #include "paper_types.hpp"
 
 #include <proceduray/accuracy/closed_form.hpp>
@@ -57,22 +57,6 @@
 #include <cstdint>
 #include <string>
 
-namespace paper::glsl {
-using namespace proceduray_glsl_cpp;
-/// The shaders' Mandelbulb (distance estimate, animated count), in float (T = float) or double.
-template <class T>
-struct bulb {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/mandelbulb.glsl"
-};
-/// The shaders' quaternion Julia set (distance estimate, cut, animated constant).
-template <class T>
-struct julia {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/julia.glsl"
-};
-}  // namespace paper::glsl
-#undef R  // compat.glsl's literal macro; including a shared .glsl file again restores it
 
 namespace paper {
 
@@ -240,9 +224,9 @@ inline ReferenceScene reference_scene(const SceneConstants& constants, const Ref
   s.right = glm::dvec3(c.right.x, c.right.y, c.right.z);
   s.up = glm::dvec3(c.up.x, c.up.y, c.up.z);
   s.pixel_angle = c.pixel_angle;
-  s.julia_c = glm::dvec4(glsl::julia<float>::julia_animated_c(constants.time));
+  s.julia_c = glm::dvec4(proceduray::glsl::julia<float>::julia_animated_c(constants.time));
   const std::uint64_t julia = std::max(constants.knobs[julia_id].iterations, 1u),
-                      bulb = glsl::bulb<float>::mandelbulb_animated_iterations(constants.knobs[mandelbulb_id].iterations,
+                      bulb = proceduray::glsl::mandelbulb<float>::mandelbulb_animated_iterations(constants.knobs[mandelbulb_id].iterations,
                                                                                constants.time);
   if (std::max(julia, bulb) * options.iteration_factor > 1'000'000) {
     detail::refuse("iterations " + std::to_string(julia) + " (Julia), " + std::to_string(bulb) + " (Mandelbulb) times " +
@@ -323,7 +307,7 @@ inline acc::Result mandelbulb_hit(const ReferenceScene& s, const Placed& at, glm
   acc::Result r = fractal_search(s, at, [n](glm::dvec3 p) { return mandelbulb_inside(p, n); }, o, d, lo, hi);
   if (r.outcome != acc::Outcome::hit || r.starts_inside) return r;
   const double h = s.options.normal_step * s.pixel_angle * r.t / at.scale;  // object units
-  auto estimate = [n](glm::dvec3 p) { return glsl::bulb<double>::mandelbulb_distance(p, n); };
+  auto estimate = [n](glm::dvec3 p) { return proceduray::glsl::mandelbulb<double>::mandelbulb_distance(p, n); };
   r.normal = fractal_normal(estimate, at.local(o + r.t * d), h, r.evaluations);
   return r;
 }
@@ -341,7 +325,7 @@ inline acc::Result julia_hit(const ReferenceScene& s, const Placed& at, glm::dve
     return r;
   }
   const double h = s.options.normal_step * s.pixel_angle * r.t / at.scale;
-  auto estimate = [n, c](glm::dvec3 q) { return glsl::julia<double>::julia_distance(q, c, n); };
+  auto estimate = [n, c](glm::dvec3 q) { return proceduray::glsl::julia<double>::julia_distance(q, c, n); };
   r.normal = fractal_normal(estimate, p, h, r.evaluations);
   return r;
 }

@@ -44,21 +44,20 @@
 // differences.
 #pragma once
 
-#include "../common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 #include "d3d12_types.hpp"
 
 namespace d3d12::glsl {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 /// The shaders' primitives (shapes, fields, distances, marches, the knobs' entry point
 /// d3d12_intersect_knobs), in float (T = float) or double.
 template <class T>
 struct d3d12_primitives {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
   using MarchKnobs = proceduray::MarchKnobs;
-#include "../../shaders/primitives/d3d12_knobs.glsl"
+#include "primitives/d3d12_knobs.glsl"
 };
 }  // namespace d3d12::glsl
-#undef R  // compat.glsl's literal macro; including a shared .glsl file again restores it
 
 #include <proceduray/accuracy/closed_form.hpp>
 #include <proceduray/accuracy/ground_truth.hpp>

@@ -18,13 +18,13 @@ PROCEDURAY_CONST uint hit_cull_back = 1u;
 PROCEDURAY_CONST uint hit_cull_front = 2u;
 
 /// Whether the cull bits reject a hit whose outward normal is n for a ray along d.
-PROCEDURAY_INLINE bool hit_is_culled(real3 d, real3 n, uint cull) {
-  real dn = dot(d, n);
-  return ((cull & hit_cull_back) != 0u && dn > R(0.0)) || ((cull & hit_cull_front) != 0u && dn < R(0.0));
+PROCEDURAY_INLINE bool hit_is_culled(pr_real3 d, pr_real3 n, uint cull) {
+  pr_real dn = dot(d, n);
+  return ((cull & hit_cull_back) != 0u && dn > PR(0.0)) || ((cull & hit_cull_front) != 0u && dn < PR(0.0));
 }
 
 /// t in [t_min, t_max] and not culled.
-PROCEDURAY_INLINE bool hit_is_valid(real t, real t_min, real t_max, real3 d, real3 n, uint cull) {
+PROCEDURAY_INLINE bool hit_is_valid(pr_real t, pr_real t_min, pr_real t_max, pr_real3 d, pr_real3 n, uint cull) {
   return t >= t_min && t <= t_max && !hit_is_culled(d, n, cull);
 }
 

@@ -32,20 +32,20 @@ PROCEDURAY_CONST uint march_iterations_fixed = 0u;
 PROCEDURAY_CONST uint march_iterations_by_distance = 1u;
 
 /// The MarchSettings of knobs k for a ray whose object space has world_per_object world units per unit.
-PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, real world_per_object, real pixel_angle, real lipschitz) {
+PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, pr_real world_per_object, pr_real pixel_angle, pr_real lipschitz) {
 #ifdef __cplusplus
   MarchSettings m{};
 #else
   MarchSettings m;
 #endif
-  real scale = world_per_object > R(0.0) ? world_per_object : R(1.0);
+  pr_real scale = world_per_object > PR(0.0) ? world_per_object : PR(1.0);
   bool absolute = uint(k.threshold_mode) == march_threshold_absolute;
   m.max_steps = k.max_steps;
-  m.epsilon = real(absolute ? k.threshold : k.epsilon) / scale;
-  m.footprint = absolute ? R(0.0) : real(k.threshold) * pixel_angle;
+  m.epsilon = pr_real(absolute ? k.threshold : k.epsilon) / scale;
+  m.footprint = absolute ? PR(0.0) : pr_real(k.threshold) * pixel_angle;
   bool bounded = uint(k.method) == march_method_lipschitz || uint(k.method) == march_method_relaxed;
-  m.step_scale = real(k.step_scale) / (bounded && lipschitz > R(0.0) ? lipschitz : R(1.0));
-  m.over_relaxation = uint(k.method) == march_method_relaxed ? real(k.relaxation) : R(1.0);
+  m.step_scale = pr_real(k.step_scale) / (bounded && lipschitz > PR(0.0) ? lipschitz : PR(1.0));
+  m.over_relaxation = uint(k.method) == march_method_relaxed ? pr_real(k.relaxation) : PR(1.0);
   m.fixed_steps = uint(k.method) == march_method_fixed ? max(k.fixed_steps, 1u) : 0u;
   m.hit_rule = k.refine != 0u ? march_hit_refined : march_hit_unrefined;
   return m;
@@ -53,16 +53,16 @@ PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, real world_per_obje
 
 /// The hit threshold of knobs k at distance t, in world units (pixel_angle: radians per pixel):
 /// how far from the surface a hit may lie, e.g. to offset secondary rays.
-PROCEDURAY_INLINE real march_knobs_threshold(MarchKnobs k, real pixel_angle, real t) {
-  if (uint(k.threshold_mode) == march_threshold_absolute) return real(k.threshold);
-  return max(real(k.epsilon), real(k.threshold) * pixel_angle * t);
+PROCEDURAY_INLINE pr_real march_knobs_threshold(MarchKnobs k, pr_real pixel_angle, pr_real t) {
+  if (uint(k.threshold_mode) == march_threshold_absolute) return pr_real(k.threshold);
+  return max(pr_real(k.epsilon), pr_real(k.threshold) * pixel_angle * t);
 }
 
 /// The offset the knobs' difference normal (a marcher's P_normal(k.normal, p, h, field)) takes at
 /// p: normal_scale thresholds, and at least normal_offset's float spacings. Analytic normals are
 /// the geometry's own: not here.
-PROCEDURAY_INLINE real march_knobs_normal_offset(MarchKnobs k, real3 p, real threshold) {
-  return normal_offset(real(k.normal_scale) * threshold, p);
+PROCEDURAY_INLINE pr_real march_knobs_normal_offset(MarchKnobs k, pr_real3 p, pr_real threshold) {
+  return normal_offset(pr_real(k.normal_scale) * threshold, p);
 }
 
 /// Distance evaluations the knobs' normal takes.
@@ -72,11 +72,11 @@ PROCEDURAY_INLINE uint march_normal_evaluations(MarchKnobs k) {
 
 /// A fractal's iteration count where a pixel footprint is `footprint` world units wide: all of
 /// them up to iteration_detail, one fewer per doubling beyond (at least 1); fixed mode: all.
-PROCEDURAY_INLINE uint march_iterations(MarchKnobs k, real footprint) {
+PROCEDURAY_INLINE uint march_iterations(MarchKnobs k, pr_real footprint) {
   uint n = max(k.iterations, 1u);
-  if (uint(k.iteration_mode) != march_iterations_by_distance || !(footprint > real(k.iteration_detail))) return n;
-  real doublings = ceil(log2(footprint / real(k.iteration_detail)));
-  uint drop = uint(min(doublings, real(n - 1u)));
+  if (uint(k.iteration_mode) != march_iterations_by_distance || !(footprint > pr_real(k.iteration_detail))) return n;
+  pr_real doublings = ceil(log2(footprint / pr_real(k.iteration_detail)));
+  uint drop = uint(min(doublings, pr_real(n - 1u)));
   return n - drop;
 }
 

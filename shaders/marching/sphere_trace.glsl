@@ -87,10 +87,10 @@
 /// Run-time knobs of one march (see the header).
 struct MarchSettings {
   uint max_steps;
-  real epsilon;
-  real footprint;
-  real step_scale;
-  real over_relaxation;
+  pr_real epsilon;
+  pr_real footprint;
+  pr_real step_scale;
+  pr_real over_relaxation;
   uint fixed_steps;  // 0: sphere tracing; n > 0: n equal steps across [s_lo, s_hi], then the crossing's refinement
   uint hit_rule;     // march_hit_refined (0) or march_hit_unrefined (1)
 };
@@ -107,27 +107,27 @@ PROCEDURAY_CONST uint march_normal_central = 1u;
 PROCEDURAY_CONST uint march_normal_tetrahedral = 2u;
 
 /// The hit threshold at distance s along the ray.
-PROCEDURAY_INLINE real march_epsilon(MarchSettings m, real s) { return max(m.epsilon, m.footprint * s); }
+PROCEDURAY_INLINE pr_real march_epsilon(MarchSettings m, pr_real s) { return max(m.epsilon, m.footprint * s); }
 
 /// Refinement of a confirmed hit: bisection stops once [outside, inside] is at most this
 /// fraction of the threshold long (so the reported point is within it of the crossing).
-PROCEDURAY_CONST real march_refine_fraction = R(0.03125);
+PROCEDURAY_CONST pr_real march_refine_fraction = PR(0.03125);
 
 /// Probe length below the threshold: march_probe_scale times the distance, clamped to
 /// [march_probe_min, 1] thresholds (see the header).
-PROCEDURAY_CONST real march_probe_scale = R(2.0);
-PROCEDURAY_CONST real march_probe_min = R(0.015625);
+PROCEDURAY_CONST pr_real march_probe_scale = PR(2.0);
+PROCEDURAY_CONST pr_real march_probe_min = PR(0.015625);
 
 /// Float spacings (2^-23 of the largest |component| of p) that normal_offset keeps h above.
-PROCEDURAY_CONST real normal_offset_spacings = R(64.0);
+PROCEDURAY_CONST pr_real normal_offset_spacings = PR(64.0);
 
 /// The sample offset for central_normal / tetrahedral_normal at p: h, raised to normal_offset_spacings float
 /// spacings at p. At c spacings p + h rounds by up to 1/(2c) of h, differently per axis, and tilts the normal
 /// (tests/shaders/normals_test.cpp: 0.9 degree at c = 16, 0.3 at 64 out to |p| = 1e4; h under half a spacing
 /// leaves p unchanged: the fallback normal). Larger c blurs curved parts. A double build keeps the float rule.
-PROCEDURAY_INLINE real normal_offset(real h, real3 p) {
-  real m = max(abs(p.x), max(abs(p.y), abs(p.z)));
-  return max(h, normal_offset_spacings * R(1.1920928955078125e-7) * m);
+PROCEDURAY_INLINE pr_real normal_offset(pr_real h, pr_real3 p) {
+  pr_real m = max(abs(p.x), max(abs(p.y), abs(p.z)));
+  return max(h, normal_offset_spacings * PR(1.1920928955078125e-7) * m);
 }
 
 #endif

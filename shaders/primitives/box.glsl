@@ -15,12 +15,12 @@
 #include "../common/ray.glsl"
 
 /// First boundary point of [box_min, box_max] along o + t d with t in [t_lo, t_hi] that the cull bits accept.
-PROCEDURAY_INLINE bool ray_box(real3 o, real3 d, real3 box_min, real3 box_max, real t_lo, real t_hi, uint cull,
-                               PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
-  t_hit = R(0.0);
-  normal = real3(R(0.0), R(1.0), R(0.0));
-  real t_near = -R(3.0e38);  // finite stand-ins for -inf and +inf
-  real t_far = R(3.0e38);
+PROCEDURAY_INLINE bool ray_box(pr_real3 o, pr_real3 d, pr_real3 box_min, pr_real3 box_max, pr_real t_lo, pr_real t_hi, uint cull,
+                               PROCEDURAY_OUT(pr_real) t_hit, PROCEDURAY_OUT(pr_real3) normal) {
+  t_hit = PR(0.0);
+  normal = pr_real3(PR(0.0), PR(1.0), PR(0.0));
+  pr_real t_near = -PR(3.0e38);  // finite stand-ins for -inf and +inf
+  pr_real t_far = PR(3.0e38);
   int near_axis = -1;
   int far_axis = -1;
   for (int i = 0; i < 3; ++i) {
@@ -28,18 +28,18 @@ PROCEDURAY_INLINE bool ray_box(real3 o, real3 d, real3 box_min, real3 box_max, r
       if (o[i] < box_min[i] || o[i] > box_max[i]) return false;  // parallel and outside the slab
       continue;
     }
-    real inv = R(1.0) / d[i];
-    real ta = (box_min[i] - o[i]) * inv;
-    real tb = (box_max[i] - o[i]) * inv;
-    real lo = min(ta, tb);
-    real hi = max(ta, tb);
+    pr_real inv = PR(1.0) / d[i];
+    pr_real ta = (box_min[i] - o[i]) * inv;
+    pr_real tb = (box_max[i] - o[i]) * inv;
+    pr_real lo = min(ta, tb);
+    pr_real hi = max(ta, tb);
     if (lo > t_near) { t_near = lo; near_axis = i; }
     if (hi < t_far) { t_far = hi; far_axis = i; }
   }
   if (!(t_near <= t_far)) return false;
   if (near_axis >= 0) {
-    real3 n = real3(R(0.0));
-    n[near_axis] = d[near_axis] > R(0.0) ? -R(1.0) : R(1.0);
+    pr_real3 n = pr_real3(PR(0.0));
+    n[near_axis] = d[near_axis] > PR(0.0) ? -PR(1.0) : PR(1.0);
     if (hit_is_valid(t_near, t_lo, t_hi, d, n, cull)) {
       t_hit = t_near;
       normal = n;
@@ -47,8 +47,8 @@ PROCEDURAY_INLINE bool ray_box(real3 o, real3 d, real3 box_min, real3 box_max, r
     }
   }
   if (far_axis >= 0) {
-    real3 n = real3(R(0.0));
-    n[far_axis] = d[far_axis] > R(0.0) ? R(1.0) : -R(1.0);
+    pr_real3 n = pr_real3(PR(0.0));
+    n[far_axis] = d[far_axis] > PR(0.0) ? PR(1.0) : -PR(1.0);
     if (hit_is_valid(t_far, t_lo, t_hi, d, n, cull)) {
       t_hit = t_far;
       normal = n;

@@ -41,7 +41,7 @@ PROCEDURAY_CONST uint primitive_kind_count = 10u;
 struct D3d12SdfMarch {
   uint lipschitz_steps;  // 1: steps divided by the SDF's Lipschitz bound; 0: plain sphere tracing (overshoots where L > 1)
   uint normal_method;    // march_normal_central (1) or march_normal_tetrahedral (2)
-  real normal_scale;     // the differences' offset, in hit thresholds
+  pr_real normal_scale;     // the differences' offset, in hit thresholds
 };
 
 /// Lipschitz steps and central normals at the threshold: the sample's own way.
@@ -53,17 +53,17 @@ PROCEDURAY_INLINE D3d12SdfMarch d3d12_sdf_march_default() {
 #endif
   s.lipschitz_steps = 1u;
   s.normal_method = march_normal_central;
-  s.normal_scale = R(1.0);
+  s.normal_scale = PR(1.0);
   return s;
 }
 
 /// What an SDF's distance reads besides p: which of sdf.glsl's shapes, and its parameters.
 struct D3d12Sdf {
   uint kind;
-  real4 params;
+  pr_real4 params;
 };
 
-PROCEDURAY_INLINE real d3d12_sdf_distance(real3 p, D3d12Sdf f) { return sdf_distance(f.kind, p, f.params); }
+PROCEDURAY_INLINE pr_real d3d12_sdf_distance(pr_real3 p, D3d12Sdf f) { return sdf_distance(f.kind, p, f.params); }
 
 #define PROCEDURAY_MARCHER d3d12_sdf
 #define PROCEDURAY_MARCHER_FIELD D3d12Sdf
@@ -72,42 +72,42 @@ PROCEDURAY_INLINE real d3d12_sdf_distance(real3 p, D3d12Sdf f) { return sdf_dist
 #include "metaballs.glsl"
 
 /// v turned by angle a about the y axis.
-PROCEDURAY_INLINE real3 rotate_y(real3 v, real a) {
-  real c = cos(a);
-  real s = sin(a);
-  return real3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+PROCEDURAY_INLINE pr_real3 rotate_y(pr_real3 v, pr_real a) {
+  pr_real c = cos(a);
+  pr_real s = sin(a);
+  return pr_real3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
 }
 
-PROCEDURAY_INLINE bool d3d12_intersect(uint kind, real4 params, real spin, real time, real3 o, real3 d, real t_lo,
-                                       real t_hi, uint cull, MarchSettings m, uint metaball_method,
-                                       uint metaball_steps, D3d12SdfMarch sdf_march, PROCEDURAY_OUT(real) t_hit,
-                                       PROCEDURAY_OUT(real3) normal, PROCEDURAY_OUT(real) steps) {
-  t_hit = R(0.0);
-  normal = real3(R(0.0), R(1.0), R(0.0));
-  steps = R(0.0);
-  real t0 = t_lo;
-  real t1 = t_hi;
-  if (!ray_clip_aabb(o, d, real3(-R(1.0)), real3(R(1.0)), t0, t1)) return false;
-  real angle = spin * time;
-  real3 ro = rotate_y(o, -angle);
-  real3 rd = rotate_y(d, -angle);
-  real t = R(0.0);
-  real3 n = real3(R(0.0), R(1.0), R(0.0));
+PROCEDURAY_INLINE bool d3d12_intersect(uint kind, pr_real4 params, pr_real spin, pr_real time, pr_real3 o, pr_real3 d, pr_real t_lo,
+                                       pr_real t_hi, uint cull, MarchSettings m, uint metaball_method,
+                                       uint metaball_steps, D3d12SdfMarch sdf_march, PROCEDURAY_OUT(pr_real) t_hit,
+                                       PROCEDURAY_OUT(pr_real3) normal, PROCEDURAY_OUT(pr_real) steps) {
+  t_hit = PR(0.0);
+  normal = pr_real3(PR(0.0), PR(1.0), PR(0.0));
+  steps = PR(0.0);
+  pr_real t0 = t_lo;
+  pr_real t1 = t_hi;
+  if (!ray_clip_aabb(o, d, pr_real3(-PR(1.0)), pr_real3(PR(1.0)), t0, t1)) return false;
+  pr_real angle = spin * time;
+  pr_real3 ro = rotate_y(o, -angle);
+  pr_real3 rd = rotate_y(d, -angle);
+  pr_real t = PR(0.0);
+  pr_real3 n = pr_real3(PR(0.0), PR(1.0), PR(0.0));
   if (kind == primitive_box) {
-    if (!ray_box(ro, rd, -real3(params.x, params.y, params.z), real3(params.x, params.y, params.z), t0, t1, cull, t, n))
+    if (!ray_box(ro, rd, -pr_real3(params.x, params.y, params.z), pr_real3(params.x, params.y, params.z), t0, t1, cull, t, n))
       return false;
   } else if (kind == primitive_spheres) {
     if (!ray_spheres(ro, rd, params.x, t0, t1, cull, t, n)) return false;
   } else {
-    real len = length(rd);
-    if (!(len > R(0.0))) return false;
-    real3 u = rd / len;
-    real s = R(0.0);
+    pr_real len = length(rd);
+    if (!(len > PR(0.0))) return false;
+    pr_real3 u = rd / len;
+    pr_real s = PR(0.0);
     uint count = 0u;
     if (kind == primitive_metaballs) {
       bool hit = metaballs_march(ro, u, t0 * len, t1 * len, params.x, params.y, time, metaball_method, metaball_steps,
                                  m, s, n, count);
-      steps = real(count);
+      steps = pr_real(count);
       if (!hit) return false;
     } else {
 #ifdef __cplusplus
@@ -116,15 +116,15 @@ PROCEDURAY_INLINE bool d3d12_intersect(uint kind, real4 params, real spin, real 
       D3d12Sdf field = D3d12Sdf(kind, params);
 #endif
       MarchSettings ms = m;
-      ms.step_scale = m.step_scale > R(0.0) ? m.step_scale : R(1.0);
+      ms.step_scale = m.step_scale > PR(0.0) ? m.step_scale : PR(1.0);
       if (sdf_march.lipschitz_steps != 0u) ms.step_scale /= sdf_lipschitz(kind, params);
       bool hit = d3d12_sdf_trace(ro, u, t0 * len, t1 * len, ms, field, s, count);
-      steps = real(count);
+      steps = pr_real(count);
       if (!hit) return false;
       // Central differences at the threshold: smooth SDFs blur to second order only (the
       // tetrahedral form's first-order blur cost 7 to 30 degrees on the small parts at 96x64).
-      real3 p = ro + s * u;
-      real h = normal_offset(sdf_march.normal_scale * max(march_epsilon(ms, s), R(1.0e-5)), p);
+      pr_real3 p = ro + s * u;
+      pr_real h = normal_offset(sdf_march.normal_scale * max(march_epsilon(ms, s), PR(1.0e-5)), p);
       n = d3d12_sdf_normal(sdf_march.normal_method, p, h, field);
     }
     t = s / len;

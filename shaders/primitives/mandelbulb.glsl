@@ -15,35 +15,35 @@
 #include "../common/compat.glsl"
 
 /// Escape radius of the orbit.
-PROCEDURAY_CONST real mandelbulb_bailout = R(2.0);
+PROCEDURAY_CONST pr_real mandelbulb_bailout = PR(2.0);
 
 /// Distance estimate to the power-8 Mandelbulb after `iterations` steps (0 inside).
-PROCEDURAY_INLINE real mandelbulb_distance(real3 p, uint iterations) {
-  real3 z = p;
-  real dr = R(1.0);
-  real r = length(z);
+PROCEDURAY_INLINE pr_real mandelbulb_distance(pr_real3 p, uint iterations) {
+  pr_real3 z = p;
+  pr_real dr = PR(1.0);
+  pr_real r = length(z);
   for (uint i = 0u; i < iterations && r <= mandelbulb_bailout; ++i) {
-    real r2 = r * r;
-    real r4 = r2 * r2;
-    dr = R(8.0) * r4 * r2 * r * dr + R(1.0);
-    real3 zn = real3(R(0.0));
-    if (r > R(0.0)) {
-      real theta = R(8.0) * acos(clamp(z.y / r, -R(1.0), R(1.0)));
-      real phi = (z.x == R(0.0) && z.z == R(0.0)) ? R(0.0) : R(8.0) * atan(z.x, z.z);
-      zn = (r4 * r4) * real3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
+    pr_real r2 = r * r;
+    pr_real r4 = r2 * r2;
+    dr = PR(8.0) * r4 * r2 * r * dr + PR(1.0);
+    pr_real3 zn = pr_real3(PR(0.0));
+    if (r > PR(0.0)) {
+      pr_real theta = PR(8.0) * acos(clamp(z.y / r, -PR(1.0), PR(1.0)));
+      pr_real phi = (z.x == PR(0.0) && z.z == PR(0.0)) ? PR(0.0) : PR(8.0) * atan(z.x, z.z);
+      zn = (r4 * r4) * pr_real3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
     }
     z = zn + p;
     r = length(z);
   }
-  if (r <= mandelbulb_bailout) return R(0.0);
-  return R(0.5) * r * log(r) / dr;
+  if (r <= mandelbulb_bailout) return PR(0.0);
+  return PR(0.5) * r * log(r) / dr;
 }
 
 /// Iteration count at `time`: starts at max_iterations and steps down by one twice a second,
 /// wrapping back to max_iterations after 1 (the report's animated Mandelbulb).
-PROCEDURAY_INLINE uint mandelbulb_animated_iterations(uint max_iterations, real time) {
+PROCEDURAY_INLINE uint mandelbulb_animated_iterations(uint max_iterations, pr_real time) {
   uint n = max(max_iterations, 1u);
-  uint k = uint(min(max(time, R(0.0)) * R(2.0), R(1.0e9)));  // clamped: out-of-range float-to-uint is undefined
+  uint k = uint(min(max(time, PR(0.0)) * PR(2.0), PR(1.0e9)));  // clamped: out-of-range float-to-uint is undefined
   return n - k % n;
 }
 

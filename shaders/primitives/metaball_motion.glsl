@@ -11,17 +11,17 @@
 #include "metaballs.glsl"
 
 /// Source i at `time`: centre + amplitude * sin(frequency * time + phase), per axis.
-PROCEDURAY_INLINE real3 metaball_position_at(Metaball b, real time) {
+PROCEDURAY_INLINE pr_real3 metaball_position_at(Metaball b, pr_real time) {
   return b.centre + b.amplitude * sin(b.frequency * time + b.phase);
 }
 
 /// The block's sources at `time` (at most metaball_max; a count over it is cut there).
-PROCEDURAY_INLINE MetaballList metaballs_at(Metaballs blob, real time) {
+PROCEDURAY_INLINE MetaballList metaballs_at(Metaballs blob, pr_real time) {
   MetaballList list;
   list.count = min(blob.count, metaball_max);
   for (uint i = 0u; i < metaball_max; ++i) {
-    real3 c = i < list.count ? metaball_position_at(blob.ball[i], time) : real3(R(0.0));
-    list.ball[i] = real4(c.x, c.y, c.z, i < list.count ? blob.ball[i].radius : R(0.0));
+    pr_real3 c = i < list.count ? metaball_position_at(blob.ball[i], time) : pr_real3(PR(0.0));
+    list.ball[i] = pr_real4(c.x, c.y, c.z, i < list.count ? blob.ball[i].radius : PR(0.0));
   }
   return list;
 }

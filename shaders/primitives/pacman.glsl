@@ -19,17 +19,17 @@
 #include "sphere.glsl"
 
 /// Narrows [w0, w1] to where o + t d lies in {dot(n, p) <= 0}; `face` records which plane bounds it.
-PROCEDURAY_INLINE void pacman_clip_half_space(real3 o, real3 d, real3 n, int id, PROCEDURAY_INOUT(real) w0,
-                                              PROCEDURAY_INOUT(real) w1, PROCEDURAY_INOUT(int) face0,
+PROCEDURAY_INLINE void pacman_clip_half_space(pr_real3 o, pr_real3 d, pr_real3 n, int id, PROCEDURAY_INOUT(pr_real) w0,
+                                              PROCEDURAY_INOUT(pr_real) w1, PROCEDURAY_INOUT(int) face0,
                                               PROCEDURAY_INOUT(int) face1) {
-  real dn = dot(n, d);
-  real on = dot(n, o);
-  if (abs(dn) <= R(1.0e-20)) {  // parallel to the plane: inside for every t, or for none
-    if (on > R(0.0)) w1 = w0 - R(1.0);
+  pr_real dn = dot(n, d);
+  pr_real on = dot(n, o);
+  if (abs(dn) <= PR(1.0e-20)) {  // parallel to the plane: inside for every t, or for none
+    if (on > PR(0.0)) w1 = w0 - PR(1.0);
     return;
   }
-  real t = -on / dn;
-  if (dn > R(0.0)) {
+  pr_real t = -on / dn;
+  if (dn > PR(0.0)) {
     if (t < w1) { w1 = t; face1 = id; }
   } else {
     if (t > w0) { w0 = t; face0 = id; }
@@ -37,25 +37,25 @@ PROCEDURAY_INLINE void pacman_clip_half_space(real3 o, real3 d, real3 n, int id,
 }
 
 /// First boundary of sphere-minus-wedge with t in [t_lo, t_hi]: its t and outward object-space normal.
-PROCEDURAY_INLINE bool pacman_intersect(real3 o, real3 d, real half_angle, real t_lo, real t_hi,
-                                        PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
-  t_hit = R(0.0);
-  normal = real3(R(0.0), R(0.0), R(1.0));
-  real s0, s1;
-  if (!ray_sphere(o, d, real3(R(0.0)), R(1.0), s0, s1)) return false;
-  real c = cos(half_angle);
-  real s = sin(half_angle);
-  real3 n1 = real3(R(0.0), c, -s);
-  real3 n2 = real3(R(0.0), -c, -s);
-  real w0 = s0;
-  real w1 = s1;
+PROCEDURAY_INLINE bool pacman_intersect(pr_real3 o, pr_real3 d, pr_real half_angle, pr_real t_lo, pr_real t_hi,
+                                        PROCEDURAY_OUT(pr_real) t_hit, PROCEDURAY_OUT(pr_real3) normal) {
+  t_hit = PR(0.0);
+  normal = pr_real3(PR(0.0), PR(0.0), PR(1.0));
+  pr_real s0, s1;
+  if (!ray_sphere(o, d, pr_real3(PR(0.0)), PR(1.0), s0, s1)) return false;
+  pr_real c = cos(half_angle);
+  pr_real s = sin(half_angle);
+  pr_real3 n1 = pr_real3(PR(0.0), c, -s);
+  pr_real3 n2 = pr_real3(PR(0.0), -c, -s);
+  pr_real w0 = s0;
+  pr_real w1 = s1;
   int face0 = 0;  // 0: the sphere bounds the wedge interval; 1, 2: plane n_1, n_2
   int face1 = 0;
   pacman_clip_half_space(o, d, n1, 1, w0, w1, face0, face1);
   pacman_clip_half_space(o, d, n2, 2, w0, w1, face0, face1);
   bool wedge = w0 < w1;
   // Candidate boundary points in ray order, each with its face (0 sphere, 1 or 2 a plane).
-  real ts[4];
+  pr_real ts[4];
   int faces[4];
   int count = 0;
   if (!wedge) {
@@ -75,9 +75,9 @@ PROCEDURAY_INLINE bool pacman_intersect(real3 o, real3 d, real half_angle, real 
   for (int i = 0; i < count; ++i) {
     if (ts[i] >= t_lo && ts[i] <= t_hi) {
       t_hit = ts[i];
-      real3 p = o + ts[i] * d;
+      pr_real3 p = o + ts[i] * d;
       normal = faces[i] == 1 ? -n1 : (faces[i] == 2 ? -n2 : p);
-      if (faces[i] == 0) normal = dot(p, p) > R(1.0e-30) ? normal * inversesqrt(dot(p, p)) : real3(R(0.0), R(0.0), R(1.0));
+      if (faces[i] == 0) normal = dot(p, p) > PR(1.0e-30) ? normal * inversesqrt(dot(p, p)) : pr_real3(PR(0.0), PR(0.0), PR(1.0));
       return true;
     }
   }

@@ -12,22 +12,22 @@
 
 #include "../common/compat.glsl"
 
-PROCEDURAY_INLINE bool ray_sphere(real3 origin, real3 direction, real3 centre, real radius, PROCEDURAY_OUT(real) t_near,
-                                  PROCEDURAY_OUT(real) t_far) {
-  real3 f = origin - centre;
-  real a = dot(direction, direction);
-  real b = dot(f, direction);
-  t_near = R(0.0);
-  t_far = R(0.0);
-  if (!(a > R(0.0))) return false;  // zero direction: no line, and b / a would be NaN
-  real3 closest = f - (b / a) * direction;  // from the centre to the line's closest point
-  real disc = a * (radius * radius - dot(closest, closest));
-  if (disc < R(0.0)) return false;
-  real q = -(b + (b >= R(0.0) ? R(1.0) : -R(1.0)) * sqrt(disc));
-  if (q == R(0.0)) return true;  // tangent ray through the origin's foot: both roots are 0
-  real c = dot(f, f) - radius * radius;
-  real ta = c / q;
-  real tb = q / a;
+PROCEDURAY_INLINE bool ray_sphere(pr_real3 origin, pr_real3 direction, pr_real3 centre, pr_real radius, PROCEDURAY_OUT(pr_real) t_near,
+                                  PROCEDURAY_OUT(pr_real) t_far) {
+  pr_real3 f = origin - centre;
+  pr_real a = dot(direction, direction);
+  pr_real b = dot(f, direction);
+  t_near = PR(0.0);
+  t_far = PR(0.0);
+  if (!(a > PR(0.0))) return false;  // zero direction: no line, and b / a would be NaN
+  pr_real3 closest = f - (b / a) * direction;  // from the centre to the line's closest point
+  pr_real disc = a * (radius * radius - dot(closest, closest));
+  if (disc < PR(0.0)) return false;
+  pr_real q = -(b + (b >= PR(0.0) ? PR(1.0) : -PR(1.0)) * sqrt(disc));
+  if (q == PR(0.0)) return true;  // tangent ray through the origin's foot: both roots are 0
+  pr_real c = dot(f, f) - radius * radius;
+  pr_real ta = c / q;
+  pr_real tb = q / a;
   t_near = min(ta, tb);
   t_far = max(ta, tb);
   return true;

@@ -13,7 +13,7 @@
 PROCEDURAY_INLINE SphereList sphere_list(SphereSet set) {
   SphereList list;
   list.count = min(set.count, spheres_max);
-  for (uint i = 0u; i < spheres_max; ++i) list.sphere[i] = i < list.count ? set.sphere[i] : real4(R(0.0));
+  for (uint i = 0u; i < spheres_max; ++i) list.sphere[i] = i < list.count ? set.sphere[i] : pr_real4(PR(0.0));
   return list;
 }
 

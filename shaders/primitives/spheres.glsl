@@ -23,30 +23,30 @@ PROCEDURAY_CONST uint spheres_max = 8u;
 
 /// Spheres as data: sphere[i].xyz the centre, sphere[i].w the radius; the first `count` count.
 struct SphereList {
-  real4 sphere[spheres_max];
+  pr_real4 sphere[spheres_max];
   uint count;
 };
 
 /// Sphere i: xyz centre, w radius (before radius_scale).
-PROCEDURAY_INLINE real4 spheres_centre_radius(uint i) {
-  if (i == 0u) return real4(-R(0.3), -R(0.3), -R(0.3), R(0.6));
-  if (i == 1u) return real4(R(0.1), R(0.1), R(0.4), R(0.3));
-  return real4(R(0.35), R(0.35), R(0.0), R(0.15));
+PROCEDURAY_INLINE pr_real4 spheres_centre_radius(uint i) {
+  if (i == 0u) return pr_real4(-PR(0.3), -PR(0.3), -PR(0.3), PR(0.6));
+  if (i == 1u) return pr_real4(PR(0.1), PR(0.1), PR(0.4), PR(0.3));
+  return pr_real4(PR(0.35), PR(0.35), PR(0.0), PR(0.15));
 }
 
 /// First valid point of one sphere's boundary (entry, else exit) in [t_lo, t_hi].
-PROCEDURAY_INLINE bool ray_sphere_first(real3 o, real3 d, real3 centre, real radius, real t_lo, real t_hi, uint cull,
-                                        PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
-  t_hit = R(0.0);
-  normal = real3(R(0.0), R(1.0), R(0.0));
-  real ta, tb;
-  if (!(radius > R(0.0)) || !ray_sphere(o, d, centre, radius, ta, tb)) return false;
+PROCEDURAY_INLINE bool ray_sphere_first(pr_real3 o, pr_real3 d, pr_real3 centre, pr_real radius, pr_real t_lo, pr_real t_hi, uint cull,
+                                        PROCEDURAY_OUT(pr_real) t_hit, PROCEDURAY_OUT(pr_real3) normal) {
+  t_hit = PR(0.0);
+  normal = pr_real3(PR(0.0), PR(1.0), PR(0.0));
+  pr_real ta, tb;
+  if (!(radius > PR(0.0)) || !ray_sphere(o, d, centre, radius, ta, tb)) return false;
   for (int k = 0; k < 2; ++k) {
-    real t = k == 0 ? ta : tb;
-    real3 n = (o + t * d - centre) / radius;
+    pr_real t = k == 0 ? ta : tb;
+    pr_real3 n = (o + t * d - centre) / radius;
     if (hit_is_valid(t, t_lo, t_hi, d, n, cull)) {
       t_hit = t;
-      normal = safe_normalize(n, real3(R(0.0), R(1.0), R(0.0)));
+      normal = safe_normalize(n, pr_real3(PR(0.0), PR(1.0), PR(0.0)));
       return true;
     }
   }
@@ -56,34 +56,34 @@ PROCEDURAY_INLINE bool ray_sphere_first(real3 o, real3 d, real3 centre, real rad
 /// The D3D12 sample's three spheres as a list.
 PROCEDURAY_INLINE SphereList spheres_sample() {
   SphereList list;
-  for (uint i = 0u; i < spheres_max; ++i) list.sphere[i] = i < spheres_count ? spheres_centre_radius(i) : real4(R(0.0));
+  for (uint i = 0u; i < spheres_max; ++i) list.sphere[i] = i < spheres_count ? spheres_centre_radius(i) : pr_real4(PR(0.0));
   list.count = spheres_count;
   return list;
 }
 
 /// The nearest valid hit over the list's spheres (at most spheres_max), radii times radius_scale.
-PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, SphereList spheres, real radius_scale, real t_lo, real t_hi,
-                                   uint cull, PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
+PROCEDURAY_INLINE bool ray_spheres(pr_real3 o, pr_real3 d, SphereList spheres, pr_real radius_scale, pr_real t_lo, pr_real t_hi,
+                                   uint cull, PROCEDURAY_OUT(pr_real) t_hit, PROCEDURAY_OUT(pr_real3) normal) {
   bool found = false;
   t_hit = t_hi;
-  normal = real3(R(0.0), R(1.0), R(0.0));
+  normal = pr_real3(PR(0.0), PR(1.0), PR(0.0));
   for (uint i = 0u; i < min(spheres.count, spheres_max); ++i) {
-    real4 s = spheres.sphere[i];
-    real t;
-    real3 n;
-    if (ray_sphere_first(o, d, real3(s.x, s.y, s.z), s.w * radius_scale, t_lo, t_hit, cull, t, n)) {
+    pr_real4 s = spheres.sphere[i];
+    pr_real t;
+    pr_real3 n;
+    if (ray_sphere_first(o, d, pr_real3(s.x, s.y, s.z), s.w * radius_scale, t_lo, t_hit, cull, t, n)) {
       found = true;
       t_hit = t;
       normal = n;
     }
   }
-  if (!found) t_hit = R(0.0);
+  if (!found) t_hit = PR(0.0);
   return found;
 }
 
 /// The D3D12 sample's three spheres, radii times radius_scale.
-PROCEDURAY_INLINE bool ray_spheres(real3 o, real3 d, real radius_scale, real t_lo, real t_hi, uint cull,
-                                   PROCEDURAY_OUT(real) t_hit, PROCEDURAY_OUT(real3) normal) {
+PROCEDURAY_INLINE bool ray_spheres(pr_real3 o, pr_real3 d, pr_real radius_scale, pr_real t_lo, pr_real t_hi, uint cull,
+                                   PROCEDURAY_OUT(pr_real) t_hit, PROCEDURAY_OUT(pr_real3) normal) {
   return ray_spheres(o, d, spheres_sample(), radius_scale, t_lo, t_hi, cull, t_hit, normal);
 }
 

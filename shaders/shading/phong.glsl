@@ -12,19 +12,19 @@
 #include "../common/compat.glsl"
 
 /// Diffuse plus specular reflection of one light; no ambient term.
-PROCEDURAY_INLINE real3 phong(real3 albedo, real3 n, real3 l, real3 v, real3 light_colour, real diffuse, real specular,
-                             real shininess) {
-  real n_dot_l = max(dot(n, l), R(0.0));
-  real3 r = R(2.0) * dot(n, l) * n - l;  // l mirrored about n
-  real spec = n_dot_l > R(0.0) ? pow(max(dot(r, v), R(0.0)), max(shininess, R(1.0))) : R(0.0);
-  return light_colour * (diffuse * n_dot_l * albedo + specular * spec * real3(R(1.0)));
+PROCEDURAY_INLINE pr_real3 phong(pr_real3 albedo, pr_real3 n, pr_real3 l, pr_real3 v, pr_real3 light_colour, pr_real diffuse, pr_real specular,
+                             pr_real shininess) {
+  pr_real n_dot_l = max(dot(n, l), PR(0.0));
+  pr_real3 r = PR(2.0) * dot(n, l) * n - l;  // l mirrored about n
+  pr_real spec = n_dot_l > PR(0.0) ? pow(max(dot(r, v), PR(0.0)), max(shininess, PR(1.0))) : PR(0.0);
+  return light_colour * (diffuse * n_dot_l * albedo + specular * spec * pr_real3(PR(1.0)));
 }
 
 /// Schlick's Fresnel reflectance for normal-incidence reflectance f0 at cos_theta = dot(n, v).
-PROCEDURAY_INLINE real schlick_fresnel(real f0, real cos_theta) {
-  real m = clamp(R(1.0) - cos_theta, R(0.0), R(1.0));
-  real m2 = m * m;
-  return f0 + (R(1.0) - f0) * m2 * m2 * m;
+PROCEDURAY_INLINE pr_real schlick_fresnel(pr_real f0, pr_real cos_theta) {
+  pr_real m = clamp(PR(1.0) - cos_theta, PR(0.0), PR(1.0));
+  pr_real m2 = m * m;
+  return f0 + (PR(1.0) - f0) * m2 * m2 * m;
 }
 
 #endif

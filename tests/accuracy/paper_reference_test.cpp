@@ -6,41 +6,40 @@
 #include "02_paper_scene/reference.hpp"
 
 namespace paper_reference_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 /// The shaders' Pac-man CSG in double.
 template <class T>
 struct pac {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/pacman.glsl"
+#include "primitives/pacman.glsl"
 };
 /// march.glsl's marcher in float on one fractal: kind 0 the Mandelbulb, 1 the cut Julia set.
 template <int kind>
 struct march {
   PROCEDURAY_GLSL_CPP_SCALAR(float)
   static inline uint count = 1;   // the iteration count the shader uses at this time
-  static inline real4 c{0.0f};    // the Julia constant
+  static inline pr_real4 c{0.0f};    // the Julia constant
   /// What the distance reads besides p (the shaders' Bulb and Julia fields).
   struct Field {
     uint count;
-    real4 c;
+    pr_real4 c;
   };
-  static real field_distance(real3 p, Field f) {
+  static pr_real field_distance(pr_real3 p, Field f) {
     if constexpr (kind == 0) {
-      return paper::glsl::bulb<float>::mandelbulb_distance(p, f.count);
+      return proceduray::glsl::mandelbulb<float>::mandelbulb_distance(p, f.count);
     } else {
-      return paper::glsl::julia<float>::julia_cut_distance(p, f.c, f.count, paper::julia_cut);  // julia.rint's cut
+      return proceduray::glsl::julia<float>::julia_cut_distance(p, f.c, f.count, paper::julia_cut);  // julia.rint's cut
     }
   }
 #define PROCEDURAY_MARCHER field
 #define PROCEDURAY_MARCHER_FIELD Field
 #define PROCEDURAY_MARCHER_DISTANCE field_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
   using MarchKnobs = proceduray::MarchKnobs;
-#include "../../shaders/common/ray.glsl"
-#include "../../shaders/marching/knobs.glsl"
+#include "common/ray.glsl"
+#include "marching/knobs.glsl"
 };
 }  // namespace paper_reference_test
-#undef R
 
 #include <doctest/doctest.h>
 
@@ -111,9 +110,9 @@ World world_of(paper::ObjectId id) {
 /// the paper's defaults, 8 Mandelbulb and 10 Julia iterations.
 bool estimate_inside(paper::ObjectId id, glm::dvec3 p) {
   REQUIRE(constants().time == 0.0f);
-  if (id == paper::mandelbulb_id) return paper::glsl::bulb<double>::mandelbulb_distance(p, 8u) == 0.0;
-  const glm::dvec4 c(paper::glsl::julia<float>::julia_animated_c(0.0f));
-  return paper::glsl::julia<double>::julia_distance(p, c, 10u) == 0.0 &&
+  if (id == paper::mandelbulb_id) return proceduray::glsl::mandelbulb<double>::mandelbulb_distance(p, 8u) == 0.0;
+  const glm::dvec4 c(proceduray::glsl::julia<float>::julia_animated_c(0.0f));
+  return proceduray::glsl::julia<double>::julia_distance(p, c, 10u) == 0.0 &&
          glm::dot(glm::dvec3(0.27617f, 0.27617f, 0.92057f), p) <= double(0.1f);
 }
 
@@ -334,9 +333,9 @@ Agreement compare(paper::ObjectId id, const proceduray::Aabb& box) {
 
 TEST_CASE("paper reference: the float sphere tracer lands at the reference surface") {
   const paper::SceneConstants& k = constants();
-  march<0>::count = paper::glsl::bulb<float>::mandelbulb_animated_iterations(k.knobs[paper::mandelbulb_id].iterations, k.time);
+  march<0>::count = proceduray::glsl::mandelbulb<float>::mandelbulb_animated_iterations(k.knobs[paper::mandelbulb_id].iterations, k.time);
   march<1>::count = std::max(k.knobs[paper::julia_id].iterations, 1u);
-  march<1>::c = paper::glsl::julia<float>::julia_animated_c(k.time);
+  march<1>::c = proceduray::glsl::julia<float>::julia_animated_c(k.time);
   const Agreement bulb = compare<0>(paper::mandelbulb_id, paper::mandelbulb_aabb);
   const Agreement julia = compare<1>(paper::julia_id, paper::julia_aabb);
   for (const auto& [name, a] : {std::pair{std::string("Mandelbulb"), &bulb}, std::pair{std::string("Julia"), &julia}}) {

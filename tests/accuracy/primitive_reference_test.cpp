@@ -1,5 +1,5 @@
 // The searchers of proceduray/accuracy/ground_truth.hpp on the library's own primitives, with
-// the shared GLSL compiled as C++ in double (examples/common/glsl_cpp.hpp): the power-8
+// the shared GLSL compiled as C++ in double (proceduray/shader/glsl_cpp.hpp): the power-8
 // Mandelbulb by its escape test (written here, not the shader's distance estimate), and the
 // Pac-man by membership and by a 1-Lipschitz bound, against pacman.glsl's interval CSG.
 #include "proceduray/accuracy/closed_form.hpp"
@@ -12,30 +12,29 @@
 #include <random>
 #include <vector>
 
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace primitive_reference_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 template <class T>
 struct bulb {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/mandelbulb.glsl"
+#include "primitives/mandelbulb.glsl"
   struct Bulb {
     uint iterations;
   };
-  static real bulb_distance(real3 p, Bulb b) { return mandelbulb_distance(p, b.iterations); }
+  static pr_real bulb_distance(pr_real3 p, Bulb b) { return mandelbulb_distance(p, b.iterations); }
 #define PROCEDURAY_MARCHER bulb
 #define PROCEDURAY_MARCHER_FIELD Bulb
 #define PROCEDURAY_MARCHER_DISTANCE bulb_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 };
 template <class T>
 struct pac {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/pacman.glsl"
+#include "primitives/pacman.glsl"
 };
 }  // namespace primitive_reference_test
-#undef R
 
 using namespace proceduray::accuracy;
 using primitive_reference_test::bulb;

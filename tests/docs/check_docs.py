@@ -18,7 +18,8 @@ more spaces after `//` (`//   code`), with blank `//` lines allowed inside; the 
 (`// text`) after it ends it. Inside a block (a header's or a page's ```cpp block):
   - `...` stands for what the reader fills in; it is dropped (so `Arguments{...}` compiles as `Arguments{}`,
     `f(...)` as `f()`). Write a block so that it still compiles with the dots removed.
-  - `#include` lines are moved to the top of the batch; a prelude line `// @skip-include "x.hpp"`
+  - `#include` lines are moved to the top of the batch (a `.glsl` file's stays where it is: GLSL
+    compiled as C++ goes inside the scope around it); a prelude line `// @skip-include "x.hpp"`
     drops the block's include of a file that exists only in the example (the prelude declares it).
   - lines at the block's own indentation that start a declaration (struct, class, enum, using,
     namespace, template, inline, constexpr, int main, PROCEDURAY_*) go at namespace scope with the lines
@@ -281,6 +282,9 @@ def split_block(block, skipped_includes):
         code = code.replace('...', '')
         stripped = code.strip()
         indent = len(code) - len(code.lstrip())
+        if stripped.startswith('#include') and stripped.split()[1].rstrip('">').endswith('.glsl'):
+            target.append((number, code))  # GLSL compiled as C++: it belongs where it stands (glsl_cpp.hpp)
+            continue
         if stripped.startswith('#include'):
             if stripped.split()[1] not in skipped_includes:
                 includes.append((number, stripped))

@@ -1,15 +1,14 @@
 // examples/03_d3d12_scene: the host checks, the hit table, and every primitive rendered alone
 // through the Renderer against the same GLSL compiled as C++ (coverage, AABB clip, no NaN).
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <proceduray/march/knobs.hpp>
 
 namespace d3d12_cpu {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 using proceduray::MarchKnobs;
-#include "../../shaders/primitives/d3d12_knobs.glsl"
+#include "primitives/d3d12_knobs.glsl"
 }  // namespace d3d12_cpu
-#undef R  // compat.glsl's literal macro: the headers below may use the name
 
 #include "vk/test_context.hpp"
 

@@ -5,13 +5,12 @@
 // the closed form in double from the exact eye and centre. Without re-origin the error grows
 // with 10^k (coordinates rounded to |x| 2^-24) until it is many pixel footprints; with the
 // origin at the eye it stays at float rounding of t whatever k is.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace world_origin_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/sphere.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/sphere.glsl"
 }  // namespace world_origin_test
-#undef R
 
 #include <proceduray/accuracy/closed_form.hpp>
 #include <proceduray/accuracy/percentiles.hpp>

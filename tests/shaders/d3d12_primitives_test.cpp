@@ -2,11 +2,11 @@
 // sdf.glsl, d3d12_primitives.glsl), compiled as C++: hits where the closed form says, axis-parallel
 // and inside-origin rays, cull bits, the two metaball marches agreeing, Lipschitz bounds holding,
 // the AABB clip, and no NaN over many rays and degenerate parameters.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace d3d12_primitives_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/d3d12_primitives.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/d3d12_primitives.glsl"
 }  // namespace d3d12_primitives_test
 
 #include <doctest/doctest.h>

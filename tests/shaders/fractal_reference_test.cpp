@@ -7,26 +7,25 @@
 // precision's probe lands in a speck the other's steps over). So at this view the hit rule
 // and the set's fine structure, not float, set the accuracy; the test fails if float
 // marching drifts from that.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace fractal_reference_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 template <class T>
 struct bulb {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/mandelbulb.glsl"
+#include "primitives/mandelbulb.glsl"
   /// What the marcher reads besides p: the iteration count.
   struct Bulb {
     uint iterations;
   };
-  static real bulb_distance(real3 p, Bulb b) { return mandelbulb_distance(p, b.iterations); }
+  static pr_real bulb_distance(pr_real3 p, Bulb b) { return mandelbulb_distance(p, b.iterations); }
 #define PROCEDURAY_MARCHER bulb
 #define PROCEDURAY_MARCHER_FIELD Bulb
 #define PROCEDURAY_MARCHER_DISTANCE bulb_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 };
 }  // namespace fractal_reference_test
-#undef R
 
 #include <doctest/doctest.h>
 

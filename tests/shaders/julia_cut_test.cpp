@@ -12,8 +12,8 @@
 #include "02_paper_scene/reference_objects.hpp"
 
 namespace julia_cut_test {
-using namespace proceduray_glsl_cpp;
-using julia = paper::glsl::julia<float>;
+using namespace proceduray::glsl_cpp;
+using julia = proceduray::glsl::julia<float>;
 /// julia.rint's constant, count and plane, as the GPU holds them (paper scene at time 0).
 inline const paper::SceneConstants constants = paper::default_constants(320, 240, 0.0f);
 inline const glm::vec4 julia_c = julia::julia_animated_c(constants.time);
@@ -21,16 +21,16 @@ inline const std::uint32_t julia_count = std::max(constants.knobs[paper::julia_i
 inline const proceduray::MarchKnobs& knobs = constants.knobs[paper::julia_id];
 inline const glm::vec4 cut_plane = glm::vec4(paper::julia_cut_plane);
 inline float march_distance(vec3 p) { return julia::julia_cut_distance(p, julia_c, julia_count, cut_plane); }
-#include "../../shaders/common/ray.glsl"
+#include "common/ray.glsl"
 using MarchKnobs = proceduray::MarchKnobs;
-#include "../../shaders/marching/knobs.glsl"
+#include "marching/knobs.glsl"
 /// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
 struct Shape {};
 inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 }  // namespace julia_cut_test
 
 #include <doctest/doctest.h>

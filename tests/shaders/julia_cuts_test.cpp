@@ -2,13 +2,12 @@
 // figure 4 cuts its Julia set by two planes; the planes are data (proceduray::CutPlanes).
 #include <proceduray/march/cut_planes.hpp>
 
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace julia_cuts_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/julia.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/julia.glsl"
 }  // namespace julia_cuts_test
-#undef R
 
 #include <doctest/doctest.h>
 

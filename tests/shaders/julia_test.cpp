@@ -1,9 +1,9 @@
 // Tests for shaders/primitives/julia.glsl, compiled as C++: the quaternion Julia estimate and the cut.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace julia_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/julia.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/julia.glsl"
 }  // namespace julia_test
 
 #include "02_paper_scene/paper_types.hpp"

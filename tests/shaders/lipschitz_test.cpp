@@ -17,55 +17,54 @@
 //     (sharper than sdf.glsl's 1 + k rho); rho <= sqrt(2) in the AABB [-1, 1]^3 that bounds the march.
 // Ground truth: accuracy::lipschitz_search with the true bound in double on the same shape
 // functions (the march is not shared), on the AABB-clipped ray.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <cstdint>
 
 namespace lipschitz_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 template <class T>
 struct lib {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/sdf.glsl"
-#include "../../shaders/common/ray.glsl"
+#include "primitives/sdf.glsl"
+#include "common/ray.glsl"
 
   static constexpr uint ellipsoid_raw = 0u, ellipsoid_min = 1u, blend_spheres = 2u, blend_raw = 3u,
                         twisted_torus = 4u, twisted_plate = 5u, shape_count = 6u;
   static constexpr T torus_twist = T(3), plate_twist = T(4);
 
-  static real3 ellipsoid_radii() { return real3(T(0.9), T(0.12), T(0.6)); }
-  static real ellipsoid(real3 p) { return sdf_sphere(p / ellipsoid_radii(), T(1)); }
+  static pr_real3 ellipsoid_radii() { return pr_real3(T(0.9), T(0.12), T(0.6)); }
+  static pr_real ellipsoid(pr_real3 p) { return sdf_sphere(p / ellipsoid_radii(), T(1)); }
 
   /// Quilez's polynomial smooth minimum, blend width k.
-  static real smooth_min(real a, real b, real k) {
-    real h = clamp(T(0.5) + T(0.5) * (b - a) / k, T(0), T(1));
+  static pr_real smooth_min(pr_real a, pr_real b, pr_real k) {
+    pr_real h = clamp(T(0.5) + T(0.5) * (b - a) / k, T(0), T(1));
     return mix(b, a, h) - k * h * (T(1) - h);
   }
 
-  static real distance(uint shape, real3 p) {
+  static pr_real distance(uint shape, pr_real3 p) {
     if (shape == ellipsoid_raw) return ellipsoid(p);
     if (shape == ellipsoid_min) return ellipsoid(p) * T(0.12);
     if (shape == blend_spheres) {
-      return smooth_min(sdf_sphere(p - real3(T(-0.35), T(0), T(0)), T(0.45)),
-                        sdf_sphere(p - real3(T(0.4), T(0.1), T(0)), T(0.3)), T(0.3));
+      return smooth_min(sdf_sphere(p - pr_real3(T(-0.35), T(0), T(0)), T(0.45)),
+                        sdf_sphere(p - pr_real3(T(0.4), T(0.1), T(0)), T(0.3)), T(0.3));
     }
-    if (shape == blend_raw) return smooth_min(sdf_sphere(p - real3(T(0), T(0.45), T(0)), T(0.3)), ellipsoid(p), T(0.3));
+    if (shape == blend_raw) return smooth_min(sdf_sphere(p - pr_real3(T(0), T(0.45), T(0)), T(0.3)), ellipsoid(p), T(0.3));
     if (shape == twisted_torus) return sdf_twisted_torus_distance(p, torus_twist);
-    return sdf_box(sdf_twist(p, plate_twist), real3(T(0.7), T(0.9), T(0.06)));
+    return sdf_box(sdf_twist(p, plate_twist), pr_real3(T(0.7), T(0.9), T(0.06)));
   }
 
   static inline uint shape = 0u;  // what march_distance marches
-  static real march_distance(real3 p) { return distance(shape, p); }
-#include "../../shaders/marching/sphere_trace.glsl"
+  static pr_real march_distance(pr_real3 p) { return distance(shape, p); }
+#include "marching/sphere_trace.glsl"
   struct Shape {};
-  static real shape_distance(real3 p, Shape) { return march_distance(p); }
+  static pr_real shape_distance(pr_real3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 };
 }  // namespace lipschitz_test
-#undef R  // compat.glsl's literal macro; nothing below needs it
 
 #include <proceduray/accuracy/closed_form.hpp>
 #include <proceduray/accuracy/ground_truth.hpp>

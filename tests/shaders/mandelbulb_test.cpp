@@ -1,9 +1,9 @@
 // Tests for shaders/primitives/mandelbulb.glsl, compiled as C++: the power-8 estimate.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace mandelbulb_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/mandelbulb.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/mandelbulb.glsl"
 }  // namespace mandelbulb_test
 
 #include "02_paper_scene/paper_types.hpp"

@@ -2,13 +2,13 @@
 // fixed steps + bisection, unrefined hits, iterations by distance, and segment tracing on the
 // metaballs (metaballs.glsl) against the global Lipschitz march. Where a method fails (fixed
 // steps over a part thinner than a step), the test says so.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/march/primitives.hpp>
 
 namespace march_methods_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 using MarchKnobs = proceduray::MarchKnobs;
 /// A unit sphere, or (slab != 0) a slab |z - 2| < slab / 2 as well.
 inline float slab = 0.0f;
@@ -16,19 +16,18 @@ inline float march_distance(vec3 p) {
   const float sphere = length(p) - 1.0f;
   return slab > 0.0f ? std::min(sphere, std::abs(p.z - 2.0f) - 0.5f * slab) : sphere;
 }
-#include "../../shaders/marching/knobs.glsl"
+#include "marching/knobs.glsl"
 /// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
 struct Shape {};
 inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 namespace blob {
-#include "../../shaders/primitives/metaballs.glsl"
+#include "primitives/metaballs.glsl"
 }  // namespace blob
 }  // namespace march_methods_test
-#undef R
 
 #include <doctest/doctest.h>
 

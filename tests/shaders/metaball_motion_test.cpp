@@ -4,15 +4,14 @@
 // by bisection, and the host's motion formula.
 #include <proceduray/march/metaballs.hpp>
 
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace metaball_motion_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 using proceduray::Metaball;   // the generated structs' C++ side: same names, same members
 using proceduray::Metaballs;
-#include "../../shaders/primitives/metaball_motion.glsl"
+#include "primitives/metaball_motion.glsl"
 }  // namespace metaball_motion_test
-#undef R
 
 #include <doctest/doctest.h>
 

@@ -9,17 +9,16 @@
 // the test takes the pair 1, 2 at time 0 (0.36 apart; source 0 lies 0.72 from their midpoint,
 // beyond its radius R <= 0.36 of any point within 0.36 of the neck) and varies R instead of the
 // distance: the field depends on |p - c| / R only, so separation / R is what thins the neck.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace metaball_neck_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 template <class T>
 struct blobs {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/metaballs.glsl"
+#include "primitives/metaballs.glsl"
 };
 }  // namespace metaball_neck_test
-#undef R
 
 #include <proceduray/accuracy/ground_truth.hpp>
 

@@ -7,7 +7,7 @@
 // spacing leaves p unchanged (the fallback normal). The shapes are moved up to 1e4 from the
 // origin to grow that spacing; ground truth is the exact gradient of each shape's distance in
 // double at the very float point the method sees, so rounding the surface point costs nothing.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,7 @@
 #include <vector>
 
 namespace normals_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 // 0: unit sphere; 1: torus (ring radius 1 in the xz plane, tube 0.4); 2: rounded box (half
 // extents 0.8, 0.6, 0.5 plus 0.1 rounding) turned by `turn`, so its face normals are not axes
 // (an axis-aligned face gives exact normals at any h: only one difference is non-zero). All
@@ -31,16 +31,15 @@ inline float march_distance(vec3 p) {
   const vec3 d = abs(turn * q) - vec3(0.8f, 0.6f, 0.5f);
   return length(max(d, vec3(0.0f))) + min(max(d.x, max(d.y, d.z)), 0.0f) - 0.1f;
 }
-#include "../../shaders/marching/sphere_trace.glsl"
+#include "marching/sphere_trace.glsl"
 /// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
 struct Shape {};
 inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 }  // namespace normals_test
-#undef R
 
 #include <doctest/doctest.h>
 

@@ -2,13 +2,12 @@
 // D3D12 sample's SDF primitives, compiled as C++ in float as the GPU runs it: the relaxed march
 // (w = 1.2, 1.6, 1.9) finds the plain march's hits, never passes through a surface the plain
 // march hits, and takes fewer distance evaluations on average over a concrete set of rays.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace over_relaxation_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/d3d12_primitives.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/d3d12_primitives.glsl"
 }  // namespace over_relaxation_test
-#undef R
 
 #include <doctest/doctest.h>
 

@@ -11,13 +11,12 @@
 // first candidate where membership changes is the hit, its normal the piece's.
 // Float resolution: float rounds o, d, n by ~2^-24 of their size, so a point's side of a face
 // plane is known only when its distance from the plane exceeds k 2^-24 (|o| + t |d|).
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace pacman_edges_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/pacman.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/pacman.glsl"
 }  // namespace pacman_edges_test
-#undef R
 
 #include <proceduray/accuracy/closed_form.hpp>
 

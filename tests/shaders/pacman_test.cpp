@@ -1,9 +1,9 @@
 // Tests for shaders/primitives/pacman.glsl, compiled as C++: interval CSG of sphere minus wedge.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace pacman_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/primitives/pacman.glsl"
+using namespace proceduray::glsl_cpp;
+#include "primitives/pacman.glsl"
 }  // namespace pacman_test
 
 #include <doctest/doctest.h>

@@ -1,9 +1,9 @@
 // Tests for shaders/shading/phong.glsl, compiled as C++.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace phong_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/shading/phong.glsl"
+using namespace proceduray::glsl_cpp;
+#include "shading/phong.glsl"
 }  // namespace phong_test
 
 #include <doctest/doctest.h>

@@ -4,19 +4,18 @@
 // t for far and small spheres, where the textbook b^2 - ac form loses the hit or the answer.
 // Sphere tracing: float hit distances of SDF primitives equal the double march at the same knobs
 // within the hit threshold.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <type_traits>
 
 namespace precision_reference_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 template <class T>
 struct lib {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../../shaders/primitives/d3d12_primitives.glsl"
+#include "primitives/d3d12_primitives.glsl"
 };
 }  // namespace precision_reference_test
-#undef R  // compat.glsl's literal macro; nothing below needs it
 
 #include <doctest/doctest.h>
 

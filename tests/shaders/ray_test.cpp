@@ -1,9 +1,9 @@
 // Tests for shaders/common/ray.glsl, compiled as C++: the slab clip without infinities.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace ray_test {
-using namespace proceduray_glsl_cpp;
-#include "../../shaders/common/ray.glsl"
+using namespace proceduray::glsl_cpp;
+#include "common/ray.glsl"
 }  // namespace ray_test
 
 #include <doctest/doctest.h>

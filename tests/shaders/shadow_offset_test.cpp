@@ -31,24 +31,23 @@
 // a leak. The leak gap is the largest true gap at which any sample leaks.
 //
 // Set PROCEDURAY_SHADOW_TABLE=1 to print the measured table.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace shadow_offset_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 /// The marched primitive: the unit sphere's exact distance in object space (Lipschitz 1).
 inline float march_distance(vec3 p) { return length(p) - 1.0f; }
-#include "../../shaders/primitives/box.glsl"
-#include "../../shaders/primitives/spheres.glsl"
-#include "../../shaders/marching/sphere_trace.glsl"
+#include "primitives/box.glsl"
+#include "primitives/spheres.glsl"
+#include "marching/sphere_trace.glsl"
 /// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
 struct Shape {};
 inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 }  // namespace shadow_offset_test
-#undef R
 
 #include <doctest/doctest.h>
 

@@ -16,29 +16,29 @@
 #include <cstdint>
 
 namespace silhouette_steps_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 inline const paper::SceneConstants constants = paper::default_constants(320, 240, 0.0f);
 inline const std::uint32_t bulb_count =
-    paper::glsl::bulb<float>::mandelbulb_animated_iterations(constants.knobs[paper::mandelbulb_id].iterations, constants.time);
+    proceduray::glsl::mandelbulb<float>::mandelbulb_animated_iterations(constants.knobs[paper::mandelbulb_id].iterations, constants.time);
 /// Evaluations of the current march, and how many of them returned a point inside (<= 0).
 inline std::uint32_t evaluations = 0;
 inline std::uint32_t inside_points = 0;
 inline float march_distance(vec3 p) {
-  const float d = paper::glsl::bulb<float>::mandelbulb_distance(p, bulb_count);
+  const float d = proceduray::glsl::mandelbulb<float>::mandelbulb_distance(p, bulb_count);
   ++evaluations;
   inside_points += d <= 0.0f;
   return d;
 }
-#include "../../shaders/common/ray.glsl"
+#include "common/ray.glsl"
 using MarchKnobs = proceduray::MarchKnobs;
-#include "../../shaders/marching/knobs.glsl"
+#include "marching/knobs.glsl"
 /// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
 struct Shape {};
 inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 }  // namespace silhouette_steps_test
 
 #include <doctest/doctest.h>

@@ -2,14 +2,13 @@
 // against closed-form distances, and the D3D12 sample's three unchanged bit for bit.
 #include <proceduray/march/sphere_set.hpp>
 
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace sphere_set_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 using proceduray::SphereSet;  // the generated struct's C++ side
-#include "../../shaders/primitives/sphere_set.glsl"
+#include "primitives/sphere_set.glsl"
 }  // namespace sphere_set_test
-#undef R
 
 #include <doctest/doctest.h>
 

@@ -2,14 +2,14 @@
 // the hit rule (a sign change, bisected; grazing rays march on; the threshold on the unscaled
 // distance), over-relaxation on a thin plate (also at the range's end) and its fallback,
 // tetrahedral normals.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
 namespace sphere_trace_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 // 0: unit sphere; 1: thin plate |z| <= 0.01 (exact distances, Lipschitz 1); 2: the unit sphere
 // as an estimate that is 0 inside (as the fractals' are).
 inline int shape = 0;
@@ -18,14 +18,14 @@ inline float march_distance(vec3 p) {
   const float d = length(p) - 1.0f;
   return shape == 2 ? std::max(d, 0.0f) : d;
 }
-#include "../../shaders/marching/sphere_trace.glsl"
+#include "marching/sphere_trace.glsl"
 /// The marcher of this test's shape (marching/marcher.glsl): prefix shape, no field data.
 struct Shape {};
 inline float shape_distance(vec3 p, Shape) { return march_distance(p); }
 #define PROCEDURAY_MARCHER shape
 #define PROCEDURAY_MARCHER_FIELD Shape
 #define PROCEDURAY_MARCHER_DISTANCE shape_distance
-#include "../../shaders/marching/marcher.glsl"
+#include "marching/marcher.glsl"
 }  // namespace sphere_trace_test
 
 #include <doctest/doctest.h>

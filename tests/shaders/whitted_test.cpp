@@ -1,9 +1,9 @@
 // Tests for shaders/shading/whitted.glsl, compiled as C++: the scene's shadow and reflection
 // rays are stand-ins that count their calls.
-#include "common/glsl_cpp.hpp"
+#include <proceduray/shader/glsl_cpp.hpp>
 
 namespace whitted_test {
-using namespace proceduray_glsl_cpp;
+using namespace proceduray::glsl_cpp;
 int shadow_rays = 0, reflection_rays = 0;
 float occlusion = 1.0f;                      // what the shadow ray finds: 1 lit, 0 blocked
 glm::vec3 mirrored{0.0f}, reflected_from{0.0f};  // the reflection ray's direction and origin
@@ -20,7 +20,7 @@ static inline glm::vec3 whitted_reflection(glm::vec3 origin, glm::vec3 direction
   reflected_weight = weight;
   return glm::vec3(0.0f, 0.0f, 1.0f);  // blue
 }
-#include "../../shaders/shading/whitted.glsl"
+#include "shading/whitted.glsl"
 }  // namespace whitted_test
 
 #include <doctest/doctest.h>
