@@ -23,6 +23,7 @@
 #include <proceduray/mesh/obj.hpp>
 #include <proceduray/scene/aabb_glsl.hpp>
 #include <proceduray/scene/default_global_signature.hpp>
+#include <proceduray/scene/distance_field.hpp>
 #include <proceduray/scene/glsl_files.hpp>
 #include <proceduray/scene/glsl_for.hpp>
 #include <proceduray/scene/object.hpp>

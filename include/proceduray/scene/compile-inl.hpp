@@ -4,6 +4,7 @@
 #pragma once
 
 #include "proceduray/scene/compile.hpp"
+#include "proceduray/scene/uniform_slot.hpp"
 
 #if PROCEDURAY_BODIES
 namespace proceduray {
@@ -20,6 +21,27 @@ PROCEDURAY_DECL void PlanBuilder::outputs() {
     out.m_global->bindings.push_back({BindingKind::output_image, next, 0, 1, "", nullptr});
     ++next;
   });
+}
+
+PROCEDURAY_DECL void PlanBuilder::fields() {
+  if (s.fields().empty()) return;
+  if (!out.m_global) out.m_global = GlobalSignatureDesc{};
+  std::uint32_t next = 0;
+  for (const Binding& b : out.m_global->bindings) {
+    if (b.set == 0) next = std::max(next, b.binding + 1);
+  }
+  out.m_field_binding = next;
+  out.m_global->bindings.push_back(StorageSlot<FieldSettings>{.binding = next, .name = field_settings_name});
+  for (const DistanceField& f : s.fields()) {
+    out.m_fields.push_back({f, s.geometry_id(f.id), field_capabilities(f)});
+  }
+  // Every stage of a field's intersection (one per any-hit it pairs with) compiles its source.
+  for (PlannedStage& stage : out.m_pipeline.stages) {
+    if (stage.stage != ShaderStage::intersection) continue;
+    for (std::uint32_t i = 0; i < s.fields().size(); ++i) {
+      if (stage.shader == field_stage_name(s.fields()[i])) stage.source = field_stage_source(s.fields()[i], i);
+    }
+  }
 }
 
 PROCEDURAY_DECL void PlanBuilder::pipeline() {
@@ -96,6 +118,7 @@ PROCEDURAY_DECL void PlanBuilder::pipeline() {
   out.m_entries.assign(all.begin(), all.end());
   const auto data = s.entries().data();
   out.m_data.assign(data.begin(), data.end());
+  fields();  // after the stages (it gives the fields' theirs source) and the outputs' bindings
 }
 
 PROCEDURAY_DECL void PlanBuilder::declarations() {

@@ -237,6 +237,7 @@ struct PlanBuilder {
 
   void pipeline();
   void outputs();
+  void fields();
   void declarations();
 };
 

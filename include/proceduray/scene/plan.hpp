@@ -35,6 +35,7 @@
 #include "proceduray/scene/device_limits.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/field.hpp"
 #include "proceduray/scene/geometry.hpp"
 #include "proceduray/scene/global_signature.hpp"
 #include "proceduray/scene/outputs.hpp"
@@ -71,6 +72,16 @@ struct TlasInstance {
   std::uint8_t mask = 0xFF;      ///< instance mask (GeometryDesc::mask or instance_masks)
   InstanceTransform transform = identity_transform();  ///< rows of the 3x4 matrix, as VkTransformMatrixKHR
   friend bool operator==(const TlasInstance&, const TlasInstance&) = default;
+};
+
+/// A distance field as the plan knows it: field i of the settings buffer.
+struct PlannedField {
+  DistanceField field;     ///< as declared (checked)
+  GeometryId geometry;     ///< its geometry (the object's)
+  MarchCapabilities caps;  ///< what its knobs may be (field_capabilities), with the defaults
+  friend bool operator==(const PlannedField& a, const PlannedField& b) {
+    return a.field == b.field && a.geometry == b.geometry;  // caps follow from the field
+  }
 };
 
 /// A geometry as the plan knows it, with the bytes its BLAS and mesh buffers are built from
@@ -133,6 +144,10 @@ class Plan {
   /// The per-pixel outputs the scene asked for, in Output order, with their bindings in set 0
   /// (also in global_signature() as BindingKind::output_image).
   std::span<const PlannedOutput> outputs() const { return m_outputs; }
+  /// The distance fields (Scene::fields), in order: field i reads proceduray_fields.data[i].
+  std::span<const PlannedField> fields() const { return m_fields; }
+  /// The binding (set 0) of the fields' settings buffer (FieldSettings[]); no_index without fields.
+  std::uint32_t field_binding() const { return m_field_binding; }
   /// The constants and defines the scene declared (Scene::add_constant), in every stage's declarations.
   std::span<const SceneConstant> constants() const { return m_constants; }
   /// traceRayEXT's sbtRecordStride: the number of ray types.
@@ -244,6 +259,8 @@ class Plan {
   std::optional<GlobalSignatureDesc> m_global;
   std::vector<PlannedOutput> m_outputs;
   std::vector<SceneConstant> m_constants;
+  std::vector<PlannedField> m_fields;
+  std::uint32_t m_field_binding = no_index;
 };
 
 }  // namespace proceduray

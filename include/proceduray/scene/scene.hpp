@@ -51,6 +51,7 @@
 #include "proceduray/scene/entities.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/scene/field.hpp"
 #include "proceduray/scene/outputs.hpp"
 #include "proceduray/shader/categories.hpp"
 
@@ -156,6 +157,14 @@ class SceneCore : public Entities {
   const std::vector<SceneConstant>& constants() const { return m_constants; }
   /// Every entry and its root arguments.
   const EntryList& entries() const { return m_entries; }
+  /// The distance fields declared (add_distance_field, distance_field.hpp), in order.
+  const std::vector<DistanceField>& fields() const { return m_fields; }
+  /// Records a distance field whose object add_distance_field registered: compile() plans its
+  /// intersection stage and settings. Checks the field (validate(DistanceField)) first.
+  void add_field(DistanceField field) {
+    validate(field, "add_distance_field");
+    m_fields.push_back(std::move(field));
+  }
   /// Reserves room for `entries` entries and `data_bytes` of root arguments.
   void reserve_entries(std::size_t entries, std::size_t data_bytes) { m_entries.reserve(entries, data_bytes); }
 
@@ -175,6 +184,7 @@ class SceneCore : public Entities {
   std::optional<std::uint32_t> m_max_recursion_depth;
   OutputSet m_outputs;
   std::vector<SceneConstant> m_constants;
+  std::vector<DistanceField> m_fields;
 };
 
 }  // namespace detail

@@ -46,10 +46,13 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, Re
   m_meshes = std::make_unique<MeshBuffers>(ctx, m_plan);
   m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
   m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
+  m_fields = std::make_unique<FieldKnobs>(m_plan, *m_bindings);
 }
 
 PROCEDURAY_DECL void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
   check_trace_size(*m_ctx, width, height);
+  if (m_fields->dirty()) m_ring->wait_all();  // the settings buffer is written in place
+  m_fields->upload(*m_bindings, op);
   m_bindings->check_ready(op);
   if (m_image && m_image->width() == width && m_image->height() == height) return;
   // New images, bound in the descriptor sets: no frame in flight may still use the old ones.

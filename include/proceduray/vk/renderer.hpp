@@ -41,6 +41,7 @@
 #include <proceduray/vk/frame.hpp>
 #include <proceduray/vk/frame_ring.hpp>
 #include <proceduray/vk/mesh_buffers.hpp>
+#include <proceduray/vk/field_knobs.hpp>
 #include <proceduray/vk/output_images.hpp>
 #include <proceduray/vk/sbt_buffer.hpp>
 #include <proceduray/vk/scene_acceleration.hpp>
@@ -164,6 +165,17 @@ class Renderer {
     m_structures->set_mesh(geometry, std::move(mesh), "Renderer::set_mesh");
   }
 
+  /// Radians per pixel of the view (Camera::pixel_angle): distance fields' footprint thresholds
+  /// scale with it, so a scene with fields needs it before its first frame (else UsageError).
+  void set_pixel_angle(float radians) { m_fields->set_pixel_angle(radians, "Renderer::set_pixel_angle"); }
+  /// Sets a distance field's knobs (add_distance_field's geometry), checked against what it
+  /// accepts (field_capabilities); used from the next frame on.
+  void set_field_knobs(GeometryId field, const MarchKnobs& knobs) {
+    m_fields->set(field, knobs, "Renderer::set_field_knobs");
+  }
+  /// A distance field's knobs now (its capabilities' defaults until set).
+  const MarchKnobs& field_knobs(GeometryId field) const { return m_fields->get(field, "Renderer::field_knobs"); }
+
   /// Traces one width x height frame, waits for it and, with `readback`, returns its pixels and
   /// outputs (copied into the Frame's vectors: the frame loop reads them with submit and rgba).
   Frame render(std::uint32_t width, std::uint32_t height, bool readback = true);
@@ -256,6 +268,7 @@ class Renderer {
   std::unique_ptr<SbtBuffer> m_sbt;
   std::unique_ptr<StorageImage> m_image;
   std::unique_ptr<OutputImages> m_outputs;
+  std::unique_ptr<FieldKnobs> m_fields;
   std::vector<SlotFrame> m_slot_frames;  // index = FrameSlot::index
   std::unique_ptr<FrameRing> m_ring;     // last: destroyed first, it waits for the frames in flight
 };

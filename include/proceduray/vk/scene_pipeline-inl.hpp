@@ -73,11 +73,16 @@ PROCEDURAY_DECL SceneStages compile_scene_stages(const proceduray::Plan& plan, c
   SceneStages out;
   const auto start = Clock::now();
   for (const PlannedStage& stage : planned.stages) {
-    const std::string path = find_shader(dirs, stage.shader);
+    // A generated stage (a distance field's) has no file: its includes (the user's field) are
+    // found in the shader folders.
+    const bool generated = !stage.source.empty();
+    const std::string path = generated ? stage.shader : find_shader(dirs, stage.shader);
     std::vector<std::uint32_t> spirv;
     try {
       // The plan's declarations: the same text a build step writes (glsl_files.hpp).
-      spirv = spirv_cache.compile({.stage = stage.stage, .name = path, .code = read_text_file(path),
+      spirv = spirv_cache.compile({.stage = stage.stage, .name = path,
+                                   .code = generated ? stage.source : read_text_file(path),
+                                   .include_dirs = generated ? dirs : std::vector<std::filesystem::path>{},
                                    .preamble = stage.declarations});
     } catch (const ShaderCompileError& e) {
       // glslang knows the file; the scene knows who runs it and which generated names exist.

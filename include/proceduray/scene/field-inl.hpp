@@ -1,0 +1,135 @@
+// The bodies of proceduray/scene/field.hpp, compiled in every file that includes it (header-only,
+// the default) or once, by implementation.hpp, in a PROCEDURAY_SEPARATE program (config.hpp).
+// Include the header, never this file.
+#pragma once
+
+#include "proceduray/scene/field.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "proceduray/error.hpp"
+#include "proceduray/shader/glsl_codegen.hpp"
+#include "proceduray/shader/glsl_keywords.hpp"
+
+#if PROCEDURAY_BODIES
+namespace proceduray {
+
+namespace detail {
+
+PROCEDURAY_DECL bool plain_identifier(std::string_view name) {
+  bool ok = !name.empty() && !(name[0] >= '0' && name[0] <= '9');
+  for (char c : name) ok = ok && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_');
+  return ok;
+}
+
+/// The shortest text that reads back as v ("nan", "inf" as such).
+PROCEDURAY_DECL std::string field_number(float v) {
+  char digits[32];
+  return std::string(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+}
+
+}  // namespace detail
+
+PROCEDURAY_DECL std::string field_function(const DistanceField& f) { return f.function.empty() ? f.id + "_distance" : f.function; }
+
+PROCEDURAY_DECL void validate(const DistanceField& f, std::string_view op) {
+  const std::string where = std::string(op) + ": distance field \"" + f.id + "\"";
+  auto fail = [&](const std::string& what) { throw UsageError(where + ": " + what); };
+  if (f.glsl.empty()) {
+    fail("names no GLSL file; set .glsl to the file holding its distance function (found in RendererOptions::shader_dirs)");
+  }
+  if (f.glsl.find_first_of("\"\n\r") != std::string::npos) {
+    fail("GLSL file name '" + f.glsl + "' holds a quote or a line break; give a plain path");
+  }
+  const std::string function = field_function(f);
+  if (!detail::plain_identifier(function) || is_glsl_reserved(function) || function.starts_with("gl_") ||
+      function.starts_with("proceduray_")) {
+    fail("function '" + function + "' is no GLSL function name (letters, digits, _; not reserved, not gl_ or "
+         "proceduray_); set .function to the name in " + f.glsl);
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (!std::isfinite(f.aabb.min[a]) || !std::isfinite(f.aabb.max[a])) {
+      fail("AABB axis " + std::to_string(a) + " is [" + detail::field_number(f.aabb.min[a]) + ", " +
+           detail::field_number(f.aabb.max[a]) + "], not finite; give finite local bounds around the surface");
+    }
+    if (!(f.aabb.min[a] < f.aabb.max[a])) {
+      fail("AABB axis " + std::to_string(a) + " is [" + detail::field_number(f.aabb.min[a]) + ", " +
+           detail::field_number(f.aabb.max[a]) + "]: min must be below max; swap them or widen the box");
+    }
+  }
+  if (f.exact) {
+    if (f.lipschitz != 0.0f && f.lipschitz != 1.0f) {
+      fail("is declared exact (L = 1) and gives lipschitz " + detail::field_number(f.lipschitz) +
+           "; drop .exact or the bound");
+    }
+  } else if (!(f.lipschitz > 0.0f) || !std::isfinite(f.lipschitz)) {
+    fail(f.lipschitz == 0.0f
+             ? std::string("has no Lipschitz bound; give .lipschitz (the largest |grad f|: e.g. 1.8 for a gyroid "
+                           "shell), or set .exact = true for an exact distance")
+             : "Lipschitz bound " + detail::field_number(f.lipschitz) +
+                   " must be a finite number > 0: the largest |grad f| over the box (.exact = true for an exact "
+                   "distance)");
+  }
+  if (f.iterations > march_max_iterations_limit) {
+    fail("iterations " + std::to_string(f.iterations) + " is past the limit " +
+         std::to_string(march_max_iterations_limit) + "; give 1 to " + std::to_string(march_max_iterations_limit) +
+         " (0: not a fractal)");
+  }
+}
+
+PROCEDURAY_DECL MarchCapabilities field_capabilities(const DistanceField& f) {
+  MarchCapabilities caps{f.iterations > 0 ? "fractal field" : "distance field", {}, {}, 0, march_base_knobs};
+  caps.methods = {MarchMethod::lipschitz, MarchMethod::relaxed, MarchMethod::fixed};
+  // Plain sphere steps take the distance as it is: safe only when it is 1-Lipschitz.
+  if (field_lipschitz(f) <= 1.0f) caps.methods.insert(caps.methods.begin() + 1, MarchMethod::sphere);
+  caps.normals = {MarchNormal::central, MarchNormal::tetrahedral};
+  if (f.iterations > 0) {
+    caps.max_iterations = march_max_iterations_limit;
+    caps.defaults.iterations = f.iterations;
+  }
+  return caps;
+}
+
+PROCEDURAY_DECL std::string field_stage_name(const DistanceField& f) { return f.id + ".field.rint"; }
+
+PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint32_t index) {
+  const std::string n = std::to_string(index);
+  const std::string distance = "proceduray_field" + n;
+  const std::string marcher = "proceduray_march" + n;
+  const std::string call = field_function(f) + (f.iterations > 0 ? "(p, iterations)" : "(p)");
+  std::string s;
+  s += "#version 460\n";
+  s += "// Generated by proceduray for the distance field \"" + f.id + "\" (scene/field.hpp).\n";
+  s += "#include \"marching/field.glsl\"\n";
+  s += "#include \"" + f.glsl + "\"\n";
+  s += glsl_const(distance + "_box_min", f.aabb.min);
+  s += glsl_const(distance + "_box_max", f.aabb.max);
+  s += glsl_const(distance + "_lipschitz", field_lipschitz(f));
+  s += "float " + distance + "(vec3 p, uint iterations) {\n  return " + call + ";\n}\n";
+  s += "#define PROCEDURAY_MARCHER " + marcher + "\n";
+  s += "#define PROCEDURAY_MARCHER_FIELD uint\n";
+  s += "#define PROCEDURAY_MARCHER_DISTANCE " + distance + "\n";
+  s += "#include \"marching/marcher.glsl\"\n";
+  s += "void main() {\n";
+  s += "  FieldSettings f = " + std::string(field_settings_name) + ".data[" + n + "];\n";
+  s += "  FieldMarch fm;\n";
+  // lipschitz and relaxed steps divide by the bound; sphere steps (only where L <= 1) do not.
+  s += "  if (!field_march_begin(" + distance + "_box_min, " + distance + "_box_max, f.knobs, f.pixel_angle, " +
+       distance + "_lipschitz, fm)) return;\n";
+  s += "  uint iterations = march_iterations(f.knobs, fm.footprint);\n";
+  s += "#ifdef PROCEDURAY_OUTPUTS\n";
+  s += "  field_march_started(" + distance + "(fm.o + fm.range.x * fm.u, iterations));\n";
+  s += "#endif\n";
+  s += "  float s;\n  uint steps;\n";
+  s += "  bool found = " + marcher + "_trace(fm.o, fm.u, fm.range.x, fm.range.y, fm.m, iterations, s, steps);\n";
+  s += "  vec3 p = fm.o + s * fm.u;\n";
+  s += "  vec3 n = found ? " + marcher + "_normal(uint(f.knobs.normal), p, field_normal_offset(f.knobs, fm.m, p, s), "
+       "iterations) : vec3(0.0, 1.0, 0.0);\n";
+  s += "  field_march_report(found, s / fm.len, steps, fm.m, n, march_normal_evaluations(f.knobs));\n";
+  s += "}\n";
+  return s;
+}
+
+}  // namespace proceduray
+#endif  // PROCEDURAY_BODIES

@@ -1,0 +1,88 @@
+// A distance field as the scene and the plan keep it: the user's GLSL function, its box and its
+// Lipschitz bound, and the intersection shader the library writes for it from its own marchers.
+// Declared with add_distance_field (distance_field.hpp); this header is what compile() and the
+// renderer read.
+//
+//   proceduray::DistanceField f{.id = "gyroid", .glsl = "gyroid.glsl", .function = "gyroid_distance",
+//                               .aabb = box, .lipschitz = 1.8f};
+//   proceduray::validate(f, "add_distance_field");       // throws UsageError naming the value and the fix
+//   proceduray::MarchCapabilities caps = proceduray::field_capabilities(f);   // no sphere steps: L > 1
+//   std::string rint = proceduray::field_stage_source(f, 0);   // the generated intersection shader
+//
+// The GLSL file holds `pr_real <function>(pr_real3 p)` (a fractal: `(pr_real3 p, uint iterations)`)
+// in the portable subset of shader/glsl_cpp.hpp, so the same file compiles as C++ for the ground
+// truth. f(p) <= 0 inside; |f(p) - f(q)| <= L |p - q| with L the declared bound (1 when exact).
+// The generated shader passes L to march_settings: lipschitz and relaxed steps are f / L, and
+// plain sphere steps (which take the distance as it is, assuming L = 1) are refused where L > 1.
+//
+// Knobs: one FieldSettings per field in a library storage buffer (`proceduray_fields`, a binding
+// compile() adds after the global signature's and the outputs'), written by the renderer
+// (Renderer::set_field_knobs, set_pixel_angle): the same MarchKnobs every marched geometry takes.
+#pragma once
+
+#include <proceduray/config.hpp>
+
+#include <proceduray/march/knobs.hpp>
+#include <proceduray/scene/geometry.hpp>
+#include <proceduray/shader/define_struct.hpp>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+namespace proceduray {
+
+/// What a distance field's intersection shader reports (hitAttributeEXT `hit`): list it in the
+/// scene interface's Attributes<...> to declare distance fields.
+PROCEDURAY_DEFINE_STRUCT(FieldHit, scalar,
+    (glm::vec3, normal),   ///< object space, unit, outward (the field's gradient)
+    (float, steps));       ///< distance evaluations the march took (the normal's included)
+
+/// One field's run-time settings (the `proceduray_fields` storage buffer, one per field).
+PROCEDURAY_DEFINE_STRUCT(FieldSettings, scalar,
+    (MarchKnobs, knobs),   ///< how the field is marched
+    (float, pixel_angle)); ///< radians per pixel: footprint thresholds scale with it
+
+/// The GLSL instance name of the field settings buffer (reserved: the proceduray_ prefix).
+inline constexpr const char* field_settings_name = "proceduray_fields";
+
+/// A distance field: what add_distance_field records and compile() plans.
+struct DistanceField {
+  std::string id;                ///< the object's id: geometry and hit groups
+  std::string glsl;              ///< the file holding the function, found in the shader folders
+  std::string function;          ///< its name; empty: "<id>_distance"
+  Aabb aabb;                     ///< local bounds; the surface lies inside
+  float lipschitz = 0.0f;        ///< the bound L (> 0); exact fields: 1
+  bool exact = false;            ///< f is an exact distance (L = 1)
+  std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count
+  friend bool operator==(const DistanceField&, const DistanceField&) = default;
+};
+
+/// The function's name: DistanceField::function, or "<id>_distance".
+PROCEDURAY_DECL std::string field_function(const DistanceField& f);
+
+/// The bound the march divides by: 1 when exact, else DistanceField::lipschitz.
+inline float field_lipschitz(const DistanceField& f) { return f.exact ? 1.0f : f.lipschitz; }
+
+/// Throws UsageError, naming `op`, the field, the value and the fix: an empty or non-GLSL file
+/// name, a function name that is no identifier, a non-finite or inverted AABB, a bound <= 0, NaN
+/// or infinite (or missing and not exact), iterations past march_max_iterations_limit.
+PROCEDURAY_DECL void validate(const DistanceField& f, std::string_view op);
+
+/// What the field accepts: every method of march/ but plain sphere steps where L > 1 (they take
+/// the distance as it is and overshoot), difference normals, iterations when a fractal; the
+/// defaults are march_base_knobs (a fractal's iterations its own).
+PROCEDURAY_DECL MarchCapabilities field_capabilities(const DistanceField& f);
+
+/// The name of the field's generated intersection stage: "<id>.field.rint" (no file has it).
+PROCEDURAY_DECL std::string field_stage_name(const DistanceField& f);
+
+/// The intersection shader of field number `index` (proceduray_fields.data[index]): includes the user's file and marching/field.glsl, generates the
+/// marcher (marching/marcher.glsl) for f, marches with the bound, takes the normal and reports FieldHit.
+PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint32_t index);
+
+}  // namespace proceduray
+
+#include "proceduray/scene/field-inl.hpp"  // the bodies (config.hpp)

@@ -1,0 +1,93 @@
+// What every generated distance-field intersection shader shares (scene/field.hpp writes them):
+// clip the ray to the field's box, its knobs (proceduray_fields.data[i]) as MarchSettings at
+// this ray's scale, and the report of t within [gl_RayTminEXT, gl_RayTmaxEXT] with FieldHit.
+// Intersection stages only; after the generated declarations (MarchKnobs, `hit` with a normal
+// and steps like FieldHit, the output helpers). A hand-written intersection may use it too.
+//
+//   FieldSettings f = proceduray_fields.data[0];
+//   FieldMarch fm;
+//   if (!field_march_begin(box_min, box_max, f.knobs, f.pixel_angle, lipschitz, fm)) return;
+//   uint iterations = march_iterations(f.knobs, fm.footprint);
+//   float s; uint steps;
+//   bool found = gyroid_march_trace(fm.o, fm.u, fm.range.x, fm.range.y, fm.m, iterations, s, steps);
+//   vec3 p = fm.o + s * fm.u;
+//   vec3 n = found ? gyroid_march_normal(uint(f.knobs.normal), p, field_normal_offset(f.knobs, fm.m, p, s), iterations)
+//                  : vec3(0.0, 1.0, 0.0);
+//   field_march_report(found, s / fm.len, steps, fm.m, n, march_normal_evaluations(f.knobs));
+//
+// Marching runs in object space along the unit direction u = d / |d|, so distances are
+// object-space lengths s = t |d|. World lengths in the knobs (epsilon, an absolute threshold)
+// are divided by the instance's scale; the footprint term threshold * pixel_angle * t is an
+// angle times a distance and needs no scaling. The footprint uses this ray's own t (an
+// intersection shader cannot read the payload), so for reflection rays it is finer than the
+// pixel's true cone: more accurate, never coarser.
+#ifndef PROCEDURAY_MARCHING_FIELD_GLSL
+#define PROCEDURAY_MARCHING_FIELD_GLSL
+
+#include "../common/ray.glsl"
+#include "knobs.glsl"
+
+/// A march's frame: object-space origin o and unit direction u, |d| (t = s / len), the range
+/// (s_lo, s_hi) inside the box, the settings, and a pixel footprint at the box entry (world
+/// units, for by-distance iterations).
+struct FieldMarch {
+  vec3 o;
+  vec3 u;
+  float len;
+  vec2 range;
+  MarchSettings m;
+  float footprint;
+};
+
+/// Clips the ray to [box_min, box_max] (false: it misses the box) and sets up fm for knobs k at
+/// pixel_angle radians per pixel, for a field with Lipschitz bound `lipschitz`.
+bool field_march_begin(vec3 box_min, vec3 box_max, MarchKnobs k, float pixel_angle, float lipschitz, out FieldMarch fm) {
+  fm.o = gl_ObjectRayOriginEXT;
+  vec3 d = gl_ObjectRayDirectionEXT;
+  float t0 = gl_RayTminEXT;
+  float t1 = gl_RayTmaxEXT;
+  // Drivers may report AABB hits outside the box (it may be enlarged): clip to our own.
+  if (!ray_clip_aabb(fm.o, d, box_min, box_max, t0, t1)) return false;
+  fm.len = length(d);
+  if (!(fm.len > 0.0)) return false;
+  fm.u = d / fm.len;
+  fm.range = vec2(t0 * fm.len, t1 * fm.len);
+  float world_length = length(gl_WorldRayDirectionEXT);
+  float world_per_object = max(world_length / fm.len, 1.0e-20);
+  fm.m = march_settings(k, world_per_object, pixel_angle, lipschitz);
+  fm.footprint = pixel_angle * max(t0, 0.0) * world_length;
+  return true;
+}
+
+/// Flags a march whose first point is inside: the generated shader's one extra evaluation,
+/// made only when outputs are asked for (#ifdef PROCEDURAY_OUTPUTS).
+void field_march_started(float first_distance) {
+#ifdef PROCEDURAY_OUTPUTS
+  if (first_distance < 0.0) output_flags(output_flag_started_inside);
+#endif
+}
+
+/// The difference normal's offset at p, a hit at s: the knobs' normal_scale thresholds, at
+/// least 1e-5 object units.
+float field_normal_offset(MarchKnobs k, MarchSettings m, vec3 p, float s) {
+  return march_knobs_normal_offset(k, p, max(march_epsilon(m, s), 1.0e-5));
+}
+
+/// Reports the march's hit at t (when found and in range) with `normal`; counts the march's and
+/// the normal's evaluations (the outputs' steps and FieldHit::steps).
+void field_march_report(bool found, float t, uint steps, MarchSettings m, vec3 normal, uint normal_evaluations) {
+  output_steps(steps);
+#ifdef PROCEDURAY_OUTPUTS
+  if (!found && steps >= m.max_steps) output_flags(output_flag_exhausted);
+#endif
+  if (!found || !t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
+  output_steps(normal_evaluations);
+#ifdef PROCEDURAY_OUTPUTS
+  if (isnan(t) || any(isnan(normal))) output_flags(output_flag_nan);
+#endif
+  hit.normal = normal;
+  hit.steps = float(steps + normal_evaluations);
+  reportIntersectionEXT(t, 0u);
+}
+
+#endif

@@ -1,0 +1,119 @@
+// Tests for proceduray/scene/distance_field.hpp: a field registers the object add_object would,
+// with the generated intersection stage; compile() plans its settings binding and source; a
+// bad field changes nothing.
+#include "proceduray/scene/distance_field.hpp"
+
+#include "proceduray/scene/compile.hpp"
+#include "proceduray/scene/default_global_signature.hpp"
+#include "proceduray/scene/uniform_slot.hpp"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+using namespace proceduray;
+
+namespace distance_field_test {
+
+struct Payload { glm::vec4 colour; };
+struct Occlusion { std::uint32_t occluded; };
+struct Material { glm::vec3 albedo; std::uint32_t id; };
+struct Frame { glm::vec4 sky; };
+PROCEDURAY_STRUCT(Payload, scalar, colour);
+PROCEDURAY_STRUCT(Occlusion, scalar, occluded);
+PROCEDURAY_STRUCT(Material, scalar, albedo, id);
+PROCEDURAY_STRUCT(Frame, scalar, sky);
+using Interface = ShaderInterface<proceduray::Payload<Payload, Occlusion>, RootComponent<Frame>,
+                                  RootArguments<Material>, Attributes<FieldHit>>;
+constexpr UniformSlot<Frame> frame_slot{.binding = 2, .name = "frame"};
+
+struct Rays {
+  Scene<Interface> scene;
+  RayId<Payload> radiance = scene.add_ray<Payload>("radiance", {.miss = "radiance.rmiss"});
+  RayId<Occlusion> shadow = scene.add_ray<Occlusion>("shadow", {.miss = "shadow.rmiss"});
+  LocalSignatureId<Material> material = scene.add_local_signature<Material>("material");
+  Rays() {
+    scene.add_raygen("raygen.rgen");
+    scene.set_global_signature(default_global_signature({frame_slot}));
+  }
+};
+
+DistanceFieldDesc gyroid(RayId<Payload> radiance) {
+  return {.glsl = "gyroid.glsl", .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .lipschitz = 1.75f,
+          .closest_hit = {{radiance, "shade.rchit"}}};
+}
+
+}  // namespace distance_field_test
+
+using namespace distance_field_test;
+
+TEST_CASE("distance field: registers the object, and compile() plans its settings and its generated stage") {
+  Rays r;
+  const GeometryId g = add_distance_field(r.scene, "gyroid", gyroid(r.radiance), r.material, {{{1, 0, 0}, 7}});
+  const GeometryId b = add_distance_field(r.scene, "ball", {.glsl = "ball.glsl", .exact = true,
+                                                            .closest_hit = {{r.radiance, "shade.rchit"}}},
+                                          r.material, {{{0, 1, 0}, 8}});
+  CHECK(r.scene.geometry_id("gyroid") == g);
+  CHECK(r.scene.hit_group_id("gyroid").valid());
+  CHECK(r.scene.hit_group_id("gyroid_shadow").valid());
+  REQUIRE(r.scene.fields().size() == 2);
+  CHECK(r.scene.fields()[0].lipschitz == 1.75f);
+  const Plan plan = compile(r.scene);
+  REQUIRE(plan.fields().size() == 2);
+  CHECK(plan.fields()[0].geometry == g);
+  CHECK(plan.fields()[1].geometry == b);
+  CHECK(plan.fields()[1].field.id == "ball");
+  // The settings buffer: after the signature's bindings (0 TLAS, 1 image, 2 frame).
+  CHECK(plan.field_binding() == 3);
+  bool declared = false;
+  for (const Binding& binding : plan.global_signature()->bindings) {
+    declared = declared || (binding.binding == 3 && binding.kind == BindingKind::storage_buffer &&
+                            binding.name == std::string(field_settings_name) && binding.type == &type_ops<FieldSettings>);
+  }
+  CHECK(declared);
+  // Each field's intersection compiles its generated source (field i reads data[i]); files keep none.
+  int generated = 0;
+  for (const PlannedStage& s : plan.pipeline().stages) {
+    CAPTURE(s.shader);
+    if (s.stage != ShaderStage::intersection) {
+      CHECK(s.source.empty());
+      continue;
+    }
+    ++generated;
+    const bool is_gyroid = s.shader == "gyroid.field.rint";
+    CHECK((is_gyroid || s.shader == "ball.field.rint"));
+    CHECK(s.source.find(is_gyroid ? "proceduray_fields.data[0]" : "proceduray_fields.data[1]") != std::string::npos);
+    CHECK(s.declarations.find("FieldSettings") != std::string::npos);  // declared for the stage
+    CHECK(s.declarations.find("hitAttributeEXT FieldHit hit") != std::string::npos);
+  }
+  CHECK(generated == 2);  // one per field: the shadow groups share the radiance groups' stage
+}
+
+TEST_CASE("distance field: a scene without fields plans no settings binding") {
+  Rays r;
+  const Plan plan = compile(r.scene);
+  CHECK(plan.fields().empty());
+  CHECK(plan.field_binding() == no_index);
+  CHECK(plan.global_signature()->bindings.size() == 3);
+}
+
+TEST_CASE("distance field: a bad field or object changes nothing") {
+  Rays r;
+  DistanceFieldDesc bad = gyroid(r.radiance);
+  bad.lipschitz = -2.0f;
+  CHECK_THROWS_WITH_AS(add_distance_field(r.scene, "gyroid", bad, r.material, {{{1, 0, 0}, 7}}),
+                       doctest::Contains("add_distance_field: distance field \"gyroid\": Lipschitz bound -2"),
+                       UsageError);
+  CHECK(r.scene.find_geometry("gyroid") == nullptr);
+  CHECK(r.scene.fields().empty());
+  add_distance_field(r.scene, "gyroid", gyroid(r.radiance), r.material, {{{1, 0, 0}, 7}});
+  // The same id again: the object's check (a geometry of that id exists), the field not recorded twice.
+  CHECK_THROWS_AS(add_distance_field(r.scene, "gyroid", gyroid(r.radiance), r.material, {{{1, 0, 0}, 7}}),
+                  DuplicateIdError);
+  CHECK(r.scene.fields().size() == 1);
+  // Two records for one instance: add_object's check, before the field is recorded.
+  CHECK_THROWS_AS(add_distance_field(r.scene, "second", gyroid(r.radiance), r.material,
+                                     {{{1, 0, 0}, 7}, {{0, 1, 0}, 8}}),
+                  SceneError);
+  CHECK(r.scene.fields().size() == 1);
+}

@@ -1,0 +1,158 @@
+// Distance fields on the device: the generated intersection shader against a hand-written march
+// of the same file (the same image, byte for byte) and against the closed form (the same
+// silhouette within the threshold), knobs checked on change, the pixel angle required, and a
+// field with a bound above 1 that plain sphere steps would overshoot.
+#include "test_context.hpp"
+#include "test_paths.hpp"
+
+#include <proceduray/proceduray.hpp>
+#include <proceduray/scene/distance_field.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace pr = proceduray;
+
+struct Constants {
+  pr::Camera camera;
+  pr::MarchKnobs knobs;  // handwritten.rint's; the generated shader reads the library's buffer
+};
+PROCEDURAY_STRUCT(Constants, scalar, camera, knobs);
+struct Colour {
+  glm::vec3 rgb;
+};
+PROCEDURAY_STRUCT(Colour, scalar, rgb);
+using Interface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Constants>, pr::RootArguments<>,
+                                      pr::Attributes<pr::FieldHit>>;
+using Scene = pr::Scene<Interface>;
+
+constexpr pr::UniformSlot<Constants> constants_slot{.binding = 2, .name = "constants"};
+constexpr std::uint32_t width = 96, height = 72;
+
+/// A ray, a camera and the object "ball": a field of `glsl` (or, with `intersection`, a
+/// procedural object running that hand-written shader over the unit box).
+struct FieldScene {
+  Scene scene;
+  pr::GeometryId object;
+
+  explicit FieldScene(const std::string& glsl, const std::string& intersection = {}, float lipschitz = 0.0f) {
+    const auto primary = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
+    scene.set_global_signature(pr::default_global_signature({constants_slot}));
+    scene.add_raygen("field.rgen");
+    if (!intersection.empty()) {
+      object = pr::add_object<pr::FieldHit>(scene, "ball", {.geometry = pr::GeometryDesc::procedural({pr::Aabb{}}),
+                                                            .intersection = intersection,
+                                                            .closest_hit = {{primary, "shade.rchit"}}});
+      return;
+    }
+    object = pr::add_distance_field(scene, "ball", {.glsl = glsl, .function = glsl.substr(0, glsl.find('.')) + "_distance",
+                                                    .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)},
+                                                    .lipschitz = lipschitz, .exact = lipschitz == 0.0f,
+                                                    .closest_hit = {{primary, "shade.rchit"}}});
+  }
+};
+
+pr::vk::RendererOptions options() { return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "fields"}}; }
+
+Constants constants() {
+  return {pr::look_at({0.0f, 0.6f, 3.2f}, {0.0f, 0.0f, 0.0f}, 50.0f, width, height), pr::march_base_knobs};
+}
+
+std::vector<std::uint8_t> render(pr::vk::Renderer& r, const pr::MarchKnobs& knobs = pr::march_base_knobs) {
+  Constants c = constants();
+  c.knobs = knobs;
+  r.set(constants_slot, c);
+  if (!r.plan().fields().empty()) {
+    r.set_pixel_angle(c.camera.pixel_angle);
+    r.set_field_knobs(r.plan().fields()[0].geometry, knobs);
+  }
+  return r.render(width, height).rgba;
+}
+
+std::size_t covered(const std::vector<std::uint8_t>& rgba) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < rgba.size(); i += 4) n += (rgba[i] | rgba[i + 1] | rgba[i + 2]) != 0;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("a distance field renders through the generated shader as through a hand-written march of its file") {
+  TestContext t;
+  FieldScene generated("ball.glsl"), handwritten("", "handwritten.rint");
+  pr::vk::Renderer a(t.ctx, generated.scene, options()), b(t.ctx, handwritten.scene, options());
+  const auto ia = render(a), ib = render(b);
+  CHECK(covered(ia) > width * height / 8);  // the ball fills a good part of the view
+  CHECK(ia == ib);
+  // Another setting moves both alike: tetrahedral normals and the relaxed method.
+  pr::MarchKnobs k = pr::march_base_knobs;
+  k.method = pr::MarchMethod::relaxed;
+  k.relaxation = 1.5f;
+  k.normal = pr::MarchNormal::tetrahedral;
+  CHECK(render(a, k) == render(b, k));
+  CHECK(render(a, k) != ia);  // the normal changed, and with it the colours
+}
+
+TEST_CASE("a distance field's image matches the closed form within its threshold") {
+  TestContext t;
+  FieldScene generated("ball.glsl"), analytic("", "analytic.rint");
+  pr::vk::Renderer a(t.ctx, generated.scene, options()), b(t.ctx, analytic.scene, options());
+  const auto ia = render(a), ib = render(b);
+  std::size_t coverage_differs = 0, colour_far = 0;
+  for (std::size_t i = 0; i < ia.size(); i += 4) {
+    const bool ha = (ia[i] | ia[i + 1] | ia[i + 2]) != 0, hb = (ib[i] | ib[i + 1] | ib[i + 2]) != 0;
+    if (ha != hb) ++coverage_differs;
+    for (int c = 0; ha && hb && c < 3; ++c) colour_far += std::abs(int(ia[i + c]) - int(ib[i + c])) > 4;
+  }
+  const std::size_t hits = covered(ib);
+  CHECK(hits > width * height / 8);
+  CHECK(coverage_differs <= hits / 100);  // silhouette pixels at most: half a footprint threshold
+  CHECK(colour_far <= hits / 100);        // normals within ~1 degree (4 of 255 levels)
+}
+
+TEST_CASE("distance field knobs: checked on change, the pixel angle required, no sphere steps past L = 1") {
+  TestContext t;
+  FieldScene gyroid("gyroid.glsl", "", 1.75f);
+  pr::vk::Renderer r(t.ctx, gyroid.scene, options());
+  r.set(constants_slot, constants());
+  // No pixel angle yet: footprint thresholds have nothing to scale with.
+  try {
+    r.render(width, height);
+    FAIL("render without a pixel angle did not throw");
+  } catch (const pr::UsageError& e) {
+    CHECK(std::string(e.what()).find("set_pixel_angle") != std::string::npos);
+    CHECK(std::string(e.what()).find("\"ball\"") != std::string::npos);
+  }
+  CHECK_THROWS_AS(r.set_pixel_angle(0.0f), pr::UsageError);
+  CHECK_THROWS_AS(r.set_pixel_angle(std::nanf("")), pr::UsageError);
+  pr::MarchKnobs k = pr::march_base_knobs;
+  k.method = pr::MarchMethod::sphere;  // assumes L = 1: would step through the gyroid's sheets
+  try {
+    r.set_field_knobs(gyroid.object, k);
+    FAIL("sphere steps on an L = 1.75 field were accepted");
+  } catch (const pr::UsageError& e) {
+    const std::string m = e.what();
+    CHECK(m.find("Renderer::set_field_knobs") != std::string::npos);
+    CHECK(m.find("sphere") != std::string::npos);
+    CHECK(m.find("lipschitz") != std::string::npos);  // the valid methods are listed
+  }
+  CHECK(r.field_knobs(gyroid.object).method == pr::MarchMethod::lipschitz);  // unchanged by the refusal
+  k = pr::march_base_knobs;
+  k.max_steps = 0;
+  CHECK_THROWS_AS(r.set_field_knobs(gyroid.object, k), pr::UsageError);
+  CHECK_THROWS_AS(r.set_field_knobs(pr::GeometryId(7), pr::march_base_knobs), pr::UsageError);
+  CHECK_THROWS_AS(r.set_field_knobs(pr::GeometryId(), pr::march_base_knobs), pr::UsageError);
+  // The gyroid renders: holes through the shell, so it covers less of its disc than the ball.
+  const auto image = render(r);
+  FieldScene ball("ball.glsl");
+  pr::vk::Renderer rb(t.ctx, ball.scene, options());
+  const std::size_t g = covered(image), b = covered(render(rb));
+  CHECK(g > b / 5);
+  CHECK(g < b * 9 / 10);
+}
