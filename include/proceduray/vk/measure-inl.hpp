@@ -1,0 +1,179 @@
+// The bodies of proceduray/vk/measure.hpp, compiled in every file that includes it (header-only,
+// the default) or once, by implementation.hpp, in a PROCEDURAY_SEPARATE program (config.hpp).
+// Include the header, never this file.
+#pragma once
+
+#include "proceduray/vk/measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+#include "proceduray/scene/compile.hpp"
+#include "proceduray/scene/default_global_signature.hpp"
+#include "proceduray/scene/distance_field.hpp"
+#include "proceduray/shader/categories.hpp"
+#include "proceduray/version.hpp"
+#include "proceduray/vk/renderer.hpp"
+#include "proceduray/vk/shader_compiler.hpp"
+#include "proceduray/vk/spirv_cache.hpp"
+
+#if PROCEDURAY_BODIES
+namespace proceduray::vk {
+
+namespace detail {
+
+using MeasureInterface = ShaderInterface<Payload<MeasurePayload>, RootComponent<MeasureConstants>, RootArguments<>,
+                                         Attributes<FieldHit>>;
+inline constexpr UniformSlot<MeasureConstants> measure_constants{.binding = 2, .name = "constants"};
+
+PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, std::uint32_t y, std::uint32_t width,
+                                             std::uint32_t height) {
+  const double u = (x + 0.5) / width * 2.0 - 1.0, v = (y + 0.5) / height * 2.0 - 1.0;
+  return glm::normalize(glm::dvec3(c.forward) + u * glm::dvec3(c.right) - v * glm::dvec3(c.up));
+}
+
+PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view) {
+  std::uint64_t h = fnv1a(proceduray::version);
+  h = fnv1a(glsl_text, h);
+  h = fnv1a(field.id + "\n" + field_function(field) + "\n", h);
+  const float numbers[] = {field.aabb.min.x, field.aabb.min.y, field.aabb.min.z, field.aabb.max.x,
+                           field.aabb.max.y, field.aabb.max.z, field_lipschitz(field),
+                           static_cast<float>(field.iterations)};
+  h = fnv1a(std::string_view(reinterpret_cast<const char*>(numbers), sizeof numbers), h);
+  h = fnv1a(std::string_view(reinterpret_cast<const char*>(&view.camera), sizeof view.camera), h);
+  const std::uint32_t size[] = {view.width, view.height};
+  return fnv1a(std::string_view(reinterpret_cast<const char*>(size), sizeof size), h);
+}
+
+inline constexpr char truth_magic[16] = "proceduray-tr1\n";
+/// One pixel of a truth file.
+struct TruthRecord {
+  double t;
+  double normal[3];
+  std::uint32_t outcome;
+  std::uint32_t pad;
+};
+
+PROCEDURAY_DECL bool read_truth(const std::filesystem::path& file, std::uint64_t key, std::size_t pixels,
+                                std::vector<accuracy::Reference>& out) {
+  std::ifstream in(file, std::ios::binary);
+  char magic[sizeof truth_magic];
+  std::uint64_t stored_key = 0, count = 0;
+  if (!in.read(magic, sizeof magic) || std::memcmp(magic, truth_magic, sizeof magic) != 0) return false;
+  if (!in.read(reinterpret_cast<char*>(&stored_key), sizeof stored_key) || stored_key != key) return false;
+  if (!in.read(reinterpret_cast<char*>(&count), sizeof count) || count != pixels) return false;
+  std::vector<TruthRecord> records(pixels);
+  if (!in.read(reinterpret_cast<char*>(records.data()), static_cast<std::streamsize>(pixels * sizeof(TruthRecord)))) {
+    return false;
+  }
+  out.resize(pixels);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const TruthRecord& r = records[i];
+    if (r.outcome > static_cast<std::uint32_t>(accuracy::Outcome::undetermined)) return false;  // not ours
+    out[i] = {static_cast<accuracy::Outcome>(r.outcome), r.t, glm::dvec3(r.normal[0], r.normal[1], r.normal[2])};
+  }
+  return true;
+}
+
+PROCEDURAY_DECL void write_truth(const std::filesystem::path& file, std::uint64_t key,
+                                 const std::vector<accuracy::Reference>& truth) {
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  std::vector<TruthRecord> records(truth.size());
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const accuracy::Reference& r = truth[i];
+    records[i] = {r.t, {r.normal.x, r.normal.y, r.normal.z}, static_cast<std::uint32_t>(r.outcome), 0};
+  }
+  // Written beside and renamed: a reader never sees half a file (a cache is best effort: no throw).
+  const std::filesystem::path part = file.string() + ".part";
+  {
+    std::ofstream out(part, std::ios::binary | std::ios::trunc);
+    const std::uint64_t count = truth.size();
+    out.write(truth_magic, sizeof truth_magic);
+    out.write(reinterpret_cast<const char*>(&key), sizeof key);
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    out.write(reinterpret_cast<const char*>(records.data()), static_cast<std::streamsize>(records.size() * sizeof(TruthRecord)));
+    if (!out) return;
+  }
+  std::filesystem::rename(part, file, ec);
+}
+
+PROCEDURAY_DECL std::uint64_t wrong_surfaces(const accuracy::Frame& frame, const std::vector<accuracy::Sample>& samples,
+                                             const std::vector<accuracy::Reference>& truth) {
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if (truth[i].outcome != accuracy::Outcome::hit || !samples[i].hit) continue;
+    const double footprint = truth[i].t * frame.angle(i);
+    n += samples[i].t - truth[i].t > 2.0 * footprint;
+  }
+  return n;
+}
+
+PROCEDURAY_DECL void check_view(const MeasureView& view, std::string_view op) {
+  if (view.width == 0 || view.height == 0 || view.width > 16384 || view.height > 16384) {
+    throw UsageError(std::string(op) + ": view size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
+                     " is out of range; give 1 to 16384 pixels each way, the size you render at");
+  }
+  if (!(view.camera.pixel_angle > 0.0f) || !std::isfinite(view.camera.pixel_angle)) {
+    throw UsageError(std::string(op) + ": the view's camera has pixel angle " + std::to_string(view.camera.pixel_angle) +
+                     "; make it with look_at(eye, target, fov, width, height) for this view's size");
+  }
+}
+
+}  // namespace detail
+
+PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, MeasureOptions options)
+    : m_field(std::move(field)), m_options(std::move(options)) {
+  validate(m_field, "FieldMeter");
+  m_caps = field_capabilities(m_field);
+  if (m_options.repeats == 0) {
+    throw UsageError("FieldMeter: MeasureOptions::repeats is 0; trace at least one frame per measurement (default 3)");
+  }
+  std::vector<std::filesystem::path> dirs = m_options.shader_dirs;
+  m_glsl_text = read_text_file(find_shader(dirs, m_field.glsl));
+  Scene<detail::MeasureInterface> scene;
+  const auto ray = scene.add_ray<detail::MeasurePayload>("measure", {.miss = "measure/measure.rmiss"});
+  scene.set_global_signature(default_global_signature({detail::measure_constants}));
+  scene.add_raygen("measure/measure.rgen");
+  scene.set_outputs({Output::t, Output::normal, Output::steps, Output::flags});
+  m_geometry = add_distance_field(scene, m_field.id,
+                                  {.glsl = m_field.glsl, .function = m_field.function, .aabb = m_field.aabb,
+                                   .lipschitz = m_field.exact ? 0.0f : m_field.lipschitz, .exact = m_field.exact,
+                                   .iterations = m_field.iterations,
+                                   .closest_hit = {{ray, "measure/measure.rchit"}}});
+  if (const auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
+  m_renderer = std::make_unique<Renderer>(ctx, scene, RendererOptions{.shader_dirs = dirs});
+}
+
+PROCEDURAY_DECL FieldMeter::~FieldMeter() = default;
+
+PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const MeasureView& view,
+                                          const std::vector<accuracy::Reference>& truth, Measurement& m) {
+  m_renderer->set(detail::measure_constants, detail::MeasureConstants{view.camera});
+  m_renderer->set_pixel_angle(view.camera.pixel_angle);
+  m_renderer->set_field_knobs(m_geometry, knobs);
+  std::vector<double> times;
+  Frame frame;
+  for (std::uint32_t r = 0; r < m_options.repeats; ++r) {
+    frame = m_renderer->render(view.width, view.height, r + 1 == m_options.repeats);
+    times.push_back(frame.trace_ms);
+  }
+  std::sort(times.begin(), times.end());
+  m.gpu_ms = times[times.size() / 2];
+  const std::size_t pixels = truth.size();
+  const std::vector<accuracy::Sample> samples = accuracy::samples_from(
+      pixels, frame.outputs.t, frame.outputs.normal, frame.outputs.steps, frame.outputs.flags);
+  const accuracy::Frame grid{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
+  m.metrics = accuracy::measure(grid, samples, truth);
+  m.wrong_surface = detail::wrong_surfaces(grid, samples, truth);
+  std::uint64_t truth_hits = 0, evaluations = 0;
+  for (const accuracy::Reference& r : truth) truth_hits += r.outcome == accuracy::Outcome::hit;
+  for (std::uint32_t s : frame.outputs.steps) evaluations += s;
+  m.wrong_surface_rate = truth_hits == 0 ? 0.0 : static_cast<double>(m.wrong_surface) / truth_hits;
+  m.evaluations_per_ray = static_cast<double>(evaluations) / static_cast<double>(pixels);
+}
+
+}  // namespace proceduray::vk
+#endif  // PROCEDURAY_BODIES
