@@ -45,6 +45,7 @@
 #include <proceduray/vk/error.hpp>
 #include <proceduray/vk/frame_ring.hpp>
 #include <proceduray/vk/handle.hpp>
+#include <proceduray/vk/calibrate.hpp>
 #include <proceduray/vk/measure.hpp>
 #include <proceduray/vk/mesh_buffers.hpp>
 #include <proceduray/vk/pipeline.hpp>

@@ -53,8 +53,10 @@ TEST_CASE("march budget - three budgets are met on the device and looser ones co
   std::uint32_t size = 0;
   REQUIRE(std::sscanf(table.size().c_str(), "%ux", &size) == 1);
   // Tight, medium, loose: depth median and p99 in footprints, silhouette false hits, false misses.
-  const std::array<ErrorBudget, 3> budgets{ErrorBudget{0.0015, 0.005, 0.0, 0.001}, ErrorBudget{0.008, 0.025, 0.0, 0.001},
-                                           ErrorBudget{0.25, 1.0, 0.01, 0.01}};
+  // The shipped table predates the wrong-surface column (format 1): each budget relaxes it by name.
+  const std::array<ErrorBudget, 3> budgets{ErrorBudget{0.0015, 0.005, 0.0, 0.001, 1.0},
+                                           ErrorBudget{0.008, 0.025, 0.0, 0.001, 1.0},
+                                           ErrorBudget{0.25, 1.0, 0.01, 0.01, 1.0}};
   for (const d3d12::PrimitiveKind kind : {d3d12::round_cube, d3d12::cog}) {
     const std::string name(d3d12::primitive_names[kind]);
     std::array<double, 3> evals{};

@@ -6,7 +6,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -16,7 +18,7 @@ using namespace proceduray;
 namespace {
 
 CalibrationRow row(const char* geometry, double evals, double median, double p99, double fat, const char* threshold) {
-  CalibrationRow r{geometry, "sdf", sdf_capabilities().defaults, evals, median, p99, fat, 0.0, 0.5};
+  CalibrationRow r{geometry, "sdf", sdf_capabilities().defaults, evals, median, p99, fat, 0.0, 0.5, 0.0};
   set_knob(r.knobs, "threshold", threshold);
   return r;
 }
@@ -73,10 +75,11 @@ TEST_CASE("calibration - the cheapest row within the budget, cheaper as it loose
   const Calibration t = table();
   CHECK(t.cheapest("cog", {.depth_median = 0.002}).evals == 30.0);
   CHECK(t.cheapest("cog", {.depth_median = 0.01, .depth_p99 = 0.02}).evals == 20.0);
-  CHECK(t.cheapest("cog", {.depth_median = 0.05}).evals == 15.0);
+  CHECK(t.cheapest("cog", {.depth_median = 0.05, .silhouette_false_hits = 0.01}).evals == 15.0);
   // The silhouette bound rules out the cheapest: fat silhouettes are an error too.
   CHECK(t.cheapest("cog", {.depth_median = 0.05, .silhouette_false_hits = 0.0}).evals == 20.0);
-  CHECK(t.cheapest("cog", {}).evals == 15.0);  // no bound: the cheapest of all
+  CHECK(t.cheapest("cog", ErrorBudget::relaxed()).evals == 15.0);  // no bound: the cheapest of all
+  CHECK(t.cheapest("cog", {}).evals == 20.0);  // the default budget: its 1% fat silhouette is too much
   CHECK(t.cheapest("torus", {}).knobs.threshold == 0.5f);
   // The normal's error is a budget too.
   CalibrationRow sharp = row("cog", 16.0, 0.02, 0.06, 0.0, "2");
@@ -84,6 +87,42 @@ TEST_CASE("calibration - the cheapest row within the budget, cheaper as it loose
   const Calibration with_normals("d", "1x1", {sharp, row("cog", 18.0, 0.02, 0.06, 0.0, "1")});
   CHECK(with_normals.cheapest("cog", {}).evals == 16.0);
   CHECK(with_normals.cheapest("cog", {.normal_p95 = 1.0}).evals == 18.0);
+}
+
+TEST_CASE("calibration - the default budget is what a 1080p picture cannot tell; relaxing names the bound") {
+  const ErrorBudget b{};
+  CHECK(b.depth_median == 0.1);
+  CHECK(b.depth_p99 == 2.0);
+  CHECK(b.silhouette_false_hits == 0.005);
+  CHECK(b.false_misses == 0.005);
+  CHECK(b.wrong_surface == 0.005);
+  CalibrationRow r = row("cog", 10.0, 0.05, 1.0, 0.0, "1");
+  CHECK(r.meets(b));
+  r.wrong_surface = 0.01;  // 1% of the hits on a surface behind the true one
+  CHECK_FALSE(r.meets(b));
+  CHECK(r.excess(b) == doctest::Approx(2.0));
+  CHECK(r.meets({.wrong_surface = 0.02}));
+  r.wrong_surface = std::numeric_limits<double>::quiet_NaN();  // not measured: meets no bound but an open one
+  CHECK_FALSE(r.meets(b));
+  CHECK(r.meets({.wrong_surface = 1.0}));
+  CHECK(r.meets(ErrorBudget::relaxed()));
+}
+
+TEST_CASE("calibration - a format-1 table reads with wrong-surface unmeasured, CRLF lines too") {
+  std::string text = text_of(table());
+  text = std::regex_replace(text, std::regex("# proceduray-calibration 2"), "# proceduray-calibration 1");
+  text = std::regex_replace(text, std::regex("normal_p95_degrees,wrong_surface,"), "normal_p95_degrees,");
+  text = std::regex_replace(text, std::regex(",0\\.5,0,lipschitz"), ",0.5,lipschitz");  // drop the column's values
+  text = std::regex_replace(text, std::regex("\n"), "\r\n");
+  std::istringstream in(text);
+  const Calibration old = Calibration::parse(in, "old.csv");
+  REQUIRE(old.rows().size() == 5);
+  CHECK(std::isnan(old.rows()[0].wrong_surface));
+  CHECK(old.rows()[0].evals == 30.0);
+  CHECK(old.rows()[4].knobs.threshold == 0.5f);
+  CHECK_THROWS_WITH_AS(old.cheapest("cog", {}), doctest::Contains("wrong surface not measured (a format-1 table)"),
+                       UsageError);
+  CHECK(old.cheapest("cog", {.silhouette_false_hits = 0.01, .wrong_surface = 1.0}).evals == 15.0);
 }
 
 TEST_CASE("calibration - a row off the front is dominated in cost and every error") {
@@ -139,6 +178,7 @@ TEST_CASE("calibration - the shipped table loads and covers every marched primit
   for (const char* g : {"julia", "mandelbulb", "metaballs", "mini_spheres", "round_cube", "square_torus",
                         "twisted_torus", "cog", "cylinder", "fractal_pyramid"}) {
     CAPTURE(g);
-    CHECK_NOTHROW(t.cheapest(g, {}));
+    // Format 1 (measured before the wrong-surface column): every other default bound is met.
+    CHECK_NOTHROW(t.cheapest(g, {.wrong_surface = 1.0}));
   }
 }

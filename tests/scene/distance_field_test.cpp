@@ -117,3 +117,65 @@ TEST_CASE("distance field: a bad field or object changes nothing") {
                   SceneError);
   CHECK(r.scene.fields().size() == 1);
 }
+
+namespace distance_field_test {
+
+CalibrationRow calibrated(const char* geometry, MarchMethod method, double evals, double median,
+                          std::uint32_t iterations = 0) {
+  MarchKnobs k = march_base_knobs;
+  k.method = method;
+  k.iterations = iterations;
+  return {geometry, "distance field", k, evals, median, 0.5, 0.0, 0.0, 1.0, 0.0};
+}
+
+}  // namespace distance_field_test
+
+TEST_CASE("distance field: an error budget picks per field at compile time, never a method the field refuses") {
+  Rays r;
+  add_distance_field(r.scene, "gyroid", gyroid(r.radiance), r.material, {{{1, 0, 0}, 7}});
+  // Plain sphere steps are cheapest and meet the budget on paper, but the gyroid's bound is 1.75.
+  const Calibration table("test device", "320x240",
+                          {calibrated("gyroid", MarchMethod::sphere, 9.0, 0.01),
+                           calibrated("gyroid", MarchMethod::lipschitz, 14.0, 0.02),
+                           calibrated("gyroid", MarchMethod::lipschitz, 20.0, 0.005)});
+  r.scene.set_error_budget({}, table, 320, 240);
+  const Plan plan = compile(r.scene);
+  REQUIRE(plan.fields()[0].pick.has_value());
+  CHECK(plan.fields()[0].pick->evals == 14.0);
+  CHECK(plan.fields()[0].pick->knobs.method == MarchMethod::lipschitz);
+  CHECK(plan.fields()[0].caps.defaults.method == MarchMethod::lipschitz);  // the renderer starts from the pick
+  r.scene.set_error_budget({.depth_median = 0.01}, table, 320, 240);
+  CHECK(compile(r.scene).fields()[0].pick->evals == 20.0);
+  // Unmeetable: the best reachable setting is named.
+  r.scene.set_error_budget({.depth_median = 0.001}, table, 320, 240);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("no calibrated setting of 'gyroid' meets the budget"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("the best reachable: depth median 0.005"), UsageError);
+  // A table with no rows for the field, or only rows it refuses.
+  r.scene.set_error_budget({}, Calibration("d", "320x240", {calibrated("cog", MarchMethod::lipschitz, 9.0, 0.01)}),
+                           320, 240);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("has no rows for it; calibrate it"), UsageError);
+  r.scene.set_error_budget({}, Calibration("d", "320x240", {calibrated("gyroid", MarchMethod::sphere, 9.0, 0.01)}),
+                           320, 240);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("1 rows for it, none a setting it accepts"), UsageError);
+}
+
+TEST_CASE("distance field: a budget does not carry across sizes; at 1080p a 4-iteration fractal is not picked") {
+  Rays r;
+  add_distance_field(r.scene, "bulb", {.glsl = "bulb.glsl", .exact = true, .iterations = 8,
+                                       .closest_hit = {{r.radiance, "shade.rchit"}}},
+                     r.material, {{{1, 0, 0}, 7}});
+  // At 256x256, 4 iterations meet a 0.25-footprint median; measured at 1080p they give 0.39.
+  const Calibration small("d", "256x256", {calibrated("bulb", MarchMethod::lipschitz, 20.0, 0.2, 4),
+                                           calibrated("bulb", MarchMethod::lipschitz, 28.0, 0.05, 6)});
+  r.scene.set_error_budget({.depth_median = 0.25}, small, 1920, 1080);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("measured at 256x256, the frames are 1920x1080"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(compile(r.scene), doctest::Contains("calibrate at 1920x1080"), UsageError);
+  const Calibration full("d", "1920x1080", {calibrated("bulb", MarchMethod::lipschitz, 20.0, 0.39, 4),
+                                            calibrated("bulb", MarchMethod::lipschitz, 28.0, 0.12, 6)});
+  r.scene.set_error_budget({.depth_median = 0.25}, full, 1920, 1080);
+  const Plan plan = compile(r.scene);
+  CHECK(plan.fields()[0].pick->knobs.iterations == 6);
+  CHECK(plan.fields()[0].caps.defaults.iterations == 6);
+}

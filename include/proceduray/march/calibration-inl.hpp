@@ -9,10 +9,14 @@
 namespace proceduray {
 
 PROCEDURAY_DECL bool dominates(const CalibrationRow& a, const CalibrationRow& b) {
-  const double av[] = {a.evals, a.depth_median, a.depth_p99, a.silhouette_false_hits, a.false_misses, a.normal_p95};
-  const double bv[] = {b.evals, b.depth_median, b.depth_p99, b.silhouette_false_hits, b.false_misses, b.normal_p95};
+  // Unmeasured (NaN) is the worst value: a row that measured it can dominate one that did not.
+  auto v = [](double x) { return std::isnan(x) ? std::numeric_limits<double>::infinity() : x; };
+  const double av[] = {a.evals, a.depth_median, a.depth_p99, a.silhouette_false_hits, a.false_misses, a.normal_p95,
+                       v(a.wrong_surface)};
+  const double bv[] = {b.evals, b.depth_median, b.depth_p99, b.silhouette_false_hits, b.false_misses, b.normal_p95,
+                       v(b.wrong_surface)};
   bool better = false;
-  for (std::size_t i = 0; i < 6; ++i) {
+  for (std::size_t i = 0; i < 7; ++i) {
     if (av[i] > bv[i]) return false;
     better = better || av[i] < bv[i];
   }

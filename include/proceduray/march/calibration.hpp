@@ -43,13 +43,22 @@
 
 namespace proceduray {
 
-/// What a scene may get wrong. Every bound is inclusive; an unset one allows anything.
+/// What a scene may get wrong. Every bound is inclusive. The defaults are a budget a 1920x1080
+/// picture cannot tell from exact (half a percent of an object's pixels wrong at most, depth
+/// within a tenth of a footprint at the median): a budget that allows more names what it
+/// relaxes, e.g. {.depth_median = 0.5} or ErrorBudget::relaxed() for "anything".
 struct ErrorBudget {
-  double depth_median = std::numeric_limits<double>::infinity();  ///< pixel footprints
-  double depth_p99 = std::numeric_limits<double>::infinity();     ///< pixel footprints
-  double silhouette_false_hits = 1.0;                              ///< fraction of the 1-pixel band's rays
-  double false_misses = 1.0;                                       ///< fraction of the truth's hits
-  double normal_p95 = 180.0;                                       ///< normal error, 95th percentile, degrees
+  double depth_median = 0.1;              ///< pixel footprints, median of the rays both hit
+  double depth_p99 = 2.0;                 ///< pixel footprints, 99th percentile
+  double silhouette_false_hits = 0.005;   ///< fraction of the 1-pixel band's rays
+  double false_misses = 0.005;            ///< fraction of the truth's hits
+  double wrong_surface = 0.005;           ///< fraction of the truth's hits landing > 2 footprints behind it
+  double normal_p95 = 180.0;              ///< normal error, 95th percentile, degrees (not bounded by default)
+  /// Every bound open: the cheapest setting, whatever it gets wrong.
+  static ErrorBudget relaxed() {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {inf, inf, 1.0, 1.0, 1.0, 180.0};
+  }
 };
 
 /// One measured setting of one geometry.
@@ -63,22 +72,28 @@ struct CalibrationRow {
   double silhouette_false_hits = 0.0;  ///< fraction
   double false_misses = 0.0;           ///< fraction
   double normal_p95 = 0.0;             ///< normal error against the truth's, 95th percentile, degrees
+  /// Fraction of the truth's hits landing more than 2 footprints behind it; NaN: not measured
+  /// (a format-1 table), which meets no bound below 1.
+  double wrong_surface = std::numeric_limits<double>::quiet_NaN();
 
-  /// How far over `b` this row is: the largest ratio measured / allowed (<= 1 meets it).
+  /// How far over `b` this row is: the largest ratio measured / allowed (<= 1 meets it; an
+  /// unmeasured error is infinitely over any bound but an open one).
   double excess(const ErrorBudget& b) const {
     auto ratio = [](double measured, double allowed) {
       if (measured <= allowed) return 0.0;
-      return allowed > 0.0 ? measured / allowed : std::numeric_limits<double>::infinity();
+      return allowed > 0.0 && !std::isnan(measured) ? measured / allowed : std::numeric_limits<double>::infinity();
     };
     return std::max({ratio(depth_median, b.depth_median), ratio(depth_p99, b.depth_p99),
                      ratio(silhouette_false_hits, b.silhouette_false_hits), ratio(false_misses, b.false_misses),
-                     ratio(normal_p95, b.normal_p95)});
+                     ratio(normal_p95, b.normal_p95), b.wrong_surface >= 1.0 ? 0.0 : ratio(wrong_surface, b.wrong_surface)});
   }
   bool meets(const ErrorBudget& b) const { return excess(b) == 0.0; }
 };
 
-/// The format line a calibration file starts with.
-inline constexpr std::string_view calibration_format = "# proceduray-calibration 1";
+/// The format line a calibration file starts with (format 2 added wrong_surface; format 1
+/// tables are read with it unmeasured).
+inline constexpr std::string_view calibration_format = "# proceduray-calibration 2";
+inline constexpr std::string_view calibration_format_1 = "# proceduray-calibration 1";
 
 /// Whether `a` is at least as good as `b` in cost and every error, and better in one: then `b`
 /// is off the front (no one would choose it).
@@ -102,47 +117,58 @@ class Calibration {
       return EnvironmentError("Calibration::load: " + source + ": " + what);
     };
     std::string line;
-    if (!std::getline(in, line) || line != calibration_format) {
+    auto next = [&](std::string& l) -> bool {  // a line without its CR (a table saved on Windows)
+      if (!std::getline(in, l)) return false;
+      if (!l.empty() && l.back() == '\r') l.pop_back();
+      return true;
+    };
+    if (!next(line)) line.clear();
+    const bool format_1 = line == calibration_format_1;
+    if (line != calibration_format && !format_1) {
       throw fail("not a calibration table (line 1 is not '" + std::string(calibration_format) +
                  "'); write one with proceduray_sweep --calibration");
     }
-    if (!std::getline(in, line) || line.rfind("# library ", 0) != 0) throw fail("line 2 does not name the library version");
+    if (!next(line) || line.rfind("# library ", 0) != 0) throw fail("line 2 does not name the library version");
     const std::string measured_by = line.substr(10);
     if (measured_by != version) {
       throw fail("measured by library " + measured_by + ", this is " + std::string(version) +
                  "; its marches may differ: re-run proceduray_sweep --calibration with this version");
     }
-    if (!std::getline(in, line) || line.rfind("# measured ", 0) != 0) throw fail("line 3 does not name the device and size");
+    if (!next(line) || line.rfind("# measured ", 0) != 0) throw fail("line 3 does not name the device and size");
     Calibration out;
     const std::string measured = line.substr(11);
     const auto space = measured.rfind(' ');
     out.m_device = space == std::string::npos ? measured : measured.substr(0, space);
     out.m_size = space == std::string::npos ? "" : measured.substr(space + 1);
-    if (!std::getline(in, line) || line != header()) throw fail("the column header is not this version's");
+    if (!next(line) || line != header(format_1)) throw fail("the column header is not this version's");
+    const std::size_t errors = format_1 ? 6 : 7;  // evals and the errors, before the knobs
     std::size_t number = 4;
-    while (std::getline(in, line)) {
+    while (next(line)) {
       ++number;
       if (line.empty()) continue;
       std::vector<std::string> f;
       std::stringstream cells(line);
       for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
-      if (f.size() != 8 + march_knob_names.size()) {
+      if (f.size() != 2 + errors + march_knob_names.size()) {
         throw fail("line " + std::to_string(number) + " has " + std::to_string(f.size()) + " fields, not " +
-                   std::to_string(8 + march_knob_names.size()));
+                   std::to_string(2 + errors + march_knob_names.size()));
       }
       CalibrationRow r;
       r.geometry = f[0];
       r.kind = f[1];
       try {
         double* numbers[] = {&r.evals, &r.depth_median, &r.depth_p99, &r.silhouette_false_hits, &r.false_misses,
-                             &r.normal_p95};
-        for (std::size_t i = 0; i < 6; ++i) {
+                             &r.normal_p95, &r.wrong_surface};
+        for (std::size_t i = 0; i < errors; ++i) {
           std::size_t used = 0;
           *numbers[i] = std::stod(f[2 + i], &used);
-          if (used != f[2 + i].size() || !(*numbers[i] >= 0.0)) throw UsageError(f[2 + i]);
+          const bool unmeasured = i == 6 && std::isnan(*numbers[i]);  // wrong_surface of a sweep without it
+          if (used != f[2 + i].size() || (!(*numbers[i] >= 0.0) && !unmeasured)) throw UsageError(f[2 + i]);
         }
         r.knobs = march_base_knobs;
-        for (std::size_t k = 0; k < march_knob_names.size(); ++k) set_knob(r.knobs, march_knob_names[k], f[8 + k]);
+        for (std::size_t k = 0; k < march_knob_names.size(); ++k) {
+          set_knob(r.knobs, march_knob_names[k], f[2 + errors + k]);
+        }
       } catch (const std::exception& e) {
         throw fail("line " + std::to_string(number) + " has a bad value (" + e.what() + ")");
       }
@@ -162,9 +188,10 @@ class Calibration {
     return parse(in, path.string());
   }
 
-  /// The column header of the rows.
-  static std::string header() {
+  /// The column header of the rows (of a format-1 table: without wrong_surface).
+  static std::string header(bool format_1 = false) {
     std::string h = "geometry,kind,evals,depth_median,depth_p99,silhouette_false_hits,false_misses,normal_p95_degrees,";
+    if (!format_1) h += "wrong_surface,";
     for (std::size_t i = 0; i < march_knob_names.size(); ++i) h += std::string(i ? "," : "") + std::string(march_knob_names[i]);
     return h;
   }
@@ -176,7 +203,7 @@ class Calibration {
     out.precision(9);
     for (const CalibrationRow& r : m_rows) {
       out << r.geometry << "," << r.kind << "," << r.evals << "," << r.depth_median << "," << r.depth_p99 << ","
-          << r.silhouette_false_hits << "," << r.false_misses << "," << r.normal_p95;
+          << r.silhouette_false_hits << "," << r.false_misses << "," << r.normal_p95 << "," << r.wrong_surface;
       for (const auto& kv : knob_values(r.knobs)) out << "," << kv.second;
       out << "\n";
     }
@@ -202,10 +229,14 @@ class Calibration {
     std::ostringstream m;
     m << "Calibration::cheapest: no calibrated setting of '" << geometry << "' meets the budget (depth median <= "
       << budget.depth_median << ", p99 <= " << budget.depth_p99 << " footprints, silhouette false hits <= "
-      << budget.silhouette_false_hits << ", false misses <= " << budget.false_misses << ", normal p95 <= "
-      << budget.normal_p95 << " degrees); the best reachable: depth median " << closest->depth_median << ", p99 "
-      << closest->depth_p99 << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses "
-      << closest->false_misses << ", normal p95 " << closest->normal_p95
+      << budget.silhouette_false_hits << ", false misses <= " << budget.false_misses << ", wrong surface <= "
+      << budget.wrong_surface << ", normal p95 <= " << budget.normal_p95
+      << " degrees); the best reachable: depth median " << closest->depth_median << ", p99 " << closest->depth_p99
+      << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses " << closest->false_misses
+      << ", wrong surface "
+      << (std::isnan(closest->wrong_surface) ? std::string("not measured (a format-1 table)")
+                                             : std::to_string(closest->wrong_surface))
+      << ", normal p95 " << closest->normal_p95
       << " at " << closest->evals << " evaluations (" << describe(closest->knobs)
       << "); loosen the budget or calibrate finer settings (proceduray_sweep --calibration)";
     throw UsageError(m.str());

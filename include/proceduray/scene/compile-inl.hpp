@@ -33,7 +33,12 @@ PROCEDURAY_DECL void PlanBuilder::fields() {
   out.m_field_binding = next;
   out.m_global->bindings.push_back(StorageSlot<FieldSettings>{.binding = next, .name = field_settings_name});
   for (const DistanceField& f : s.fields()) {
-    out.m_fields.push_back({f, s.geometry_id(f.id), field_capabilities(f)});
+    PlannedField planned{f, s.geometry_id(f.id), field_capabilities(f), std::nullopt};
+    if (s.error_budget()) {
+      planned.pick = pick_setting(f, *s.error_budget(), "compile");
+      planned.caps.defaults = planned.pick->knobs;
+    }
+    out.m_fields.push_back(std::move(planned));
   }
   // Every stage of a field's intersection (one per any-hit it pairs with) compiles its source.
   for (PlannedStage& stage : out.m_pipeline.stages) {

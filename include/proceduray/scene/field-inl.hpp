@@ -91,6 +91,39 @@ PROCEDURAY_DECL MarchCapabilities field_capabilities(const DistanceField& f) {
   return caps;
 }
 
+PROCEDURAY_DECL CalibrationRow pick_setting(const DistanceField& f, const FieldBudget& b, std::string_view op) {
+  const std::string where = std::string(op) + ": distance field \"" + f.id + "\"";
+  const std::string size = std::to_string(b.width) + "x" + std::to_string(b.height);
+  if (b.table.size() != size) {
+    throw UsageError(where + ": the calibration was measured at " + b.table.size() + ", the frames are " + size +
+                     "; errors in footprints grow with the resolution, so calibrate at " + size +
+                     " (vk::calibrate with a view of that size)");
+  }
+  const MarchCapabilities caps = field_capabilities(f);
+  std::vector<CalibrationRow> usable;
+  std::size_t rows = 0;
+  for (const CalibrationRow& r : b.table.rows()) {
+    if (r.geometry != f.id) continue;
+    ++rows;
+    try {
+      validate(r.knobs, caps, f.id);
+      usable.push_back(r);
+    } catch (const UsageError&) {
+      // a setting the field refuses (e.g. sphere steps past L = 1) is never picked
+    }
+  }
+  if (usable.empty()) {
+    throw UsageError(where + ": the calibration has " + (rows == 0 ? std::string("no rows for it") :
+                     std::to_string(rows) + " rows for it, none a setting it accepts") +
+                     "; calibrate it (vk::calibrate) and pass that table");
+  }
+  try {
+    return Calibration(b.table.device(), b.table.size(), std::move(usable)).cheapest(f.id, b.budget);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string(op) + ": " + e.what());
+  }
+}
+
 PROCEDURAY_DECL std::string field_stage_name(const DistanceField& f) { return f.id + ".field.rint"; }
 
 PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint32_t index) {

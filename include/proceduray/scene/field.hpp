@@ -22,6 +22,7 @@
 
 #include <proceduray/config.hpp>
 
+#include <proceduray/march/calibration.hpp>
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/define_struct.hpp>
@@ -59,6 +60,21 @@ struct DistanceField {
   std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count
   friend bool operator==(const DistanceField&, const DistanceField&) = default;
 };
+
+/// An error budget for the fields, with the calibration it is met from and the frame size that
+/// calibration must have been measured at (Scene::set_error_budget).
+struct FieldBudget {
+  ErrorBudget budget;
+  Calibration table;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+};
+
+/// The cheapest row of `table` for field `f` that meets `budget` and that `f` accepts (rows of
+/// a method it refuses, such as sphere steps past L = 1, never count), for width x height
+/// frames. Throws UsageError naming `op` and the field: a table of another size (both sizes,
+/// and the fix), no rows for it (calibrate it), or no row meeting the budget (the best reachable).
+PROCEDURAY_DECL CalibrationRow pick_setting(const DistanceField& f, const FieldBudget& b, std::string_view op);
 
 /// The function's name: DistanceField::function, or "<id>_distance".
 PROCEDURAY_DECL std::string field_function(const DistanceField& f);

@@ -78,7 +78,9 @@ struct TlasInstance {
 struct PlannedField {
   DistanceField field;     ///< as declared (checked)
   GeometryId geometry;     ///< its geometry (the object's)
-  MarchCapabilities caps;  ///< what its knobs may be (field_capabilities), with the defaults
+  MarchCapabilities caps;  ///< what its knobs may be (field_capabilities), with the defaults (the pick, if any)
+  /// The setting the scene's error budget picked (its knobs, predicted errors and cost), if one was set.
+  std::optional<CalibrationRow> pick;
   friend bool operator==(const PlannedField& a, const PlannedField& b) {
     return a.field == b.field && a.geometry == b.geometry;  // caps follow from the field
   }

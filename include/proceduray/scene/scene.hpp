@@ -51,6 +51,7 @@
 #include "proceduray/scene/entities.hpp"
 #include "proceduray/scene/entry.hpp"
 #include "proceduray/scene/errors.hpp"
+#include "proceduray/march/calibration.hpp"
 #include "proceduray/scene/field.hpp"
 #include "proceduray/scene/outputs.hpp"
 #include "proceduray/shader/categories.hpp"
@@ -165,6 +166,16 @@ class SceneCore : public Entities {
     validate(field, "add_distance_field");
     m_fields.push_back(std::move(field));
   }
+  /// Asks compile() to give every distance field the cheapest setting of `table` that meets
+  /// `budget` (march/calibration.hpp; default: what a 1080p picture cannot tell) and that the
+  /// field accepts, for frames of width x height: the size the table was measured at, since
+  /// errors in footprints grow with the resolution (compile() refuses another size). The pick
+  /// is the field's starting knobs and Plan::fields()'s report.
+  void set_error_budget(ErrorBudget budget, Calibration table, std::uint32_t width, std::uint32_t height) {
+    m_budget = FieldBudget{budget, std::move(table), width, height};
+  }
+  /// The error budget of the fields, if one was set.
+  const std::optional<FieldBudget>& error_budget() const { return m_budget; }
   /// Reserves room for `entries` entries and `data_bytes` of root arguments.
   void reserve_entries(std::size_t entries, std::size_t data_bytes) { m_entries.reserve(entries, data_bytes); }
 
@@ -185,6 +196,7 @@ class SceneCore : public Entities {
   OutputSet m_outputs;
   std::vector<SceneConstant> m_constants;
   std::vector<DistanceField> m_fields;
+  std::optional<FieldBudget> m_budget;
 };
 
 }  // namespace detail

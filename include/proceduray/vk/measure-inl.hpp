@@ -24,10 +24,6 @@ namespace proceduray::vk {
 
 namespace detail {
 
-using MeasureInterface = ShaderInterface<Payload<MeasurePayload>, RootComponent<MeasureConstants>, RootArguments<>,
-                                         Attributes<FieldHit>>;
-inline constexpr UniformSlot<MeasureConstants> measure_constants{.binding = 2, .name = "constants"};
-
 PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, std::uint32_t y, std::uint32_t width,
                                              std::uint32_t height) {
   const double u = (x + 0.5) / width * 2.0 - 1.0, v = (y + 0.5) / height * 2.0 - 1.0;
@@ -145,6 +141,7 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
                                    .closest_hit = {{ray, "measure/measure.rchit"}}});
   if (const auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
   m_renderer = std::make_unique<Renderer>(ctx, scene, RendererOptions{.shader_dirs = dirs});
+  m_device = ctx.name();
 }
 
 PROCEDURAY_DECL FieldMeter::~FieldMeter() = default;
@@ -168,9 +165,13 @@ PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const Measure
   const accuracy::Frame grid{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
   m.metrics = accuracy::measure(grid, samples, truth);
   m.wrong_surface = detail::wrong_surfaces(grid, samples, truth);
-  std::uint64_t truth_hits = 0, evaluations = 0;
+  std::uint64_t truth_hits = 0, evaluations = 0, box_rays = 0;
   for (const accuracy::Reference& r : truth) truth_hits += r.outcome == accuracy::Outcome::hit;
-  for (std::uint32_t s : frame.outputs.steps) evaluations += s;
+  for (std::uint32_t s : frame.outputs.steps) {
+    evaluations += s;
+    box_rays += s > 0;
+  }
+  m.evaluations_per_box_ray = box_rays == 0 ? 0.0 : static_cast<double>(evaluations) / static_cast<double>(box_rays);
   m.wrong_surface_rate = truth_hits == 0 ? 0.0 : static_cast<double>(m.wrong_surface) / truth_hits;
   m.evaluations_per_ray = static_cast<double>(evaluations) / static_cast<double>(pixels);
 }

@@ -35,7 +35,9 @@
 #include <proceduray/accuracy/samples.hpp>
 #include <proceduray/scene/field.hpp>
 #include <proceduray/scene/ids.hpp>
+#include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/camera.hpp>
+#include <proceduray/shader/categories.hpp>
 #include <proceduray/shader/define_struct.hpp>
 #include <proceduray/vk/context.hpp>
 
@@ -71,6 +73,7 @@ struct Measurement {
   std::uint64_t wrong_surface = 0;    ///< hits more than 2 footprints behind the truth's
   double wrong_surface_rate = 0.0;    ///< wrong_surface / the truth's hits (0 when none)
   double evaluations_per_ray = 0.0;   ///< mean evaluations per camera ray, every ray
+  double evaluations_per_box_ray = 0.0;  ///< mean over the rays that evaluated the field (entered its box)
   double gpu_ms = 0.0;                ///< median trace time of the frames
   double truth_ms = 0.0;              ///< wall time of the truth (0 when it came from a cache)
   bool truth_cached = false;          ///< the truth came from memory or the cache folder
@@ -87,6 +90,9 @@ namespace detail {
 /// The measuring scene's payload and constants (shaders/measure/).
 PROCEDURAY_DEFINE_STRUCT(MeasurePayload, scalar, (std::uint32_t, hit));
 PROCEDURAY_DEFINE_STRUCT(MeasureConstants, scalar, (Camera, camera));
+using MeasureInterface = ShaderInterface<Payload<MeasurePayload>, RootComponent<MeasureConstants>, RootArguments<>,
+                                         Attributes<FieldHit>>;
+inline constexpr UniformSlot<MeasureConstants> measure_constants{.binding = 2, .name = "constants"};
 
 /// Unit direction of pixel (x, y): camera.glsl's camera_ray in double.
 PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, std::uint32_t y, std::uint32_t width,
@@ -150,6 +156,10 @@ class FieldMeter {
   }
 
   const DistanceField& field() const noexcept { return m_field; }
+  /// The text of the field's GLSL file as read when the meter was built.
+  const std::string& glsl_text() const noexcept { return m_glsl_text; }
+  /// The device's name (Context::name), for calibration tables.
+  const std::string& device() const noexcept { return m_device; }
   /// What the field accepts (field_capabilities).
   const MarchCapabilities& capabilities() const noexcept { return m_caps; }
 
@@ -185,6 +195,7 @@ class FieldMeter {
   MeasureOptions m_options;
   MarchCapabilities m_caps;
   std::string m_glsl_text;
+  std::string m_device;
   std::unique_ptr<Renderer> m_renderer;
   GeometryId m_geometry;
   std::map<std::uint64_t, ViewTruth> m_truths;
