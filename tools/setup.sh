@@ -12,7 +12,7 @@ die() { echo "setup: error: $*" >&2; exit 1; }
 mesa_min=24.1
 pkgs=(libvulkan-dev glslang-dev glslang-tools libglm-dev libstb-dev doctest-dev
       vulkan-validationlayers vulkan-tools cmake meson ninja-build pkg-config g++ libcli11-dev libtinyobjloader-dev
-      python3-matplotlib clang)
+      python3-matplotlib clang parallel)
 
 have_pkg() { dpkg-query -W -f='${Status}\n' "$1" 2>/dev/null | grep -q '^install ok installed'; }
 

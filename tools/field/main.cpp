@@ -1,0 +1,270 @@
+// proceduray-field: a user's distance field measured and calibrated from the command line, with
+// no C++ written: the GLSL file is compiled as C++ (the system compiler, shader/glsl_cpp.hpp's
+// subset) into a small shared library for the ground truth, and marched on the device by the
+// library's generated shader.
+//
+//   proceduray-field measure   --sdf gyroid.glsl --aabb -1,-1,-1,1,1,1 --lipschitz 1.75 --knob method=relaxed
+//   proceduray-field calibrate --sdf gyroid.glsl --aabb -1,-1,-1,1,1,1 --lipschitz 1.75 --out gyroid.csv
+//   parallel proceduray-field calibrate ... --shard {}/3 --out part{}.csv ::: 1 2 3    # GNU parallel
+//   proceduray-field merge part1.csv part2.csv part3.csv --out gyroid.csv
+//
+// Shards split the settings into n contiguous blocks, so merging the parts in shard order gives
+// the table one unsharded run writes (errors and evaluation counts do not depend on timing).
+#include <proceduray/accuracy/report.hpp>
+#include <proceduray/proceduray.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <dlfcn.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace pr = proceduray;
+namespace fs = std::filesystem;
+
+struct BadInput : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// What every subcommand that renders takes.
+struct FieldOptions {
+  std::string sdf, function, id, aabb = "-1,-1,-1,1,1,1", size = "320x240", eye = "0,0.6,3.2", target = "0,0,0";
+  float lipschitz = 0.0f, fov = 45.0f;
+  bool exact = false, validation = false;
+  std::uint32_t iterations = 0;
+  std::string device = "auto", cache;
+};
+
+std::vector<float> numbers(const std::string& text, std::size_t count, const char* option) {
+  std::vector<float> out;
+  std::stringstream s(text);
+  for (std::string part; std::getline(s, part, ',');) {
+    char* end = nullptr;
+    const float v = std::strtof(part.c_str(), &end);
+    if (part.empty() || *end != '\0') break;
+    out.push_back(v);
+  }
+  if (out.size() != count) {
+    throw BadInput(std::string(option) + " '" + text + "' is not " + std::to_string(count) + " numbers separated by commas");
+  }
+  return out;
+}
+
+/// A directory holding `probe`: $env, then beside the executable (an installed tool), then the build's.
+fs::path locate(const char* env, const fs::path& installed, const fs::path& built, const fs::path& probe) {
+  if (const char* e = std::getenv(env); e != nullptr && *e != '\0') return e;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && fs::exists(exe.parent_path() / installed / probe)) return exe.parent_path() / installed;
+  return built;
+}
+
+using Distance = double (*)(double, double, double, std::uint32_t);
+
+/// Compiles the field's GLSL as C++ into a shared library (kept in the cache by the file's
+/// text) and returns its distance; a file outside the portable subset names its first error line.
+Distance load_truth(const pr::DistanceField& f, const fs::path& glsl, const fs::path& cache) {
+  std::ifstream in(glsl);
+  std::stringstream text;
+  text << in.rdbuf();
+  const fs::path include = locate("PROCEDURAY_INCLUDE_DIR", "../include", PROCEDURAY_TOOL_INCLUDE_DIR,
+                                  "proceduray/shader/glsl_cpp.hpp");
+  const fs::path shaders = pr::vk::library_shader_dir();
+  const char* cxx = std::getenv("CXX") != nullptr ? std::getenv("CXX") : "c++";
+  const std::string key = std::to_string(pr::vk::fnv1a(text.str() + pr::field_function(f) + cxx + glsl.string()));
+  const fs::path dir = cache / "field-cpp", so = dir / (f.id + "-" + key + ".so"), cpp = dir / (f.id + "-" + key + ".cpp");
+  fs::create_directories(dir);
+  if (!fs::exists(so)) {
+    std::ofstream src(cpp);
+    src << "#include <proceduray/shader/glsl_cpp.hpp>\n#include <cstdint>\nnamespace user {\n"
+        << "using namespace proceduray::glsl_cpp;\ntemplate <class T> struct field {\n  PROCEDURAY_GLSL_CPP_SCALAR(T)\n"
+        << "#include \"" << fs::absolute(glsl).string() << "\"\n};\n}  // namespace user\n"
+        << "extern \"C\" double proceduray_field_distance(double x, double y, double z, std::uint32_t iterations) {\n"
+        << "  (void)iterations;\n  return user::field<double>::" << pr::field_function(f) << "(glm::dvec3(x, y, z)"
+        << (f.iterations > 0 ? ", iterations" : "") << ");\n}\n";
+    src.close();
+    const fs::path log = dir / (f.id + "-" + key + ".log");
+    const std::string command = std::string(cxx) + " -std=c++20 -O2 -shared -fPIC -I'" + include.string() + "' -I'" +
+                                shaders.string() + "' '" + cpp.string() + "' -o '" + so.string() + "' 2> '" +
+                                log.string() + "'";
+    if (std::system(command.c_str()) != 0) {
+      std::ifstream errors(log);
+      std::string line, first;
+      while (std::getline(errors, line)) {
+        if (line.find("error") != std::string::npos) {
+          first = line;
+          break;
+        }
+      }
+      throw BadInput(glsl.string() + " does not compile as C++ (the portable subset of shader/glsl_cpp.hpp: pr_real, "
+                     "PR(...), no swizzles): " + first + "; the whole log: " + log.string());
+    }
+  }
+  void* lib = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+  void* fn = lib != nullptr ? dlsym(lib, "proceduray_field_distance") : nullptr;
+  if (fn == nullptr) throw BadInput("cannot load " + so.string() + ": " + dlerror() + "; delete it and run again");
+  return reinterpret_cast<Distance>(fn);
+}
+
+/// The field, the meter and the view the options describe.
+struct Setup {
+  pr::DistanceField field;
+  std::unique_ptr<pr::vk::Context> ctx;
+  std::unique_ptr<pr::vk::FieldMeter> meter;
+  pr::vk::MeasureView view;
+  Distance distance = nullptr;
+  fs::path cache;
+  auto truth() const {
+    return [d = distance, n = field.iterations](glm::dvec3 p) { return d(p.x, p.y, p.z, n); };
+  }
+};
+
+Setup setup(const FieldOptions& o) {
+  Setup s;
+  const fs::path glsl = o.sdf;
+  if (!fs::is_regular_file(glsl)) throw BadInput("--sdf '" + o.sdf + "' is not a file; give the field's GLSL file");
+  const std::vector<float> box = numbers(o.aabb, 6, "--aabb");
+  s.field = {.id = o.id.empty() ? glsl.stem().string() : o.id, .glsl = glsl.filename().string(),
+             .function = o.function, .aabb = {{box[0], box[1], box[2]}, {box[3], box[4], box[5]}},
+             .lipschitz = o.lipschitz, .exact = o.exact, .iterations = o.iterations};
+  pr::validate(s.field, "proceduray-field");  // before any device or compiler work
+  std::uint32_t w = 0, h = 0;
+  if (std::sscanf(o.size.c_str(), "%ux%u", &w, &h) != 2) throw BadInput("--size '" + o.size + "' is not WxH");
+  const std::vector<float> eye = numbers(o.eye, 3, "--eye"), target = numbers(o.target, 3, "--target");
+  s.view = {pr::look_at({eye[0], eye[1], eye[2]}, {target[0], target[1], target[2]}, o.fov, w, h), w, h};
+  s.cache = o.cache.empty() ? pr::vk::default_cache_dir() : fs::path(o.cache);
+  s.distance = load_truth(s.field, glsl, s.cache);
+  const auto device = o.device == "cpu" ? pr::vk::DevicePreference::cpu
+                      : o.device == "gpu" ? pr::vk::DevicePreference::gpu : pr::vk::DevicePreference::automatic;
+  s.ctx = std::make_unique<pr::vk::Context>(pr::vk::ContextOptions{.device = device, .validation = o.validation});
+  s.meter = std::make_unique<pr::vk::FieldMeter>(*s.ctx, s.field,
+      pr::vk::MeasureOptions{.shader_dirs = {fs::absolute(glsl).parent_path()}, .cache_dir = s.cache});
+  return s;
+}
+
+void add_field_options(CLI::App& app, FieldOptions& o) {
+  app.add_option("--sdf", o.sdf, "the field's GLSL file (pr_real <name>_distance(pr_real3 p))")->required();
+  app.add_option("--function", o.function, "its distance function (default: <file stem>_distance)");
+  app.add_option("--id", o.id, "the field's name in tables (default: the file's stem)");
+  app.add_option("--aabb", o.aabb, "local box: minx,miny,minz,maxx,maxy,maxz")->capture_default_str();
+  app.add_option("--lipschitz", o.lipschitz, "the bound L (required unless --exact)");
+  app.add_flag("--exact", o.exact, "an exact distance (L = 1)");
+  app.add_option("--iterations", o.iterations, "a fractal: f(p, iterations), the default count");
+  app.add_option("--size", o.size, "the size you render at, WxH")->capture_default_str();
+  app.add_option("--eye", o.eye, "camera position x,y,z")->capture_default_str();
+  app.add_option("--target", o.target, "camera target x,y,z")->capture_default_str();
+  app.add_option("--fov", o.fov, "vertical field of view, degrees")->capture_default_str();
+  app.add_option("--device", o.device, "cpu (lavapipe), gpu or auto")->check(CLI::IsMember({"cpu", "gpu", "auto"}));
+  app.add_flag("--validation", o.validation, "the Khronos validation layer; a message fails the run");
+  app.add_option("--cache", o.cache, "cache folder (truth, tables, the compiled field; default the library's)");
+}
+
+int measure(const FieldOptions& o, const std::vector<std::string>& knobs, const std::string& csv) {
+  Setup s = setup(o);
+  pr::MarchKnobs k = s.meter->capabilities().defaults;
+  for (const std::string& kv : knobs) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos) throw BadInput("--knob '" + kv + "' is not name=value");
+    pr::set_knob(k, kv.substr(0, eq), kv.substr(eq + 1));
+  }
+  const pr::vk::Measurement m = s.meter->measure(s.truth(), k, s.view);
+  pr::accuracy::write_table(std::cout, m.metrics);
+  std::printf("wrong_surface %llu (%.4g%% of the truth's hits)\nevaluations per ray %.3f (%.3f per ray in the box)\n"
+              "gpu %.3f ms, truth %.0f ms%s\n", static_cast<unsigned long long>(m.wrong_surface),
+              100.0 * m.wrong_surface_rate, m.evaluations_per_ray, m.evaluations_per_box_ray, m.gpu_ms, m.truth_ms,
+              m.truth_cached ? " (cached)" : "");
+  if (!csv.empty()) {
+    std::ofstream out(csv);
+    std::vector<pr::accuracy::Label> labels{{"field", s.field.id}, {"size", o.size}};
+    for (const auto& [name, value] : pr::knob_values(k)) labels.push_back({name, value});
+    labels.push_back({"wrong_surface_rate", std::to_string(m.wrong_surface_rate)});
+    labels.push_back({"evals_per_box_ray", std::to_string(m.evaluations_per_box_ray)});
+    labels.push_back({"gpu_ms", std::to_string(m.gpu_ms)});
+    pr::accuracy::write_csv(out, m.metrics, labels);
+    std::printf("wrote %s\n", csv.c_str());
+  }
+  return s.ctx->validation_messages().empty() ? 0 : 1;
+}
+
+int calibrate(const FieldOptions& o, const std::string& shard, const std::string& out) {
+  Setup s = setup(o);
+  std::uint32_t i = 1, n = 1;
+  if (!shard.empty() && (std::sscanf(shard.c_str(), "%u/%u", &i, &n) != 2 || n == 0 || i == 0 || i > n)) {
+    throw BadInput("--shard '" + shard + "' is not i/n with 1 <= i <= n");
+  }
+  const std::vector<pr::MarchKnobs> all = pr::vk::field_preset(s.meter->capabilities());
+  const std::size_t begin = all.size() * (i - 1) / n, end = all.size() * i / n;  // contiguous blocks
+  const std::vector<pr::MarchKnobs> part(all.begin() + static_cast<std::ptrdiff_t>(begin),
+                                         all.begin() + static_cast<std::ptrdiff_t>(end));
+  std::fprintf(stderr, "shard %u/%u: settings %zu..%zu of %zu\n", i, n, begin + 1, end, all.size());
+  const pr::vk::Calibrated c = pr::vk::calibrate(*s.meter, s.truth(),
+      {.view = s.view, .settings = part, .cache_dir = s.cache,
+       .progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }});
+  std::ofstream file(out);
+  c.table.write(file);
+  if (!file) throw BadInput("cannot write '" + out + "'; give a writable --out path");
+  std::printf("wrote %s (%zu rows%s)\n", out.c_str(), c.table.rows().size(), c.cached ? ", cached" : "");
+  return s.ctx->validation_messages().empty() ? 0 : 1;
+}
+
+int merge(const std::vector<std::string>& parts, const std::string& out) {
+  std::vector<pr::CalibrationRow> rows;
+  std::string device, size;
+  for (const std::string& p : parts) {
+    const pr::Calibration t = pr::Calibration::load(p);
+    if (!device.empty() && (t.device() != device || t.size() != size)) {
+      throw BadInput(p + " was measured on " + t.device() + " at " + t.size() + ", the first part on " + device +
+                     " at " + size + "; merge parts of one calibration");
+    }
+    device = t.device();
+    size = t.size();
+    rows.insert(rows.end(), t.rows().begin(), t.rows().end());
+  }
+  std::ofstream file(out);
+  pr::Calibration(device, size, std::move(rows)).write(file);
+  if (!file) throw BadInput("cannot write '" + out + "'; give a writable --out path");
+  std::printf("wrote %s\n", out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"A distance field measured and calibrated on this device against its own ground truth"};
+  app.require_subcommand(1);
+  FieldOptions mo, co;
+  std::vector<std::string> knobs, parts;
+  std::string csv, shard, cal_out, merge_out;
+  CLI::App* m = app.add_subcommand("measure", "one setting: errors against the truth, evaluations, GPU time");
+  add_field_options(*m, mo);
+  m->add_option("--knob", knobs, "name=value of march/knobs.hpp (repeat it)");
+  m->add_option("--csv", csv, "also write the metrics as CSV (accuracy/report.hpp's columns)");
+  CLI::App* c = app.add_subcommand("calibrate", "the preset of methods and knobs at --size, as a calibration table");
+  add_field_options(*c, co);
+  c->add_option("--shard", shard, "i/n: the i-th of n contiguous blocks of settings");
+  c->add_option("--out", cal_out, "the table to write")->required();
+  CLI::App* g = app.add_subcommand("merge", "calibration tables of shards, in shard order, into one");
+  g->add_option("parts", parts, "the shards' tables")->required();
+  g->add_option("--out", merge_out, "the merged table")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (m->parsed()) return measure(mo, knobs, csv);
+    if (c->parsed()) return calibrate(co, shard, cal_out);
+    return merge(parts, merge_out);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "proceduray-field: %s\n", e.what());
+    return 2;
+  }
+}
