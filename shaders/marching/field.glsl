@@ -73,8 +73,8 @@ float field_normal_offset(MarchKnobs k, MarchSettings m, vec3 p, float s) {
   return march_knobs_normal_offset(k, p, max(march_epsilon(m, s), 1.0e-5));
 }
 
-/// Reports the march's hit at t (when found and in range) with `normal`; counts the march's and
-/// the normal's evaluations (the outputs' steps and FieldHit::steps).
+/// Reports the march's hit at t (when found and in range) with `normal` and the march's
+/// evaluations (FieldHit::steps); the steps output counts the normal's evaluations as well.
 void field_march_report(bool found, float t, uint steps, MarchSettings m, vec3 normal, uint normal_evaluations) {
   output_steps(steps);
 #ifdef PROCEDURAY_OUTPUTS
@@ -86,7 +86,7 @@ void field_march_report(bool found, float t, uint steps, MarchSettings m, vec3 n
   if (isnan(t) || any(isnan(normal))) output_flags(output_flag_nan);
 #endif
   hit.normal = normal;
-  hit.steps = float(steps + normal_evaluations);
+  hit.steps = float(steps);  // the march's; the outputs' steps count the normal's too
   reportIntersectionEXT(t, 0u);
 }
 

@@ -2,7 +2,7 @@
 // by what it does not use: the plane by its closed form written here, fractal hits by the
 // shaders' own distance estimates (0 exactly inside) in double, the Pac-men by pacman.glsl's
 // interval CSG, misses by a slab test written here; and against the float sphere tracer
-// (sphere_trace.glsl with march.glsl's settings, the paper's defaults) run in C++.
+// (sphere_trace.glsl with marching/field.glsl's settings, the paper's defaults) run in C++.
 #include "02_paper_scene/reference.hpp"
 
 namespace paper_reference_test {
@@ -13,7 +13,7 @@ struct pac {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
 #include "primitives/pacman.glsl"
 };
-/// march.glsl's marcher in float on one fractal: kind 0 the Mandelbulb, 1 the cut Julia set.
+/// marching/field.glsl's marcher in float on one fractal: kind 0 the Mandelbulb, 1 the cut Julia set.
 template <int kind>
 struct march {
   PROCEDURAY_GLSL_CPP_SCALAR(float)
@@ -256,7 +256,7 @@ struct Marched {
   double t = 0.0;
 };
 
-/// One pixel marched as march.glsl does on the GPU, in float: camera.glsl's ray, the object ray
+/// One pixel marched as marching/field.glsl does on the GPU, in float: camera.glsl's ray, the object ray
 /// (eye - T) / scale and dir / scale, clipped to the object's AABB, sphere traced along the unit
 /// object direction with the paper's default knobs, t converted back by the direction's length.
 template <int kind>

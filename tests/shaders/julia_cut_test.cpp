@@ -3,7 +3,7 @@
 // method is the shipped one, in float: shaders/marching/sphere_trace.glsl marching julia.glsl's
 // julia_cut_distance with the paper's default knobs (paper::default_constants: 256 steps, epsilon
 // 1e-4 world, threshold 0.5 pixel footprints, step scale 1) at a 320x240 camera's pixel angle, as
-// march.glsl sets them up in object space. The truth is the reference's own (reference_objects.hpp):
+// marching/field.glsl sets them up in object space. The truth is the reference's own (reference_objects.hpp):
 // paper::julia_cut_inside, the escape test plus the kept half-space, searched along the same float
 // ray in double by accuracy::predicate_search. Why: a plane cut by max(d_julia, d_plane) turns the
 // face into a plane that rays can run along at any height, where a march may creep (probes of a
@@ -51,7 +51,7 @@ const double pixel_angle = constants.camera.pixel_angle;
 const glm::dvec3 cut_normal(paper::julia_cut_plane);  // |n| = 1 to 6e-6 (rounded floats): a distance per unit
 const double cut_w = paper::julia_cut_plane.w;
 
-/// march.glsl's settings in object space: the absolute epsilon divided by the instance's scale.
+/// marching/field.glsl's settings in object space: the absolute epsilon divided by the instance's scale.
 MarchSettings settings() {
   return march_settings(knobs, paper::julia_placement.scale, constants.camera.pixel_angle, 1.0f);
 }
@@ -77,7 +77,7 @@ struct Face {
   glm::dvec3 along(double angle) const { return std::cos(angle) * e1 + std::sin(angle) * e2; }
 };
 
-/// One float ray clipped to julia_aabb as march.glsl clips it, marched, and its reference.
+/// One float ray clipped to julia_aabb as marching/field.glsl clips it, marched, and its reference.
 struct Trace {
   glm::vec3 o{0.0f}, u{0.0f};
   float t0 = 0.0f, t1 = 0.0f;
@@ -289,7 +289,7 @@ TEST_CASE("julia cut: grazing rays onto the cut face - t error and evaluations")
           // Normal at the reported point, where the reference says the set is solid within twice
           // the tetrahedron's reach: the tetrahedral normal there vs the plane's exact normal.
           const glm::vec3 q = r.o + r.s * r.u;
-          const float h = std::max(march_epsilon(m, r.s), 1.0e-5f);  // march.glsl's
+          const float h = std::max(march_epsilon(m, r.s), 1.0e-5f);  // marching/field.glsl's
           if (!solid_ball(glm::dvec3(q), 2.0 * std::sqrt(3.0) * h + 1.0e-3, true)) continue;
           const glm::vec3 n = shape_tetrahedral_normal(q, h, {});
           REQUIRE(finite(n));

@@ -8,7 +8,7 @@
 // (reference_objects.hpp: predicate_search on the double escape test, not a march) finds a class
 // change, and rays within one pixel footprint of it are the silhouette rays. Interior rays: rays
 // nearer the centre whose reference hits, as do its four neighbours one footprint away.
-// Each ray is marched as march.glsl does (object space, AABB clip by ray_clip_aabb, the paper
+// Each ray is marched as marching/field.glsl does (object space, AABB clip by ray_clip_aabb, the paper
 // defaults: 8 iterations, threshold 0.5 footprints, epsilon 1e-4, step scale 1), with its
 // distance evaluations recorded, so the test sees whether an inside point was ever found.
 #include "02_paper_scene/reference_objects.hpp"
@@ -101,7 +101,7 @@ struct March {
   std::uint32_t steps = 0, evaluations = 0, inside_points = 0;
 };
 
-/// One march as march.glsl runs it: object space, AABB clip, unit direction, the paper's knobs.
+/// One march as marching/field.glsl runs it: object space, AABB clip, unit direction, the paper's knobs.
 March march(glm::vec3 dir, std::uint32_t max_steps) {
   const float scale = paper::mandelbulb_placement.scale;
   const glm::vec3 o = (glm::vec3(constants.camera.eye) - paper::mandelbulb_placement.translation) / scale;

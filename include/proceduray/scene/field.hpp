@@ -39,7 +39,7 @@ namespace proceduray {
 /// scene interface's Attributes<...> to declare distance fields.
 PROCEDURAY_DEFINE_STRUCT(FieldHit, scalar,
     (glm::vec3, normal),   ///< object space, unit, outward (the field's gradient)
-    (float, steps));       ///< distance evaluations the march took (the normal's included)
+    (float, steps));       ///< distance evaluations the march took (the normal's not included)
 
 /// One field's run-time settings (the `proceduray_fields` storage buffer, one per field).
 PROCEDURAY_DEFINE_STRUCT(FieldSettings, scalar,
