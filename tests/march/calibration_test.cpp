@@ -69,6 +69,11 @@ TEST_CASE("calibration - a table round-trips through its file") {
     CHECK(describe(b.rows()[i].knobs) == describe(a.rows()[i].knobs));
   }
   CHECK(b.geometries() == std::vector<std::string>{"cog", "torus"});
+  CHECK(b.source().empty());
+  // A table that says what it measured keeps it.
+  const Calibration c("d", "8x8", a.rows(), "gyroid glsl 0123456789abcdef");
+  std::istringstream in_c(text_of(c));
+  CHECK(Calibration::parse(in_c, "memory").source() == "gyroid glsl 0123456789abcdef");
 }
 
 TEST_CASE("calibration - the cheapest row within the budget, cheaper as it loosens") {

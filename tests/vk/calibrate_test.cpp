@@ -87,10 +87,16 @@ TEST_CASE("calibrate: measured once, reused from the cache, redone after the GLS
     CHECK(lines.empty());  // nothing measured
     CHECK(c.table.rows().size() == table.rows().size());
   }
+  CHECK(table.device() == t.ctx.name());
+  CHECK(table.source().find("gyroid glsl ") == 0);  // what was measured: the file's text
+  const pr::Calibration before = table;
   std::ofstream(dir / "shaders" / "gyroid.glsl", std::ios::app) << "// changed\n";
   {
     pr::vk::FieldMeter meter(t.ctx, gyroid_field, measure);
-    CHECK_FALSE(pr::vk::calibrate(meter, gyroid_cpu, o).cached);
+    const pr::vk::Calibrated c = pr::vk::calibrate(meter, gyroid_cpu, o);
+    CHECK_FALSE(c.cached);
+    CHECK(c.table.source() != before.source());
+    table = c.table;
   }
   // The default budget's pick reaches the renderer as the field's knobs.
   using Interface = pr::ShaderInterface<pr::Payload<pr::vk::detail::MeasurePayload>,
@@ -102,9 +108,16 @@ TEST_CASE("calibrate: measured once, reused from the cache, redone after the GLS
   scene.add_raygen("measure/measure.rgen");
   const pr::GeometryId g = pr::add_distance_field(scene, "gyroid", {.glsl = "gyroid.glsl", .lipschitz = 1.75f,
                                                                     .closest_hit = {{ray, "measure/measure.rchit"}}});
+  const pr::vk::RendererOptions ro{.shader_dirs = {dir / "shaders", pr::vk::library_shader_dir()}};
+  // A table measured for the file's old text, or on another device, is refused.
+  scene.set_error_budget({}, before, 64, 48);
+  CHECK_THROWS_WITH_AS(pr::vk::Renderer(t.ctx, scene, ro), doctest::Contains("calibrate it again"), pr::UsageError);
+  scene.set_error_budget({}, pr::Calibration("Some GPU", "64x48", table.rows(), table.source()), 64, 48);
+  CHECK_THROWS_WITH_AS(pr::vk::Renderer(t.ctx, scene, ro), doctest::Contains("was measured on Some GPU"),
+                       pr::UsageError);
   scene.set_error_budget({}, table, 64, 48);
   const pr::CalibrationRow expected = table.cheapest("gyroid", {});
-  pr::vk::Renderer r(t.ctx, scene, {.shader_dirs = {dir / "shaders", pr::vk::library_shader_dir()}});
+  pr::vk::Renderer r(t.ctx, scene, ro);
   CHECK(pr::describe(r.field_knobs(g)) == pr::describe(expected.knobs));
   CHECK(r.plan().fields()[0].pick->evals == expected.evals);
 }

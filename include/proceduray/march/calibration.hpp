@@ -107,8 +107,10 @@ PROCEDURAY_DECL std::filesystem::path shipped_calibration();
 class Calibration {
  public:
   Calibration() = default;
-  Calibration(std::string device, std::string size, std::vector<CalibrationRow> rows)
-      : m_device(std::move(device)), m_size(std::move(size)), m_rows(std::move(rows)) {}
+  /// `source`: what was measured, when one file was (vk::calibrate: "<id> glsl <hash>"); kept as
+  /// a line "# source <text>" so a table is not reused for another version of that file.
+  Calibration(std::string device, std::string size, std::vector<CalibrationRow> rows, std::string source = {})
+      : m_device(std::move(device)), m_size(std::move(size)), m_rows(std::move(rows)), m_source(std::move(source)) {}
 
   /// Reads a table; `source` names it in errors. Throws EnvironmentError for a foreign or
   /// damaged file, or one written by another library version (with both versions).
@@ -140,7 +142,12 @@ class Calibration {
     const auto space = measured.rfind(' ');
     out.m_device = space == std::string::npos ? measured : measured.substr(0, space);
     out.m_size = space == std::string::npos ? "" : measured.substr(space + 1);
-    if (!next(line) || line != header(format_1)) throw fail("the column header is not this version's");
+    if (!next(line)) line.clear();
+    if (line.rfind("# source ", 0) == 0) {
+      out.m_source = line.substr(9);
+      if (!next(line)) line.clear();
+    }
+    if (line != header(format_1)) throw fail("the column header is not this version's");
     const std::size_t errors = format_1 ? 6 : 7;  // evals and the errors, before the knobs
     std::size_t number = 4;
     while (next(line)) {
@@ -198,8 +205,9 @@ class Calibration {
 
   /// Writes the table in the format parse reads.
   void write(std::ostream& out) const {
-    out << calibration_format << "\n# library " << version << "\n# measured " << m_device << " " << m_size << "\n"
-        << header() << "\n";
+    out << calibration_format << "\n# library " << version << "\n# measured " << m_device << " " << m_size << "\n";
+    if (!m_source.empty()) out << "# source " << m_source << "\n";
+    out << header() << "\n";
     out.precision(9);
     for (const CalibrationRow& r : m_rows) {
       out << r.geometry << "," << r.kind << "," << r.evals << "," << r.depth_median << "," << r.depth_p99 << ","
@@ -256,10 +264,13 @@ class Calibration {
   const std::vector<CalibrationRow>& rows() const noexcept { return m_rows; }
   const std::string& device() const noexcept { return m_device; }
   const std::string& size() const noexcept { return m_size; }
+  /// What was measured ("" when not recorded): see the constructor.
+  const std::string& source() const noexcept { return m_source; }
 
  private:
   std::string m_device, m_size;
   std::vector<CalibrationRow> m_rows;
+  std::string m_source;
 };
 
 }  // namespace proceduray

@@ -33,10 +33,12 @@ PROCEDURAY_DECL void PlanBuilder::fields() {
   out.m_field_binding = next;
   out.m_global->bindings.push_back(StorageSlot<FieldSettings>{.binding = next, .name = field_settings_name});
   for (const DistanceField& f : s.fields()) {
-    PlannedField planned{f, s.geometry_id(f.id), field_capabilities(f), std::nullopt};
+    PlannedField planned{f, s.geometry_id(f.id), field_capabilities(f), std::nullopt, {}, {}};
     if (s.error_budget()) {
       planned.pick = pick_setting(f, *s.error_budget(), "compile");
       planned.caps.defaults = planned.pick->knobs;
+      planned.pick_device = s.error_budget()->table.device();
+      planned.pick_source = s.error_budget()->table.source();
     }
     out.m_fields.push_back(std::move(planned));
   }

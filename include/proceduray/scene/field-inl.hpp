@@ -124,6 +124,15 @@ PROCEDURAY_DECL CalibrationRow pick_setting(const DistanceField& f, const FieldB
   }
 }
 
+PROCEDURAY_DECL std::string field_source(const DistanceField& f, std::string_view glsl_text) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  for (unsigned char c : glsl_text) h = (h ^ c) * 1099511628211ull;
+  static constexpr char digits[] = "0123456789abcdef";
+  std::string hex(16, '0');
+  for (int i = 15; i >= 0; --i, h >>= 4) hex[static_cast<std::size_t>(i)] = digits[h & 15u];
+  return f.id + " glsl " + hex;
+}
+
 PROCEDURAY_DECL std::string field_stage_name(const DistanceField& f) { return f.id + ".field.rint"; }
 
 PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint32_t index) {

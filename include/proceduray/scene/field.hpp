@@ -76,6 +76,10 @@ struct FieldBudget {
 /// and the fix), no rows for it (calibrate it), or no row meeting the budget (the best reachable).
 PROCEDURAY_DECL CalibrationRow pick_setting(const DistanceField& f, const FieldBudget& b, std::string_view op);
 
+/// What a field's calibration records as its source (Calibration::source): "<id> glsl <FNV-1a
+/// of the file's text>", so a table is not reused for another version of the file.
+PROCEDURAY_DECL std::string field_source(const DistanceField& f, std::string_view glsl_text);
+
 /// The function's name: DistanceField::function, or "<id>_distance".
 PROCEDURAY_DECL std::string field_function(const DistanceField& f);
 

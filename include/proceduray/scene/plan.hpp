@@ -81,6 +81,8 @@ struct PlannedField {
   MarchCapabilities caps;  ///< what its knobs may be (field_capabilities), with the defaults (the pick, if any)
   /// The setting the scene's error budget picked (its knobs, predicted errors and cost), if one was set.
   std::optional<CalibrationRow> pick;
+  std::string pick_device;  ///< the device the pick's table was measured on
+  std::string pick_source;  ///< the table's source (Calibration::source), "" when not recorded
   friend bool operator==(const PlannedField& a, const PlannedField& b) {
     return a.field == b.field && a.geometry == b.geometry;  // caps follow from the field
   }

@@ -45,6 +45,9 @@ struct Calibrated {
   std::filesystem::path file;   ///< the cache file (empty without a cache folder)
 };
 
+/// The source a meter's calibration records (scene/field.hpp's field_source).
+inline std::string field_source(const FieldMeter& meter) { return field_source(meter.field(), meter.glsl_text()); }
+
 /// The settings calibrate() measures by default for a field that accepts `caps`.
 PROCEDURAY_DECL std::vector<MarchKnobs> field_preset(const MarchCapabilities& caps);
 
@@ -94,7 +97,7 @@ Calibrated calibrate(FieldMeter& meter, const Distance& distance, const Calibrat
       o.progress(std::string(line) + "  " + describe(settings[i]));
     }
   }
-  out.table = Calibration(meter.device(), detail::view_size(o.view), std::move(rows));
+  out.table = Calibration(meter.device(), detail::view_size(o.view), std::move(rows), field_source(meter));
   if (!out.file.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(out.file.parent_path(), ec);

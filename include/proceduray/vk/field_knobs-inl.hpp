@@ -6,6 +6,9 @@
 #include "proceduray/vk/field_knobs.hpp"
 
 #include <cmath>
+
+#include "proceduray/vk/scene_pipeline.hpp"
+#include "proceduray/vk/shader_compiler.hpp"
 #include <string>
 
 #if PROCEDURAY_BODIES
@@ -67,6 +70,24 @@ PROCEDURAY_DECL void FieldKnobs::upload(Bindings& bindings, std::string_view op)
   if (!m_dirty) return;
   bindings.set_storage(detail::field_slot(*m_plan), std::span<const FieldSettings>(m_settings));
   m_dirty = false;
+}
+
+PROCEDURAY_DECL void FieldKnobs::check_picks(const proceduray::Plan& plan, const std::string& device,
+                                             std::span<const std::filesystem::path> dirs, std::string_view op) {
+  for (const PlannedField& f : plan.fields()) {
+    if (!f.pick) continue;
+    const std::string where = std::string(op) + ": distance field \"" + f.field.id + "\"";
+    if (f.pick_device != device) {
+      throw UsageError(where + ": its error budget's table was measured on " + f.pick_device + ", this device is " +
+                       device + "; calibrate on this device (vk::calibrate) and pass that table");
+    }
+    if (f.pick_source.empty()) continue;  // a table that does not say what it measured
+    const std::string now = field_source(f.field, read_text_file(find_shader(dirs, f.field.glsl)));
+    if (f.pick_source != now) {
+      throw UsageError(where + ": its error budget's table was measured for '" + f.pick_source + "', the file is now '" +
+                       now + "'; calibrate it again (vk::calibrate reads its cache only for the same text)");
+    }
+  }
 }
 
 }  // namespace proceduray::vk

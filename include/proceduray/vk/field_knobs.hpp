@@ -17,6 +17,9 @@
 #include <proceduray/scene/plan.hpp>
 #include <proceduray/vk/bindings.hpp>
 
+#include <filesystem>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -40,6 +43,11 @@ class FieldKnobs {
   void upload(Bindings& bindings, std::string_view op);
   /// True when a change waits for upload().
   bool dirty() const noexcept { return m_dirty; }
+  /// Throws UsageError, naming `op` and the field, when an error budget's pick (Plan::fields())
+  /// came from a table measured on another device than `device`, or for another text of the
+  /// field's GLSL file than the one found in `dirs`: its errors were measured for something else.
+  static void check_picks(const proceduray::Plan& plan, const std::string& device,
+                          std::span<const std::filesystem::path> dirs, std::string_view op);
 
  private:
   std::size_t index(GeometryId field, std::string_view op) const;

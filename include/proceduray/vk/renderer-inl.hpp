@@ -29,6 +29,8 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, Re
   // then the depth the stages' tracing settles, when derived.
   m_layout = m_plan.layout(ctx.limits());
   SceneStages stages = compile_scene_stages(m_plan, options);
+  FieldKnobs::check_picks(m_plan, ctx.name(), options.shader_dirs.empty() ?
+      std::vector<std::filesystem::path>{std::filesystem::current_path()} : options.shader_dirs, "Renderer");
   m_plan.settle_recursion(stages.traces, ctx.limits(), "Renderer");
   const auto start = Clock::now();
   m_structures = std::make_unique<SceneAcceleration>(ctx, m_plan, options.blas);
