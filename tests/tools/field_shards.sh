@@ -17,4 +17,11 @@ for i in 1 2 3; do
   [ "$(grep -vc '^#' "$out/part$i.csv")" -gt 1 ] || { echo "FAIL: shard $i wrote no rows"; exit 1; }
 done
 cmp "$out/whole.csv" "$out/merged.csv" || { echo "FAIL: merged shards differ from the unsharded table"; exit 1; }
+# A part of another calibration (another size) is refused, naming both.
+"$tool" calibrate --sdf "$glsl" --lipschitz 1.75 --size 20x15 --device cpu --cache "$out/cache" --shard 1/3 \
+  --out "$out/other.csv" 2>/dev/null >/dev/null
+if message=$("$tool" merge "$out/other.csv" "$out/part2.csv" --out "$out/bad.csv" 2>&1); then
+  echo "FAIL: parts of two calibrations were merged"; exit 1
+fi
+grep -q "at 40x30.*merge the parts of one calibration" <<<"$message" || { echo "FAIL: unclear refusal: $message"; exit 1; }
 echo "shards merged: $((rows - 1)) rows, equal to the unsharded run"

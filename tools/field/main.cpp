@@ -217,19 +217,21 @@ int calibrate(const FieldOptions& o, const std::string& shard, const std::string
 
 int merge(const std::vector<std::string>& parts, const std::string& out) {
   std::vector<pr::CalibrationRow> rows;
-  std::string device, size;
+  std::string device, size, source;
   for (const std::string& p : parts) {
     const pr::Calibration t = pr::Calibration::load(p);
-    if (!device.empty() && (t.device() != device || t.size() != size)) {
-      throw BadInput(p + " was measured on " + t.device() + " at " + t.size() + ", the first part on " + device +
-                     " at " + size + "; merge parts of one calibration");
+    if (!device.empty() && (t.device() != device || t.size() != size || t.source() != source)) {
+      throw BadInput(p + " was measured on " + t.device() + " at " + t.size() + " for '" + t.source() +
+                     "', the first part on " + device + " at " + size + " for '" + source +
+                     "'; merge the parts of one calibration");
     }
     device = t.device();
     size = t.size();
+    source = t.source();
     rows.insert(rows.end(), t.rows().begin(), t.rows().end());
   }
   std::ofstream file(out);
-  pr::Calibration(device, size, std::move(rows)).write(file);
+  pr::Calibration(device, size, std::move(rows), source).write(file);
   if (!file) throw BadInput("cannot write '" + out + "'; give a writable --out path");
   std::printf("wrote %s\n", out.c_str());
   return 0;
