@@ -207,6 +207,28 @@ TEST_CASE("a known t offset gives a known error in pixel footprints") {
   CHECK(m[PixelClass::interior].depth.mean == doctest::Approx(2.5));
 }
 
+TEST_CASE("hits more than 2 footprints behind the truth count as wrong-surface, in front never") {
+  // Footprint at t = 10: 0.01. Behind by 0.025 (2.5 footprints): wrong surface; by 0.015 (1.5)
+  // and in front by 0.05 (5): depth errors only.
+  const std::vector<Reference> refs = block(12, 12, 3, 8, 10.0);  // 36 hits
+  std::vector<Sample> samples = perfect(refs);
+  samples[3 * 12 + 3].t += 0.025;
+  samples[3 * 12 + 4].t += 0.025;
+  samples[5 * 12 + 5].t += 0.025;
+  samples[5 * 12 + 6].t += 0.015;
+  samples[6 * 12 + 6].t -= 0.05;
+  samples[7 * 12 + 7].hit = false;  // a false miss: a truth hit the rate counts over
+  const Metrics m = measure(frame_of(12, 12), samples, refs);
+  CHECK(m.all.wrong_surface == 3);
+  CHECK(m[PixelClass::silhouette_1px].wrong_surface == 2);
+  CHECK(m[PixelClass::interior].wrong_surface == 1);
+  CHECK(m.all.wrong_surface_rate() == doctest::Approx(3.0 / 36.0));
+  CHECK(std::isnan(m[PixelClass::far].wrong_surface_rate()));  // no truth hits there
+  std::ostringstream out;
+  write_csv(out, m);
+  CHECK(csv_cell(out.str(), 4, "wrong_surface") == "3");
+}
+
 TEST_CASE("false hits and false misses are counted in their classes") {
   // The method grows the block by one pixel (false hits on the 28-pixel ring, all in silhouette_1px)
   // and misses the 4 interior pixels (false misses, all interior).
@@ -369,7 +391,7 @@ TEST_CASE("csv has the stable header and one row per class then all") {
   CHECK(lines.at(0) == "class,rays,undetermined,agree,false_hits,false_misses,agree_rate,false_hit_rate,"
                        "false_miss_rate,both_hit,depth_px_median,depth_px_p95,depth_px_p99,depth_px_max,normal_rays,"
                        "normal_deg_median,normal_deg_p95,normal_deg_max,steps_mean,steps_median,steps_p99,steps_max,"
-                       "nonfinite,exhausted,started_inside");
+                       "nonfinite,exhausted,started_inside,wrong_surface,wrong_surface_rate");
   REQUIRE(lines.size() == 6);
   const std::size_t columns_count = fields_of(lines[0]).size();
   for (std::size_t r = 0; r < 4; ++r) {

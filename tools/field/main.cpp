@@ -185,7 +185,6 @@ int measure(const FieldOptions& o, const std::vector<std::string>& knobs, const 
     std::ofstream out(csv);
     std::vector<pr::accuracy::Label> labels{{"field", s.field.id}, {"size", o.size}};
     for (const auto& [name, value] : pr::knob_values(k)) labels.push_back({name, value});
-    labels.push_back({"wrong_surface_rate", std::to_string(m.wrong_surface_rate)});
     labels.push_back({"evals_per_box_ray", std::to_string(m.evaluations_per_box_ray)});
     labels.push_back({"gpu_ms", std::to_string(m.gpu_ms)});
     pr::accuracy::write_csv(out, m.metrics, labels);

@@ -97,6 +97,9 @@ constexpr std::string_view name(PixelClass c) {
   return names[static_cast<std::size_t>(c)];
 }
 
+/// How far behind the reference's hit (pixel footprints) a hit counts as on a wrong surface.
+inline constexpr double wrong_surface_footprints = 2.0;
+
 /// Statistics of one pixel class (or of all). Rays with an undetermined reference are only counted.
 struct ClassStats {
   std::size_t rays = 0;            ///< rays with a determined reference
@@ -105,6 +108,9 @@ struct ClassStats {
   std::size_t false_hits = 0;      ///< method hit, reference missed
   std::size_t false_misses = 0;    ///< method missed, reference hit
   std::size_t both_hit = 0;        ///< both hit: the rays with depth and normal errors
+  /// Both hit, and the method's t lies more than wrong_surface_footprints behind the reference's:
+  /// a surface behind the true one (a march that stepped over a thin part), not a depth error.
+  std::size_t wrong_surface = 0;
   Distribution depth;              ///< |t - t_ref| / (t_ref * pixel angle), both hit and t finite
   Distribution normal_degrees;     ///< angle between normals, both hit, both normals finite, reference non-zero
   Distribution steps;              ///< Sample::steps over all rays, finite values
@@ -115,6 +121,12 @@ struct ClassStats {
   double agree_rate() const { return rate(agree); }              ///< agree / rays; NaN without rays
   double false_hit_rate() const { return rate(false_hits); }     ///< false_hits / rays; NaN without rays
   double false_miss_rate() const { return rate(false_misses); }  ///< false_misses / rays; NaN without rays
+  /// wrong_surface / the reference's hits (both_hit + false_misses); NaN without any.
+  double wrong_surface_rate() const {
+    const std::size_t hits = both_hit + false_misses;
+    return hits == 0 ? std::numeric_limits<double>::quiet_NaN()
+                     : static_cast<double>(wrong_surface) / static_cast<double>(hits);
+  }
 
  private:
   double rate(std::size_t n) const {
@@ -229,6 +241,7 @@ struct Accumulator {
     if (!(s.hit && ref_hit)) return;
     ++stats.both_hit;
     if (t_ok) depth.push_back(std::abs(s.t - r.t) / (r.t * pixel_angle));
+    if (t_ok && (s.t - r.t) / (r.t * pixel_angle) > wrong_surface_footprints) ++stats.wrong_surface;
     if (n_ok && r.normal != glm::dvec3(0.0)) normal.push_back(angle_degrees(s.normal, r.normal));
   }
 

@@ -17,7 +17,7 @@
 //   rays undetermined agree false_hits false_misses agree_rate false_hit_rate false_miss_rate
 //   both_hit depth_px_median depth_px_p95 depth_px_p99 depth_px_max normal_rays normal_deg_median
 //   normal_deg_p95 normal_deg_max steps_mean steps_median steps_p99 steps_max nonfinite exhausted
-//   started_inside
+//   started_inside wrong_surface wrong_surface_rate
 // (meanings: columns()[i].meaning, and ClassStats in metrics.hpp). Counts are written as integers,
 // other values with 9 significant digits, infinity as "inf", and a value that does not exist (the
 // median of no rays, a rate of no rays) as an empty field: "no data" must not read as zero. Fields
@@ -53,7 +53,7 @@ struct Column {
 /// The metric columns, in CSV order (after the labels and "class").
 inline std::span<const Column> columns() {
   using S = const ClassStats&;
-  static constexpr std::array<Column, 24> all{{
+  static constexpr std::array<Column, 26> all{{
       {"rays", "rays with a determined reference", true, [](S s) { return double(s.rays); }},
       {"undetermined", "rays with an undetermined reference (in no other column)", true,
        [](S s) { return double(s.undetermined); }},
@@ -81,6 +81,9 @@ inline std::span<const Column> columns() {
       {"nonfinite", "rays with a NaN or Inf output or flags::nan_seen", true, [](S s) { return double(s.nonfinite); }},
       {"exhausted", "rays whose march ran out of steps", true, [](S s) { return double(s.exhausted); }},
       {"started_inside", "rays that started inside the object", true, [](S s) { return double(s.started_inside); }},
+      {"wrong_surface", "both hit, the method more than 2 footprints behind the truth", true,
+       [](S s) { return double(s.wrong_surface); }},
+      {"wrong_surface_rate", "wrong_surface / the truth's hits", false, [](S s) { return s.wrong_surface_rate(); }},
   }};
   return all;
 }

@@ -96,17 +96,6 @@ PROCEDURAY_DECL void write_truth(const std::filesystem::path& file, std::uint64_
   std::filesystem::rename(part, file, ec);
 }
 
-PROCEDURAY_DECL std::uint64_t wrong_surfaces(const accuracy::Frame& frame, const std::vector<accuracy::Sample>& samples,
-                                             const std::vector<accuracy::Reference>& truth) {
-  std::uint64_t n = 0;
-  for (std::size_t i = 0; i < truth.size(); ++i) {
-    if (truth[i].outcome != accuracy::Outcome::hit || !samples[i].hit) continue;
-    const double footprint = truth[i].t * frame.angle(i);
-    n += samples[i].t - truth[i].t > 2.0 * footprint;
-  }
-  return n;
-}
-
 PROCEDURAY_DECL void check_view(const MeasureView& view, std::string_view op) {
   if (view.width == 0 || view.height == 0 || view.width > 16384 || view.height > 16384) {
     throw UsageError(std::string(op) + ": view size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
@@ -164,7 +153,7 @@ PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const Measure
       pixels, frame.outputs.t, frame.outputs.normal, frame.outputs.steps, frame.outputs.flags);
   const accuracy::Frame grid{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
   m.metrics = accuracy::measure(grid, samples, truth);
-  m.wrong_surface = detail::wrong_surfaces(grid, samples, truth);
+  m.wrong_surface = m.metrics.all.wrong_surface;
   std::uint64_t truth_hits = 0, evaluations = 0, box_rays = 0;
   for (const accuracy::Reference& r : truth) truth_hits += r.outcome == accuracy::Outcome::hit;
   for (std::uint32_t s : frame.outputs.steps) {

@@ -70,7 +70,7 @@ struct MeasureOptions {
 /// One field, one setting, one view.
 struct Measurement {
   accuracy::Metrics metrics;          ///< per pixel class: agreement, depth and normal errors, steps
-  std::uint64_t wrong_surface = 0;    ///< hits more than 2 footprints behind the truth's
+  std::uint64_t wrong_surface = 0;    ///< hits more than 2 footprints behind the truth's (metrics.all.wrong_surface)
   double wrong_surface_rate = 0.0;    ///< wrong_surface / the truth's hits (0 when none)
   double evaluations_per_ray = 0.0;   ///< mean evaluations per camera ray, every ray
   double evaluations_per_box_ray = 0.0;  ///< mean over the rays that evaluated the field (entered its box)
@@ -104,9 +104,6 @@ PROCEDURAY_DECL bool read_truth(const std::filesystem::path& file, std::uint64_t
                                 std::vector<accuracy::Reference>& out);
 PROCEDURAY_DECL void write_truth(const std::filesystem::path& file, std::uint64_t key,
                                  const std::vector<accuracy::Reference>& truth);
-/// Hits more than 2 footprints behind the truth's.
-PROCEDURAY_DECL std::uint64_t wrong_surfaces(const accuracy::Frame& frame, const std::vector<accuracy::Sample>& samples,
-                                             const std::vector<accuracy::Reference>& truth);
 PROCEDURAY_DECL void check_view(const MeasureView& view, std::string_view op);
 
 }  // namespace detail
