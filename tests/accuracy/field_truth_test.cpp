@@ -15,7 +15,7 @@
 
 namespace field_truth_test {
 using namespace proceduray::glsl_cpp;
-// The fields the device tests render (tests/vk/shaders/fields), as the C++ the truth runs.
+// The fields the device tests render (tests/vk/shaders/fields, example 06's gyroid), as the C++ the truth runs.
 template <class T>
 struct ball {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
@@ -24,7 +24,7 @@ struct ball {
 template <class T>
 struct gyroid {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../vk/shaders/fields/gyroid.glsl"
+#include "06_your_field/shaders/gyroid.glsl"
 };
 template <class T>
 struct sdf {

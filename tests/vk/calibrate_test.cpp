@@ -21,7 +21,7 @@ using namespace proceduray::glsl_cpp;
 template <class T>
 struct gyroid {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "shaders/fields/gyroid.glsl"
+#include "06_your_field/shaders/gyroid.glsl"
 };
 }  // namespace calibrate_test
 
@@ -56,8 +56,7 @@ TEST_CASE("calibrate: measured once, reused from the cache, redone after the GLS
   const std::filesystem::path dir = test_output_dir("calibrate_cache");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir / "shaders");
-  std::filesystem::copy_file(test_source_dir() / "vk" / "shaders" / "fields" / "gyroid.glsl",
-                             dir / "shaders" / "gyroid.glsl");
+  std::filesystem::copy_file(test_source_dir() / ".." / "examples" / "06_your_field" / "shaders" / "gyroid.glsl", dir / "shaders" / "gyroid.glsl");
   const pr::vk::MeasureOptions measure{.shader_dirs = {dir / "shaders"}, .repeats = 1};
   std::vector<std::string> lines;
   pr::vk::CalibrateOptions o{.view = view(), .cache_dir = dir / "cache",

@@ -58,7 +58,10 @@ struct FieldScene {
   }
 };
 
-pr::vk::RendererOptions options() { return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "fields"}}; }
+/// The test's fields, and example 06's gyroid (the field the library does not ship).
+pr::vk::RendererOptions options() {
+  return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "fields", test_source_dir() / ".." / "examples" / "06_your_field" / "shaders"}};
+}
 
 Constants constants() {
   return {pr::look_at({0.0f, 0.6f, 3.2f}, {0.0f, 0.0f, 0.0f}, 50.0f, width, height), pr::march_base_knobs};

@@ -25,7 +25,7 @@ struct ball {
 template <class T>
 struct gyroid {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "shaders/fields/gyroid.glsl"
+#include "06_your_field/shaders/gyroid.glsl"
 };
 }  // namespace measure_test
 
@@ -43,7 +43,8 @@ const pr::DistanceField gyroid_field{.id = "gyroid", .glsl = "gyroid.glsl",
                                      .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .lipschitz = 1.75f};
 
 pr::vk::MeasureOptions options(std::filesystem::path cache = {}) {
-  return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "fields"}, .cache_dir = std::move(cache), .repeats = 2};
+  return {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "fields", test_source_dir() / ".." / "examples" / "06_your_field" / "shaders"},
+          .cache_dir = std::move(cache), .repeats = 2};
 }
 
 pr::vk::MeasureView view(std::uint32_t w = 96, std::uint32_t h = 72) {
