@@ -5,6 +5,7 @@
 
 #include "proceduray/accuracy/closed_form.hpp"
 #include "proceduray/shader/glsl_cpp.hpp"
+#include "test_fields.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,17 +16,6 @@
 
 namespace field_truth_test {
 using namespace proceduray::glsl_cpp;
-// The fields the device tests render (tests/vk/shaders/fields, example 06's gyroid), as the C++ the truth runs.
-template <class T>
-struct ball {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "../vk/shaders/fields/ball.glsl"
-};
-template <class T>
-struct gyroid {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "06_your_field/shaders/gyroid.glsl"
-};
 template <class T>
 struct sdf {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
@@ -63,7 +53,7 @@ std::string refusal(auto&& f) {
 }  // namespace
 
 TEST_CASE("field truth: a ball and a box declared as fields give the closed forms' hits to 1e-9") {
-  auto ball_d = [](glm::dvec3 p) { return ball<double>::ball_distance(p); };
+  auto ball_d = [](glm::dvec3 p) { return test_fields::ball_cpu(p); };
   const glm::dvec3 half(0.7, 0.4, 0.9);
   auto box_d = [&](glm::dvec3 p) { return sdf<double>::sdf_box(p, half); };
   const acc::FieldBounds box_bounds{.name = "box", .min = -half - 0.1, .max = half + 0.1, .lipschitz = 1.0};
@@ -92,7 +82,7 @@ TEST_CASE("field truth: a ball and a box declared as fields give the closed form
 }
 
 TEST_CASE("field truth: the declared bound is checked by sampling; too small a bound names the slope") {
-  auto gyroid_d = [](glm::dvec3 p) { return gyroid<double>::gyroid_distance(p); };
+  auto gyroid_d = [](glm::dvec3 p) { return test_fields::gyroid_cpu(p); };
   acc::FieldBounds g{.name = "gyroid", .min = glm::dvec3(-1.0), .max = glm::dvec3(1.0), .lipschitz = 1.75};
   const acc::FieldScan scan = acc::scan_field(gyroid_d, g, "test");
   CHECK(scan.max_slope > 1.5);   // the gyroid term's sqrt(3) is nearly reached on the grid
@@ -104,7 +94,7 @@ TEST_CASE("field truth: the declared bound is checked by sampling; too small a b
   CHECK(m.find("above its declared Lipschitz bound 1") != std::string::npos);
   CHECK(m.find("declare a bound of at least") != std::string::npos);
   // The exact ball passes at 1.
-  CHECK_NOTHROW(acc::scan_field([](glm::dvec3 p) { return ball<double>::ball_distance(p); }, unit, "test"));
+  CHECK_NOTHROW(acc::scan_field([](glm::dvec3 p) { return test_fields::ball_cpu(p); }, unit, "test"));
 }
 
 TEST_CASE("field truth: NaN inside the box, bad boxes and bounds are refused") {
@@ -114,7 +104,7 @@ TEST_CASE("field truth: NaN inside the box, bad boxes and bounds are refused") {
   CHECK(m.find("make the distance finite") != std::string::npos);
   acc::FieldBounds b = unit;
   b.max.y = -2.0;
-  auto ball_d = [](glm::dvec3 p) { return ball<double>::ball_distance(p); };
+  auto ball_d = [](glm::dvec3 p) { return test_fields::ball_cpu(p); };
   CHECK(refusal([&] { acc::field_hit(ball_d, b, glm::dvec3(0, 0, -4), glm::dvec3(0, 0, 1), 0.0, 9.0); })
             .find("is not finite with min < max") != std::string::npos);
   for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {

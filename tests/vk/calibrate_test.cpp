@@ -3,10 +3,10 @@
 // the cache folder and redone after the GLSL changes, and the pick of a budget reaching the
 // renderer through compile().
 #include "test_context.hpp"
+#include "test_fields.hpp"
 #include "test_paths.hpp"
 
 #include <proceduray/proceduray.hpp>
-#include <proceduray/shader/glsl_cpp.hpp>
 
 #include <doctest/doctest.h>
 
@@ -16,20 +16,12 @@
 #include <string>
 #include <vector>
 
-namespace calibrate_test {
-using namespace proceduray::glsl_cpp;
-template <class T>
-struct gyroid {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "06_your_field/shaders/gyroid.glsl"
-};
-}  // namespace calibrate_test
 
 namespace {
 
 namespace pr = proceduray;
 
-const auto gyroid_cpu = [](glm::dvec3 p) { return calibrate_test::gyroid<double>::gyroid_distance(p); };
+using test_fields::gyroid_cpu;
 const pr::DistanceField gyroid_field{.id = "gyroid", .glsl = "gyroid.glsl",
                                      .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .lipschitz = 1.75f};
 

@@ -3,10 +3,10 @@
 // one worse; the truth is reused from memory and disk and redone when the GLSL changes; bad
 // views, knobs and bounds are refused.
 #include "test_context.hpp"
+#include "test_fields.hpp"
 #include "test_paths.hpp"
 
 #include <proceduray/accuracy/closed_form.hpp>
-#include <proceduray/shader/glsl_cpp.hpp>
 #include <proceduray/vk/measure.hpp>
 
 #include <doctest/doctest.h>
@@ -15,27 +15,14 @@
 #include <fstream>
 #include <string>
 
-namespace measure_test {
-using namespace proceduray::glsl_cpp;
-template <class T>
-struct ball {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "shaders/fields/ball.glsl"
-};
-template <class T>
-struct gyroid {
-  PROCEDURAY_GLSL_CPP_SCALAR(T)
-#include "06_your_field/shaders/gyroid.glsl"
-};
-}  // namespace measure_test
 
 namespace {
 
 namespace pr = proceduray;
 namespace acc = proceduray::accuracy;
 
-const auto ball_cpu = [](glm::dvec3 p) { return measure_test::ball<double>::ball_distance(p); };
-const auto gyroid_cpu = [](glm::dvec3 p) { return measure_test::gyroid<double>::gyroid_distance(p); };
+using test_fields::ball_cpu;
+using test_fields::gyroid_cpu;
 
 const pr::DistanceField ball_field{.id = "ball", .glsl = "ball.glsl", .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)},
                                    .exact = true};

@@ -5,31 +5,16 @@
 
 #include "proceduray/scene/field.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "proceduray/error.hpp"
+#include "proceduray/scene/glsl_names.hpp"
 #include "proceduray/shader/glsl_codegen.hpp"
 #include "proceduray/shader/glsl_keywords.hpp"
 
 #if PROCEDURAY_BODIES
 namespace proceduray {
 
-namespace detail {
-
-PROCEDURAY_DECL bool plain_identifier(std::string_view name) {
-  bool ok = !name.empty() && !(name[0] >= '0' && name[0] <= '9');
-  for (char c : name) ok = ok && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_');
-  return ok;
-}
-
-/// The shortest text that reads back as v ("nan", "inf" as such).
-PROCEDURAY_DECL std::string field_number(float v) {
-  char digits[32];
-  return std::string(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
-}
-
-}  // namespace detail
 
 PROCEDURAY_DECL std::string field_function(const DistanceField& f) { return f.function.empty() ? f.id + "_distance" : f.function; }
 
@@ -43,31 +28,31 @@ PROCEDURAY_DECL void validate(const DistanceField& f, std::string_view op) {
     fail("GLSL file name '" + f.glsl + "' holds a quote or a line break; give a plain path");
   }
   const std::string function = field_function(f);
-  if (!detail::plain_identifier(function) || is_glsl_reserved(function) || function.starts_with("gl_") ||
+  if (function.empty() || glsl_identifier(function) != function || is_glsl_reserved(function) || function.starts_with("gl_") ||
       function.starts_with("proceduray_")) {
     fail("function '" + function + "' is no GLSL function name (letters, digits, _; not reserved, not gl_ or "
          "proceduray_); set .function to the name in " + f.glsl);
   }
   for (int a = 0; a < 3; ++a) {
     if (!std::isfinite(f.aabb.min[a]) || !std::isfinite(f.aabb.max[a])) {
-      fail("AABB axis " + std::to_string(a) + " is [" + detail::field_number(f.aabb.min[a]) + ", " +
-           detail::field_number(f.aabb.max[a]) + "], not finite; give finite local bounds around the surface");
+      fail("AABB axis " + std::to_string(a) + " is [" + detail::number(f.aabb.min[a]) + ", " +
+           detail::number(f.aabb.max[a]) + "], not finite; give finite local bounds around the surface");
     }
     if (!(f.aabb.min[a] < f.aabb.max[a])) {
-      fail("AABB axis " + std::to_string(a) + " is [" + detail::field_number(f.aabb.min[a]) + ", " +
-           detail::field_number(f.aabb.max[a]) + "]: min must be below max; swap them or widen the box");
+      fail("AABB axis " + std::to_string(a) + " is [" + detail::number(f.aabb.min[a]) + ", " +
+           detail::number(f.aabb.max[a]) + "]: min must be below max; swap them or widen the box");
     }
   }
   if (f.exact) {
     if (f.lipschitz != 0.0f && f.lipschitz != 1.0f) {
-      fail("is declared exact (L = 1) and gives lipschitz " + detail::field_number(f.lipschitz) +
+      fail("is declared exact (L = 1) and gives lipschitz " + detail::number(f.lipschitz) +
            "; drop .exact or the bound");
     }
   } else if (!(f.lipschitz > 0.0f) || !std::isfinite(f.lipschitz)) {
     fail(f.lipschitz == 0.0f
              ? std::string("has no Lipschitz bound; give .lipschitz (the largest |grad f|: e.g. 1.8 for a gyroid "
                            "shell), or set .exact = true for an exact distance")
-             : "Lipschitz bound " + detail::field_number(f.lipschitz) +
+             : "Lipschitz bound " + detail::number(f.lipschitz) +
                    " must be a finite number > 0: the largest |grad f| over the box (.exact = true for an exact "
                    "distance)");
   }

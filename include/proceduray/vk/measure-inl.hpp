@@ -154,14 +154,14 @@ PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const Measure
   const accuracy::Frame grid{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
   m.metrics = accuracy::measure(grid, samples, truth);
   m.wrong_surface = m.metrics.all.wrong_surface;
-  std::uint64_t truth_hits = 0, evaluations = 0, box_rays = 0;
-  for (const accuracy::Reference& r : truth) truth_hits += r.outcome == accuracy::Outcome::hit;
+  std::uint64_t evaluations = 0, box_rays = 0;
   for (std::uint32_t s : frame.outputs.steps) {
     evaluations += s;
     box_rays += s > 0;
   }
   m.evaluations_per_box_ray = box_rays == 0 ? 0.0 : static_cast<double>(evaluations) / static_cast<double>(box_rays);
-  m.wrong_surface_rate = truth_hits == 0 ? 0.0 : static_cast<double>(m.wrong_surface) / truth_hits;
+  const double rate = m.metrics.all.wrong_surface_rate();  // NaN when the truth hits nothing
+  m.wrong_surface_rate = std::isnan(rate) ? 0.0 : rate;
   m.evaluations_per_ray = static_cast<double>(evaluations) / static_cast<double>(pixels);
 }
 
