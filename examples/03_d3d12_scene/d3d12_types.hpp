@@ -35,6 +35,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace d3d12 {
 
@@ -264,22 +265,40 @@ inline pr::Camera isolated_camera(PrimitiveKind k, std::uint32_t width, std::uin
   return pr::look_at(c + glm::vec3(0.0f, 1.8f, 4.2f), c, 40.0f, width, height);
 }
 
-/// The knobs primitive kind k accepts (analytic kinds: no methods), with its defaults: the
-/// library's per kind, except where this primitive's measured front says otherwise (the twisted
-/// torus: its Lipschitz bound 5.2 is loose, and over-relaxed steps of w 1.5 at a quarter
-/// footprint beat plain ones at half a footprint in cost and every error; docs/accuracy.md, "Defaults from the front").
+/// The knobs primitive kind k accepts (analytic kinds: no methods), with its defaults: its own
+/// pick from the shipped calibration tables, the cheapest setting at 1920x1080 that meets
+/// ErrorBudget{}, a picture that cannot be told from exact, there and at 640x360
+/// (tests/examples/march_defaults_test.cpp checks each against the tables). At 2 footprints the
+/// fractal pyramid steps over thin parts at 640x360 (0.95% of its pixels on a surface behind).
+/// Where plain and Lipschitz-scaled steps cost the same (a bound of 1), the Lipschitz ones: they
+/// stay safe if the shape's bound grows.
 inline const pr::MarchCapabilities& capabilities(PrimitiveKind k) {
   static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
-  static const pr::MarchCapabilities torus = [] {
-    pr::MarchCapabilities c = pr::sdf_capabilities();
-    c.defaults.method = pr::MarchMethod::relaxed;
-    c.defaults.relaxation = 1.5f;
-    c.defaults.threshold = 0.25f;
+  static const std::array<pr::MarchCapabilities, primitive_count> marched = [] {
+    std::array<pr::MarchCapabilities, primitive_count> c;
+    auto lipschitz = [](float threshold, bool refine, pr::MarchNormal normal) {
+      pr::MarchCapabilities caps = pr::sdf_capabilities();
+      caps.defaults.method = pr::MarchMethod::lipschitz;
+      caps.defaults.relaxation = 1.0f;
+      std::erase(caps.methods, pr::MarchMethod::lipschitz);  // the default first
+      caps.methods.insert(caps.methods.begin(), pr::MarchMethod::lipschitz);
+      caps.defaults.threshold = threshold;
+      caps.defaults.refine = refine ? 1u : 0u;
+      caps.defaults.normal = normal;
+      return caps;
+    };
+    c[metaballs] = pr::metaball_capabilities();                                      // segment, 2 footprints: 22.6
+    c[mini_spheres] = lipschitz(0.5f, true, pr::MarchNormal::tetrahedral);           // 21.3
+    c[round_cube] = lipschitz(0.5f, true, pr::MarchNormal::tetrahedral);             // 17.4
+    c[square_torus] = lipschitz(0.5f, false, pr::MarchNormal::central);              // 19.7
+    c[twisted_torus] = pr::sdf_capabilities();                                       // relaxed 1.5, 2 footprints: 34.2
+    c[twisted_torus].defaults.threshold = 2.0f;
+    c[cog] = lipschitz(0.5f, false, pr::MarchNormal::central);                       // 20.2
+    c[cylinder] = lipschitz(2.0f, true, pr::MarchNormal::central);                   // 19.0
+    c[fractal_pyramid] = lipschitz(0.5f, true, pr::MarchNormal::tetrahedral);        // 23.8
     return c;
   }();
-  if (k <= spheres) return analytic;
-  if (k == twisted_torus) return torus;
-  return k == metaballs ? pr::metaball_capabilities() : pr::sdf_capabilities();
+  return k <= spheres ? analytic : marched[k];
 }
 
 /// The SceneConstants::knobs entry of kind k.

@@ -3,6 +3,7 @@
 // and the box and sphere hits by formulas written here; SDF and metaball hits by the sign of the
 // shaders' own functions around t_ref and by dense sampling in front of it; and against the
 // shaders' float marches (d3d12_intersect compiled as C++ in float) at the sample's settings.
+#include "test_knobs.hpp"
 #include "03_d3d12_scene/reference.hpp"
 
 #include <doctest/doctest.h>
@@ -25,7 +26,8 @@ constexpr std::uint32_t W = 48, H = 32;
 constexpr float frame_time = 2.0f;  // spins the tori and the cog, moves the metaballs
 
 const d3d12::SceneConstants& constants() {
-  static const d3d12::SceneConstants c = d3d12::default_constants(d3d12::sample_camera(W, H), frame_time);
+  static const d3d12::SceneConstants c =
+      test_knobs::pinned(d3d12::default_constants(d3d12::sample_camera(W, H), frame_time));
   return c;
 }
 

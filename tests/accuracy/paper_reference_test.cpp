@@ -3,6 +3,7 @@
 // shaders' own distance estimates (0 exactly inside) in double, the Pac-men by pacman.glsl's
 // interval CSG, misses by a slab test written here; and against the float sphere tracer
 // (sphere_trace.glsl with marching/field.glsl's settings, the paper's defaults) run in C++.
+#include "test_knobs.hpp"
 #include "02_paper_scene/reference.hpp"
 
 namespace paper_reference_test {
@@ -58,7 +59,7 @@ namespace {
 constexpr std::uint32_t W = 48, H = 32;
 
 const paper::SceneConstants& constants() {
-  static const paper::SceneConstants c = paper::default_constants(W, H, 0.0f);
+  static const paper::SceneConstants c = test_knobs::pinned(paper::default_constants(W, H, 0.0f));
   return c;
 }
 /// The default reference at 48 x 32 (spacing 1e-3 footprints: ~0.2 s in a Release build).
@@ -134,7 +135,7 @@ TEST_CASE("paper reference: the cut plane and the mouth are data the shaders and
   // The cut is data: julia.rint reads it from the uniform, and the reference from the same C++ value.
   CHECK(read(dir + "julia.rint").find("constants.julia_cuts") != std::string::npos);
   CHECK(read(dir + "julia.rint").find("0.27617") == std::string::npos);
-  const paper::SceneConstants defaults = paper::default_constants(64, 48, 0.0f);
+  const paper::SceneConstants defaults = test_knobs::pinned(paper::default_constants(64, 48, 0.0f));
   CHECK(defaults.julia_cuts.count == 1u);
   CHECK(glm::dvec4(defaults.julia_cuts.plane[0]) == paper::julia_cut_plane);
   CHECK(read(dir + "pacman.rint").find("constants.pacman_mouth") != std::string::npos);

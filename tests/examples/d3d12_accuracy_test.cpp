@@ -4,6 +4,7 @@
 // must match to float rounding; the SDFs are held to the bounds the sphere tracer's hit rule
 // gives (a hit within threshold / 32 of the crossing) and to the normal error of central
 // differences at the threshold (the tetrahedral form's was 5 to 20 times larger here).
+#include "test_knobs.hpp"
 #include "vk/test_context.hpp"
 
 #include <03_d3d12_scene/accuracy.hpp>
@@ -41,7 +42,7 @@ Measured measure_d3d12(const vk::Context& ctx, const d3d12::SceneConstants& cons
 }
 
 d3d12::SceneConstants camera_rays_only() {
-  d3d12::SceneConstants c = d3d12::default_constants(d3d12::sample_camera(width, height), 0.0f);
+  d3d12::SceneConstants c = test_knobs::pinned(d3d12::default_constants(d3d12::sample_camera(width, height), 0.0f));
   c.flags = 0;
   return c;
 }
@@ -107,7 +108,8 @@ TEST_CASE("d3d12 accuracy: SDF hits lie within the hit rule and their normals ar
 
 TEST_CASE("d3d12 accuracy: outputs do not change the colour image") {
   TestContext t;
-  const d3d12::SceneConstants c = d3d12::default_constants(d3d12::sample_camera(width, height), 0.0f);  // all rays
+  const d3d12::SceneConstants c =
+      test_knobs::pinned(d3d12::default_constants(d3d12::sample_camera(width, height), 0.0f));  // all rays
   const Measured with = measure_d3d12(t.ctx, c);
   const d3d12::D3d12Scene plain;
   vk::Renderer renderer(t.ctx, plain, d3d12::renderer_options());

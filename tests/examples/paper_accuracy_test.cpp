@@ -2,6 +2,7 @@
 // outputs and measured against its double-precision ground truth (reference.hpp), per object.
 // Thresholds: the analytic objects (plane, Pac-men) must match the ground truth to float
 // rounding; the marched fractals are held to the bounds their method reaches (see each check).
+#include "test_knobs.hpp"
 #include "vk/test_context.hpp"
 
 #include <02_paper_scene/accuracy.hpp>
@@ -43,7 +44,7 @@ Measured measure_paper(const vk::Context& ctx, paper::SceneConstants constants) 
 }
 
 paper::SceneConstants camera_rays_only() {
-  paper::SceneConstants c = paper::default_constants(width, height, 0.0f);
+  paper::SceneConstants c = test_knobs::pinned(paper::default_constants(width, height, 0.0f));
   c.flags = 0;
   return c;
 }
@@ -106,7 +107,7 @@ TEST_CASE("paper accuracy: marched fractals stay within their method's bounds") 
 
 TEST_CASE("paper accuracy: outputs do not change the colour image") {
   TestContext t;
-  paper::SceneConstants c = paper::default_constants(width, height, 0.0f);  // shadows and reflections on
+  paper::SceneConstants c = test_knobs::pinned(paper::default_constants(width, height, 0.0f));  // shadows and reflections on
   const Measured with = measure_paper(t.ctx, c);
   const paper::PaperScene plain;
   vk::Renderer renderer(t.ctx, plain, plain.renderer_options());

@@ -69,7 +69,7 @@ TEST_CASE("march knobs - validate names the geometry, the knob, the value and th
       {"step_scale", "1e-30", "step_scale 1e-30 must be in [1/1024, 1]"},
       {"step_scale", "1.5", "step_scale 1.5 must be in [1/1024, 1]"},
       {"epsilon", "-1", "epsilon -1 must be >= 0"},
-      {"method", "segment", "method segment does not apply; valid: lipschitz, sphere, relaxed, fixed"},
+      {"method", "segment", "method segment does not apply; valid: relaxed, lipschitz, sphere, fixed"},
       {"normal", "analytic", "normal analytic does not apply; valid: central, tetrahedral"},
       {"normal_scale", "0", "normal_scale 0 must be in (0, 64]"},
       {"iteration_mode", "by_distance", "iteration_mode by_distance needs a fractal"},

@@ -1,21 +1,22 @@
 // Stability of the paper scene's cut Julia set (ACCURACY.md scenario 9): rays parallel to the cut
 // plane just above and below it, and rays grazing it at 1e-1 .. 1e-6 rad onto the cut face. The
 // method is the shipped one, in float: shaders/marching/sphere_trace.glsl marching julia.glsl's
-// julia_cut_distance with the paper's default knobs (paper::default_constants: 256 steps, epsilon
-// 1e-4 world, threshold 0.5 pixel footprints, step scale 1) at a 320x240 camera's pixel angle, as
+// julia_cut_distance with the half-footprint knobs of test_knobs.hpp (256 steps, epsilon 1e-4
+// world, threshold 0.5 pixel footprints, refined hits, step scale 1) at a 320x240 camera's pixel angle, as
 // marching/field.glsl sets them up in object space. The truth is the reference's own (reference_objects.hpp):
 // paper::julia_cut_inside, the escape test plus the kept half-space, searched along the same float
 // ray in double by accuracy::predicate_search. Why: a plane cut by max(d_julia, d_plane) turns the
 // face into a plane that rays can run along at any height, where a march may creep (probes of a
 // 64th of a threshold) or take the removed side for a surface, and where float's resolution
 // of the height decides the hit at grazing angles.
+#include "test_knobs.hpp"
 #include "02_paper_scene/reference_objects.hpp"
 
 namespace julia_cut_test {
 using namespace proceduray::glsl_cpp;
 using julia = proceduray::glsl::julia<float>;
 /// julia.rint's constant, count and plane, as the GPU holds them (paper scene at time 0).
-inline const paper::SceneConstants constants = paper::default_constants(320, 240, 0.0f);
+inline const paper::SceneConstants constants = test_knobs::pinned(paper::default_constants(320, 240, 0.0f));
 inline const glm::vec4 julia_c = julia::julia_animated_c(constants.time);
 inline const std::uint32_t julia_count = std::max(constants.knobs[paper::julia_id].iterations, 1u);
 inline const proceduray::MarchKnobs& knobs = constants.knobs[paper::julia_id];
@@ -149,7 +150,7 @@ bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && st
 }  // namespace
 
 TEST_CASE("julia cut: setup matches the paper scene") {
-  // The knobs the scenario is about: if the defaults change, the bounds below need measuring again.
+  // The knobs the scenario is about (pinned: test_knobs.hpp); if they change, the bounds below need measuring again.
   CHECK(knobs.max_steps == 256u);
   CHECK(knobs.threshold == 0.5f);
   CHECK(knobs.step_scale == 1.0f);

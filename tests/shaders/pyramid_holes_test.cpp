@@ -1,7 +1,7 @@
 // Stability scenario 11 of ACCURACY.md: the D3D12 scene's fractal (Sierpinski) pyramid, rays
 // through its holes and along its fold seams, float march (d3d12_intersect compiled as C++ in
-// float, with the scene's knobs: 512 steps, epsilon 1e-4, half a pixel footprint at 1280x720,
-// step scale 1, no relaxation) against the scene's reference (examples/03_d3d12_scene/
+// float, with the half-footprint knobs of test_knobs.hpp: 512 Lipschitz steps, epsilon 1e-4,
+// half a pixel footprint at 1280x720, step scale 1, no relaxation) against the scene's reference (examples/03_d3d12_scene/
 // reference_objects.hpp: trace_object, a Lipschitz search in double).
 // Why: sdf_fractal_pyramid_distance follows the copy of the nearest vertex at each level, so
 // it jumps where the nearest vertex changes (the fold seams: the planes x = 0 and z = 0 between
@@ -18,6 +18,7 @@
 //     where the distance says empty space (> 0.01), i.e. between the tetrahedra.
 // A ray "through a hole" passes the outer hull (sdf_pyramid_planes, 1-Lipschitz) and the truth
 // misses, or hits more than a threshold behind the hull's entry.
+#include "test_knobs.hpp"
 #include "03_d3d12_scene/reference_objects.hpp"
 
 #include <doctest/doctest.h>
@@ -35,7 +36,8 @@ using F = d3d12::glsl::d3d12_primitives<float>;
 using Dp = d3d12::glsl::d3d12_primitives<double>;
 
 const d3d12::SceneConstants& constants() {
-  static const d3d12::SceneConstants c = d3d12::default_constants(d3d12::sample_camera(1280, 720), 0.0f);
+  static const d3d12::SceneConstants c =
+      test_knobs::pinned(d3d12::default_constants(d3d12::sample_camera(1280, 720), 0.0f));
   return c;
 }
 const d3d12::ReferenceScene& scene() {
@@ -48,7 +50,7 @@ const d3d12::Primitive& pyramid() {
 }
 glm::dvec3 placement() { return glm::dvec3(d3d12::placement(d3d12::fractal_pyramid, d3d12::Layout::sample)); }
 
-/// The scene's knobs as intersect.glsl passes them (the instance only translates, so object and
+/// The pinned knobs as intersect.glsl passes them (the instance only translates, so object and
 /// world lengths agree).
 const proceduray::MarchKnobs& knobs() { return constants().knobs[d3d12::object_id(d3d12::fractal_pyramid)]; }
 /// What d3d12_intersect_knobs marches with (the threshold for the checks below).
@@ -126,7 +128,7 @@ struct Tally {
 
 }  // namespace
 
-TEST_CASE("fractal pyramid - no false hits through holes and along fold seams with the scene's knobs") {
+TEST_CASE("fractal pyramid - no false hits through holes and along fold seams at half a footprint") {
   const std::vector<Ray> rs = rays();
   const F::MarchSettings m = settings();
   const double pixel_angle = double(constants().camera.pixel_angle);

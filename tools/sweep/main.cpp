@@ -368,7 +368,9 @@ struct Sweep {
                                                               const Point& p, std::vector<std::uint32_t>& ids) const {
     std::vector<std::pair<const Object*, pr::MarchKnobs>> taken;
     for (const Object& obj : objects) {
-      pr::MarchKnobs k = c.knobs[obj.id];
+      // A preset varies from a fixed base (march/primitives.hpp), so the table it writes does not
+      // depend on the defaults that are picked from it; --vary varies the scene's own knobs.
+      pr::MarchKnobs k = o.preset.empty() ? c.knobs[obj.id] : pr::preset_base(*obj.caps);
       for (const auto& [name, value] : fixed) pr::set_knob(k, name, value);
       const auto [knobs, error] = knobs_at(obj, p, k, c.camera.pixel_angle);
       if (!error.empty()) continue;
