@@ -79,7 +79,9 @@ Distance load_truth(const pr::DistanceField& f, const fs::path& glsl, const fs::
                                   "proceduray/shader/glsl_cpp.hpp");
   const fs::path shaders = pr::vk::library_shader_dir();
   const char* cxx = std::getenv("CXX") != nullptr ? std::getenv("CXX") : "c++";
-  const std::string key = std::to_string(pr::vk::fnv1a(text.str() + pr::field_function(f) + cxx + glsl.string()));
+  const char* flags = std::getenv("CXXFLAGS") != nullptr ? std::getenv("CXXFLAGS") : "";  // e.g. -I for GLM elsewhere
+  const std::string key =
+      std::to_string(pr::vk::fnv1a(text.str() + pr::field_function(f) + cxx + flags + glsl.string()));
   const fs::path dir = cache / "field-cpp", so = dir / (f.id + "-" + key + ".so"), cpp = dir / (f.id + "-" + key + ".cpp");
   fs::create_directories(dir);
   if (!fs::exists(so)) {
@@ -92,7 +94,8 @@ Distance load_truth(const pr::DistanceField& f, const fs::path& glsl, const fs::
         << (f.iterations > 0 ? ", iterations" : "") << ");\n}\n";
     src.close();
     const fs::path log = dir / (f.id + "-" + key + ".log");
-    const std::string command = std::string(cxx) + " -std=c++20 -O2 -shared -fPIC -I'" + include.string() + "' -I'" +
+    const std::string command = std::string(cxx) + " -std=c++20 -O2 -shared -fPIC " + flags + " -I'" +
+                                include.string() + "' -I'" +
                                 shaders.string() + "' '" + cpp.string() + "' -o '" + so.string() + "' 2> '" +
                                 log.string() + "'";
     if (std::system(command.c_str()) != 0) {
@@ -103,6 +106,13 @@ Distance load_truth(const pr::DistanceField& f, const fs::path& glsl, const fs::
           first = line;
           break;
         }
+      }
+      // Not the field's fault: the shim's own dependency is missing (seen on a GPU machine without it).
+      if (first.find("glm/") != std::string::npos) {
+        throw BadInput("the C++ compiler '" + std::string(cxx) + "' cannot find GLM's headers, which " +
+                       "shader/glsl_cpp.hpp needs to compile " + glsl.string() + " as C++: install them (Debian: " +
+                       "apt-get install libglm-dev) or give their folder in CXXFLAGS (-I/path/holding/glm); the log: " +
+                       log.string());
       }
       throw BadInput(glsl.string() + " does not compile as C++ (the portable subset of shader/glsl_cpp.hpp: pr_real, "
                      "PR(...), no swizzles): " + first + "; the whole log: " + log.string());
