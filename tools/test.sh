@@ -3,7 +3,8 @@
 # runner, CTest, run with both compilers:
 #   1. CMake build with GCC: CMAKE_BUILD_TYPE=Release and its default flags (-O3), plus -Werror
 #      (PROCEDURAY_WERROR, on here and for developers, off in a user's build)
-#   2. cmake --install, then tests/consumer built against the installed package (CMake and Meson)
+#   2. cmake --install, the installed proceduray-field run from its prefix, then tests/consumer
+#      built against the installed package (CMake and Meson)
 #   3. CTest (GCC)
 #   4. CMake build with the second compiler (Debian's clang, -O2, -Werror) and CTest again: every
 #      header, every usage block and every test compiled and run by both compilers
@@ -34,6 +35,15 @@ if want cmake; then
   step "install and consumer project"
   rm -rf "$out/prefix"
   cmake --install "$out/cmake" --prefix "$out/prefix" >/dev/null
+  # The installed tools run from the prefix: its headers and shaders, not the source tree's.
+  prefix=$(realpath "$out/prefix")
+  test -x "$prefix/bin/proceduray-chart" && test -x "$prefix/bin/proceduray-calibration-chart"
+  where=$(env -u PROCEDURAY_SHADER_DIR -u PROCEDURAY_INCLUDE_DIR "$prefix/bin/proceduray-field" where)
+  grep -qx "shaders $prefix/share/proceduray/shaders" <<< "$where" || { echo "installed proceduray-field: $where" >&2; exit 1; }
+  grep -qx "headers $prefix/include" <<< "$where" || { echo "installed proceduray-field: $where" >&2; exit 1; }
+  env -u PROCEDURAY_SHADER_DIR -u PROCEDURAY_INCLUDE_DIR "$prefix/bin/proceduray-field" measure \
+    --sdf "$root/tests/vk/shaders/fields/ball.glsl" --exact --size 16x12 --device cpu --validation \
+    --cache "$out/field-cache-installed" | grep -q "^wrong_surface"
   cmake -S "$root/tests/consumer" -B "$out/consumer-cmake" -G Ninja -DCMAKE_PREFIX_PATH="$out/prefix"
   cmake --build "$out/consumer-cmake"
   "$out/consumer-cmake/consumer" "$out/consumer-cmake.png"

@@ -7,6 +7,7 @@
 //   proceduray-field calibrate --sdf gyroid.glsl --aabb -1,-1,-1,1,1,1 --lipschitz 1.75 --out gyroid.csv
 //   parallel proceduray-field calibrate ... --shard {}/3 --out part{}.csv ::: 1 2 3    # GNU parallel
 //   proceduray-field merge part1.csv part2.csv part3.csv --out gyroid.csv
+//   proceduray-field where     # the headers, shaders and cache folder it uses (an installed tool: its prefix's)
 //
 // Shards split the settings into n contiguous blocks, so merging the parts in shard order gives
 // the table one unsharded run writes (errors and evaluation counts do not depend on timing).
@@ -63,8 +64,18 @@ fs::path locate(const char* env, const fs::path& installed, const fs::path& buil
   if (const char* e = std::getenv(env); e != nullptr && *e != '\0') return e;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec && fs::exists(exe.parent_path() / installed / probe)) return exe.parent_path() / installed;
+  if (!ec && fs::exists(exe.parent_path() / installed / probe)) return fs::weakly_canonical(exe.parent_path() / installed);
   return built;
+}
+
+/// The library's headers the field's C++ truth compiles against.
+fs::path headers_dir() {
+  return locate("PROCEDURAY_INCLUDE_DIR", "../include", PROCEDURAY_TOOL_INCLUDE_DIR, "proceduray/shader/glsl_cpp.hpp");
+}
+/// The library's shaders (marching/, measure/): installed beside the tool, else the build's.
+fs::path shaders_dir() {
+  return locate("PROCEDURAY_SHADER_DIR", "../share/proceduray/shaders", pr::vk::library_shader_dir(),
+                "marching/field.glsl");
 }
 
 using Distance = double (*)(double, double, double, std::uint32_t);
@@ -75,9 +86,7 @@ Distance load_truth(const pr::DistanceField& f, const fs::path& glsl, const fs::
   std::ifstream in(glsl);
   std::stringstream text;
   text << in.rdbuf();
-  const fs::path include = locate("PROCEDURAY_INCLUDE_DIR", "../include", PROCEDURAY_TOOL_INCLUDE_DIR,
-                                  "proceduray/shader/glsl_cpp.hpp");
-  const fs::path shaders = pr::vk::library_shader_dir();
+  const fs::path include = headers_dir(), shaders = shaders_dir();
   const char* cxx = std::getenv("CXX") != nullptr ? std::getenv("CXX") : "c++";
   const char* flags = std::getenv("CXXFLAGS") != nullptr ? std::getenv("CXXFLAGS") : "";  // e.g. -I for GLM elsewhere
   const std::string key =
@@ -156,7 +165,7 @@ Setup setup(const FieldOptions& o) {
                       : o.device == "gpu" ? pr::vk::DevicePreference::gpu : pr::vk::DevicePreference::automatic;
   s.ctx = std::make_unique<pr::vk::Context>(pr::vk::ContextOptions{.device = device, .validation = o.validation});
   s.meter = std::make_unique<pr::vk::FieldMeter>(*s.ctx, s.field,
-      pr::vk::MeasureOptions{.shader_dirs = {fs::absolute(glsl).parent_path()}, .cache_dir = s.cache});
+      pr::vk::MeasureOptions{.shader_dirs = {fs::absolute(glsl).parent_path(), shaders_dir()}, .cache_dir = s.cache});
   return s;
 }
 
@@ -262,6 +271,7 @@ int main(int argc, char** argv) {
   add_field_options(*c, co);
   c->add_option("--shard", shard, "i/n: the i-th of n contiguous blocks of settings");
   c->add_option("--out", cal_out, "the table to write")->required();
+  CLI::App* w = app.add_subcommand("where", "the headers, shaders and cache folder this tool uses");
   CLI::App* g = app.add_subcommand("merge", "calibration tables of shards, in shard order, into one");
   g->add_option("parts", parts, "the shards' tables")->required();
   g->add_option("--out", merge_out, "the merged table")->required();
@@ -273,6 +283,11 @@ int main(int argc, char** argv) {
   try {
     if (m->parsed()) return measure(mo, knobs, csv);
     if (c->parsed()) return calibrate(co, shard, cal_out);
+    if (w->parsed()) {
+      std::printf("headers %s\nshaders %s\ncache %s\n", headers_dir().c_str(), shaders_dir().c_str(),
+                  pr::vk::default_cache_dir().c_str());
+      return 0;
+    }
     return merge(parts, merge_out);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "proceduray-field: %s\n", e.what());
