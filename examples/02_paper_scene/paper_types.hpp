@@ -138,13 +138,13 @@ inline constexpr MaterialRecord mandelbulb_material{{0.35f, 0.85f, 0.45f}, 0.2f,
 
 /// The knobs a fractal accepts, with its defaults (iterations: Julia 10, Mandelbulb 8): each its
 /// own pick from the shipped calibration tables, the cheapest setting at 1920x1080 that meets
-/// ErrorBudget{} there and at 640x360 (tests/examples/march_defaults_test.cpp checks). The Julia set's: half a
-/// footprint without the bisection, 256 steps (11.4 evaluations per ray); the Mandelbulb's: the
-/// library's (43.4).
+/// ErrorBudget{} there and at 640x360 (tests/examples/march_defaults_test.cpp checks). The Julia
+/// set's: half a footprint without the bisection (11.4 evaluations per ray); the Mandelbulb's:
+/// the library's, a quarter footprint (52.4).
 inline const pr::MarchCapabilities& capabilities(ObjectId id) {
   static const pr::MarchCapabilities julia = [] {
     pr::MarchCapabilities c = pr::fractal_capabilities(10);
-    c.defaults.max_steps = 256;
+    c.defaults.threshold = 0.5f;
     c.defaults.refine = 0;
     return c;
   }();

@@ -113,9 +113,22 @@ TEST_CASE("calibration - the default budget is what a 1080p picture cannot tell;
   CHECK(r.meets(ErrorBudget::relaxed()));
 }
 
+TEST_CASE("calibration - a format-2 table reads with false misses unmeasured (they were per ray)") {
+  std::string text = text_of(table());
+  text = std::regex_replace(text, std::regex("# proceduray-calibration 3"), "# proceduray-calibration 2");
+  std::istringstream in(text);
+  const Calibration two = Calibration::parse(in, "two.csv");
+  REQUIRE(two.rows().size() == 5);
+  CHECK(std::isnan(two.rows()[0].false_misses));
+  CHECK(two.rows()[0].wrong_surface == 0.0);
+  CHECK_THROWS_WITH_AS(two.cheapest("cog", {}), doctest::Contains("false misses not measured per hit (a format-1 or -2 table)"),
+                       UsageError);
+  CHECK(two.cheapest("cog", {.silhouette_false_hits = 0.01, .false_misses = 1.0}).evals == 15.0);
+}
+
 TEST_CASE("calibration - a format-1 table reads with wrong-surface unmeasured, CRLF lines too") {
   std::string text = text_of(table());
-  text = std::regex_replace(text, std::regex("# proceduray-calibration 2"), "# proceduray-calibration 1");
+  text = std::regex_replace(text, std::regex("# proceduray-calibration 3"), "# proceduray-calibration 1");
   text = std::regex_replace(text, std::regex("normal_p95_degrees,wrong_surface,"), "normal_p95_degrees,");
   text = std::regex_replace(text, std::regex(",0\\.5,0,lipschitz"), ",0.5,lipschitz");  // drop the column's values
   text = std::regex_replace(text, std::regex("\n"), "\r\n");
@@ -127,7 +140,7 @@ TEST_CASE("calibration - a format-1 table reads with wrong-surface unmeasured, C
   CHECK(old.rows()[4].knobs.threshold == 0.5f);
   CHECK_THROWS_WITH_AS(old.cheapest("cog", {}), doctest::Contains("wrong surface not measured (a format-1 table)"),
                        UsageError);
-  CHECK(old.cheapest("cog", {.silhouette_false_hits = 0.01, .wrong_surface = 1.0}).evals == 15.0);
+  CHECK(old.cheapest("cog", {.silhouette_false_hits = 0.01, .false_misses = 1.0, .wrong_surface = 1.0}).evals == 15.0);
 }
 
 TEST_CASE("calibration - a row off the front is dominated in cost and every error") {

@@ -56,7 +56,7 @@ TEST_CASE("measure: the truth of a ball field is the closed form's, and its defa
     for (std::uint32_t x = 0; x < v.width; ++x) {
       const glm::dvec3 d = pr::vk::detail::measure_direction(v.camera, x, y, v.width, v.height);
       const acc::Result c = acc::intersect_sphere(glm::dvec3(v.camera.eye), d, glm::dvec3(0.0), 1.0, 0.0, 1e30);
-      const acc::Reference& r = truth.pixels[std::size_t{y} * v.width + x];
+      const acc::Reference& r = truth.sample.pixels[std::size_t{y} * v.width + x];
       REQUIRE(r.outcome == c.outcome);
       if (c.outcome != acc::Outcome::hit) continue;
       ++hits;
@@ -95,6 +95,37 @@ TEST_CASE("measure: a coarse setting of a field with L > 1 measures worse than t
   pr::MarchKnobs sphere = meter.capabilities().defaults;
   sphere.method = pr::MarchMethod::sphere;  // assumes L = 1
   CHECK_THROWS_WITH_AS(meter.measure(gyroid_cpu, sphere, view()), doctest::Contains("method sphere does not apply"),
+                       pr::UsageError);
+}
+
+TEST_CASE("measure: a stratified truth traces a fraction of the pixels and bounds the rates it estimates") {
+  TestContext t;
+  pr::MarchKnobs coarse = pr::field_capabilities(gyroid_field).defaults;
+  coarse.method = pr::MarchMethod::fixed;  // misses thin sheets: rates to estimate
+  coarse.fixed_steps = 6;
+  const pr::vk::MeasureView v = view(192, 144);
+  pr::vk::FieldMeter full(t.ctx, gyroid_field, options());
+  pr::vk::MeasureOptions o = options();
+  o.interior_stride = 8;
+  pr::vk::FieldMeter sampled(t.ctx, gyroid_field, o);
+  const pr::vk::Measurement exact = full.measure(gyroid_cpu, coarse, v), est = sampled.measure(gyroid_cpu, coarse, v);
+  CHECK(exact.truth_traced == std::size_t{v.width} * v.height);
+  CHECK(exact.confidence.false_miss_rate_95 == exact.confidence.false_miss_rate);
+  CAPTURE(est.truth_traced);
+  CHECK(est.truth_traced < std::size_t{v.width} * v.height);
+  const double misses = exact.metrics.all.false_miss_rate();
+  CAPTURE(misses);
+  CAPTURE(est.confidence.false_miss_rate);
+  CAPTURE(est.confidence.false_miss_rate_95);
+  REQUIRE(misses > 0.0);
+  CHECK(est.confidence.false_miss_rate_95 >= exact.confidence.false_miss_rate);
+  CHECK(est.confidence.false_miss_rate == doctest::Approx(exact.confidence.false_miss_rate).epsilon(0.5));
+  // The silhouettes are traced in full: their false hits are counted, not estimated.
+  CHECK(est.metrics[acc::PixelClass::silhouette_1px].false_hits == exact.metrics[acc::PixelClass::silhouette_1px].false_hits);
+  pr::vk::MeasureOptions zero = options();
+  zero.interior_stride = 0;
+  CHECK_THROWS_WITH_AS(pr::vk::FieldMeter(t.ctx, gyroid_field, zero),
+                       doctest::Contains("interior_stride is 0; give 1 (the truth of every pixel) to 1024"),
                        pr::UsageError);
 }
 

@@ -40,7 +40,7 @@ struct FieldOptions {
   std::string sdf, function, id, aabb = "-1,-1,-1,1,1,1", size = "320x240", eye = "0,0.6,3.2", target = "0,0,0";
   float lipschitz = 0.0f, fov = 45.0f;
   bool exact = false, validation = false;
-  std::uint32_t iterations = 0;
+  std::uint32_t iterations = 0, stride = 1;
   std::string device = "auto", cache;
 };
 
@@ -165,7 +165,8 @@ Setup setup(const FieldOptions& o) {
                       : o.device == "gpu" ? pr::vk::DevicePreference::gpu : pr::vk::DevicePreference::automatic;
   s.ctx = std::make_unique<pr::vk::Context>(pr::vk::ContextOptions{.device = device, .validation = o.validation});
   s.meter = std::make_unique<pr::vk::FieldMeter>(*s.ctx, s.field,
-      pr::vk::MeasureOptions{.shader_dirs = {fs::absolute(glsl).parent_path(), shaders_dir()}, .cache_dir = s.cache});
+      pr::vk::MeasureOptions{.shader_dirs = {fs::absolute(glsl).parent_path(), shaders_dir()}, .cache_dir = s.cache,
+                             .interior_stride = o.stride});
   return s;
 }
 
@@ -184,6 +185,8 @@ void add_field_options(CLI::App& app, FieldOptions& o) {
   app.add_option("--device", o.device, "cpu (lavapipe), gpu or auto")->check(CLI::IsMember({"cpu", "gpu", "auto"}));
   app.add_flag("--validation", o.validation, "the Khronos validation layer; a message fails the run");
   app.add_option("--cache", o.cache, "cache folder (truth, tables, the compiled field; default the library's)");
+  app.add_option("--stride", o.stride, "the truth of one pixel in this many outside the silhouettes (1: all; "
+                 "vk/measure.hpp's interior_stride)")->capture_default_str();
 }
 
 int measure(const FieldOptions& o, const std::vector<std::string>& knobs, const std::string& csv) {
@@ -200,6 +203,12 @@ int measure(const FieldOptions& o, const std::vector<std::string>& knobs, const 
               "gpu %.3f ms, truth %.0f ms%s\n", static_cast<unsigned long long>(m.wrong_surface),
               100.0 * m.wrong_surface_rate, m.evaluations_per_ray, m.evaluations_per_box_ray, m.gpu_ms, m.truth_ms,
               m.truth_cached ? " (cached)" : "");
+  if (o.stride > 1) {
+    std::printf("stratified truth (stride %u): false misses %.4g%% (95%% bound %.4g%%), wrong surface %.4g%% "
+                "(95%% bound %.4g%%)\n", o.stride, 100.0 * m.confidence.false_miss_rate,
+                100.0 * m.confidence.false_miss_rate_95, 100.0 * m.confidence.wrong_surface_rate,
+                100.0 * m.confidence.wrong_surface_rate_95);
+  }
   if (!csv.empty()) {
     std::ofstream out(csv);
     std::vector<pr::accuracy::Label> labels{{"field", s.field.id}, {"size", o.size}};

@@ -493,7 +493,7 @@ int run(const Options& o) {
     if (!o.calibration.empty() && a.both_hit > 0 && std::isfinite(a.depth.median)) {
       auto rate = [](double v) { return std::isfinite(v) ? v : 0.0; };
       table.push_back({obj.name, std::string(obj.caps->kind), k, r.evals, a.depth.median, a.depth.p99,
-                       rate(r.metrics[acc::PixelClass::silhouette_1px].false_hit_rate()), rate(a.false_miss_rate()),
+                       rate(r.metrics[acc::PixelClass::silhouette_1px].false_hit_rate()), rate(a.missed_hits_rate()),
                        rate(a.normal_degrees.p95), rate(a.wrong_surface_rate())});
     }
   };

@@ -121,6 +121,13 @@ struct ClassStats {
   double agree_rate() const { return rate(agree); }              ///< agree / rays; NaN without rays
   double false_hit_rate() const { return rate(false_hits); }     ///< false_hits / rays; NaN without rays
   double false_miss_rate() const { return rate(false_misses); }  ///< false_misses / rays; NaN without rays
+  /// false_misses / the reference's hits (both_hit + false_misses): the fraction of an object's
+  /// pixels the method misses, where false_miss_rate divides by every ray; NaN without any.
+  double missed_hits_rate() const {
+    const std::size_t hits = both_hit + false_misses;
+    return hits == 0 ? std::numeric_limits<double>::quiet_NaN()
+                     : static_cast<double>(false_misses) / static_cast<double>(hits);
+  }
   /// wrong_surface / the reference's hits (both_hit + false_misses); NaN without any.
   double wrong_surface_rate() const {
     const std::size_t hits = both_hit + false_misses;

@@ -17,7 +17,7 @@
 // per ray that sees the geometry, which does not depend on the machine; the table records the
 // device, size and library version that measured it.
 //
-// File: CSV. Line 1 "# proceduray-calibration 1", line 2 "# library <version>", line 3
+// File: CSV. Line 1 "# proceduray-calibration 3", line 2 "# library <version>", line 3
 // "# measured <device> <W>x<H>", then a header and a row per (geometry, setting). A table from
 // another library version is refused (its marches may differ), as is a foreign or damaged file.
 #pragma once
@@ -70,7 +70,9 @@ struct CalibrationRow {
   double depth_median = 0.0;           ///< pixel footprints
   double depth_p99 = 0.0;              ///< pixel footprints
   double silhouette_false_hits = 0.0;  ///< fraction
-  double false_misses = 0.0;           ///< fraction
+  /// Fraction of the truth's hits the render missed (ClassStats::missed_hits_rate); NaN: not
+  /// measured so (a table of format 1 or 2 counted them per ray of the frame), which meets no bound below 1.
+  double false_misses = 0.0;
   double normal_p95 = 0.0;             ///< normal error against the truth's, 95th percentile, degrees
   /// Fraction of the truth's hits landing more than 2 footprints behind it; NaN: not measured
   /// (a format-1 table), which meets no bound below 1.
@@ -84,15 +86,18 @@ struct CalibrationRow {
       return allowed > 0.0 && !std::isnan(measured) ? measured / allowed : std::numeric_limits<double>::infinity();
     };
     return std::max({ratio(depth_median, b.depth_median), ratio(depth_p99, b.depth_p99),
-                     ratio(silhouette_false_hits, b.silhouette_false_hits), ratio(false_misses, b.false_misses),
+                     ratio(silhouette_false_hits, b.silhouette_false_hits),
+                     b.false_misses >= 1.0 ? 0.0 : ratio(false_misses, b.false_misses),
                      ratio(normal_p95, b.normal_p95), b.wrong_surface >= 1.0 ? 0.0 : ratio(wrong_surface, b.wrong_surface)});
   }
   bool meets(const ErrorBudget& b) const { return excess(b) == 0.0; }
 };
 
-/// The format line a calibration file starts with (format 2 added wrong_surface; format 1
-/// tables are read with it unmeasured).
-inline constexpr std::string_view calibration_format = "# proceduray-calibration 2";
+/// The format line a calibration file starts with. Format 3 counts false misses per truth hit;
+/// format 2 added wrong_surface but counted false misses per ray of the frame, format 1 had
+/// neither: their unmeasured errors read as NaN.
+inline constexpr std::string_view calibration_format = "# proceduray-calibration 3";
+inline constexpr std::string_view calibration_format_2 = "# proceduray-calibration 2";
 inline constexpr std::string_view calibration_format_1 = "# proceduray-calibration 1";
 
 /// Whether `a` is at least as good as `b` in cost and every error, and better in one: then `b`
@@ -125,8 +130,8 @@ class Calibration {
       return true;
     };
     if (!next(line)) line.clear();
-    const bool format_1 = line == calibration_format_1;
-    if (line != calibration_format && !format_1) {
+    const bool format_1 = line == calibration_format_1, per_ray_misses = format_1 || line == calibration_format_2;
+    if (line != calibration_format && !per_ray_misses) {
       throw fail("not a calibration table (line 1 is not '" + std::string(calibration_format) +
                  "'); write one with proceduray_sweep --calibration");
     }
@@ -172,6 +177,7 @@ class Calibration {
           const bool unmeasured = i == 6 && std::isnan(*numbers[i]);  // wrong_surface of a sweep without it
           if (used != f[2 + i].size() || (!(*numbers[i] >= 0.0) && !unmeasured)) throw UsageError(f[2 + i]);
         }
+        if (per_ray_misses) r.false_misses = std::numeric_limits<double>::quiet_NaN();  // another unit
         r.knobs = march_base_knobs;
         for (std::size_t k = 0; k < march_knob_names.size(); ++k) {
           set_knob(r.knobs, march_knob_names[k], f[2 + errors + k]);
@@ -240,7 +246,9 @@ class Calibration {
       << budget.silhouette_false_hits << ", false misses <= " << budget.false_misses << ", wrong surface <= "
       << budget.wrong_surface << ", normal p95 <= " << budget.normal_p95
       << " degrees); the best reachable: depth median " << closest->depth_median << ", p99 " << closest->depth_p99
-      << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses " << closest->false_misses
+      << ", silhouette false hits " << closest->silhouette_false_hits << ", false misses "
+      << (std::isnan(closest->false_misses) ? std::string("not measured per hit (a format-1 or -2 table)")
+                                            : std::to_string(closest->false_misses))
       << ", wrong surface "
       << (std::isnan(closest->wrong_surface) ? std::string("not measured (a format-1 table)")
                                              : std::to_string(closest->wrong_surface))

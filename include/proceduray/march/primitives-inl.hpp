@@ -17,7 +17,7 @@ PROCEDURAY_DECL const MarchCapabilities& sdf_capabilities() {
                         march_base_knobs};
     c.defaults.method = MarchMethod::relaxed;
     c.defaults.relaxation = 1.5f;
-    c.defaults.threshold = 1.0f;
+    c.defaults.threshold = 0.25f;
     return c;
   }();
   return caps;
@@ -46,7 +46,8 @@ PROCEDURAY_DECL MarchCapabilities fractal_capabilities(std::uint32_t iterations)
                       16,
                       march_base_knobs};
   c.defaults.method = MarchMethod::sphere;
-  c.defaults.max_steps = 64;
+  c.defaults.max_steps = 256;
+  c.defaults.threshold = 0.25f;
   c.defaults.normal_scale = 0.25f;
   c.defaults.iterations = iterations;
   return c;

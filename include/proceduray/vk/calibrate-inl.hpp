@@ -53,7 +53,9 @@ PROCEDURAY_DECL std::string view_size(const MeasureView& view) {
 
 PROCEDURAY_DECL std::filesystem::path calibration_file(const FieldMeter& meter, const CalibrateOptions& o,
                                                        const std::vector<MarchKnobs>& settings) {
-  std::uint64_t h = truth_key(meter.field(), meter.glsl_text(), o.view);  // GLSL, declaration, view, version
+  // GLSL, declaration, view, sample, version; the table's format (a unit changed in format 3).
+  std::uint64_t h = truth_key(meter.field(), meter.glsl_text(), o.view, meter.options());
+  h = fnv1a(calibration_format, h);
   h = fnv1a(meter.device(), h);
   for (const MarchKnobs& k : settings) h = fnv1a(describe(k), h);
   char hex[17];
@@ -66,9 +68,11 @@ PROCEDURAY_DECL bool calibration_row(const FieldMeter& meter, const MarchKnobs& 
   const accuracy::ClassStats& a = m.metrics.all;
   if (a.both_hit == 0 || !std::isfinite(a.depth.median)) return false;
   auto rate = [](double v) { return std::isfinite(v) ? v : 0.0; };  // a rate of no rays is no error
+  // The rates' upper 95% bounds: equal to the rates with every pixel's truth, and a budget met by
+  // the bound is met on a stratified truth too.
   row = {meter.field().id, std::string(meter.capabilities().kind), k, m.evaluations_per_box_ray, a.depth.median,
-         a.depth.p99, rate(m.metrics[accuracy::PixelClass::silhouette_1px].false_hit_rate()), rate(a.false_miss_rate()),
-         rate(a.normal_degrees.p95), m.wrong_surface_rate};
+         a.depth.p99, rate(m.metrics[accuracy::PixelClass::silhouette_1px].false_hit_rate()),
+         m.confidence.false_miss_rate_95, rate(a.normal_degrees.p95), m.confidence.wrong_surface_rate_95};
   return true;
 }
 

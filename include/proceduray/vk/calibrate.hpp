@@ -93,7 +93,7 @@ Calibrated calibrate(FieldMeter& meter, const Distance& distance, const Calibrat
       char line[160];
       std::snprintf(line, sizeof line, "calibrate %s: %zu/%zu  %.1f evals  depth median %.3g  p99 %.3g  misses %.3g%%",
                     meter.field().id.c_str(), i + 1, settings.size(), m.evaluations_per_box_ray,
-                    m.metrics.all.depth.median, m.metrics.all.depth.p99, 100.0 * m.metrics.all.false_miss_rate());
+                    m.metrics.all.depth.median, m.metrics.all.depth.p99, 100.0 * m.confidence.false_miss_rate);
       o.progress(std::string(line) + "  " + describe(settings[i]));
     }
   }

@@ -30,7 +30,8 @@ PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, s
   return glm::normalize(glm::dvec3(c.forward) + u * glm::dvec3(c.right) - v * glm::dvec3(c.up));
 }
 
-PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view) {
+PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view,
+                                        const MeasureOptions& options) {
   std::uint64_t h = fnv1a(proceduray::version);
   h = fnv1a(glsl_text, h);
   h = fnv1a(field.id + "\n" + field_function(field) + "\n", h);
@@ -39,21 +40,21 @@ PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::s
                            static_cast<float>(field.iterations)};
   h = fnv1a(std::string_view(reinterpret_cast<const char*>(numbers), sizeof numbers), h);
   h = fnv1a(std::string_view(reinterpret_cast<const char*>(&view.camera), sizeof view.camera), h);
-  const std::uint32_t size[] = {view.width, view.height};
+  const std::uint64_t size[] = {view.width, view.height, options.interior_stride, options.seed};
   return fnv1a(std::string_view(reinterpret_cast<const char*>(size), sizeof size), h);
 }
 
-inline constexpr char truth_magic[16] = "proceduray-tr1\n";
+inline constexpr char truth_magic[16] = "proceduray-tr2\n";
 /// One pixel of a truth file.
 struct TruthRecord {
   double t;
   double normal[3];
   std::uint32_t outcome;
-  std::uint32_t pad;
+  std::uint32_t weight;  ///< StratifiedTruth::weight
 };
 
 PROCEDURAY_DECL bool read_truth(const std::filesystem::path& file, std::uint64_t key, std::size_t pixels,
-                                std::vector<accuracy::Reference>& out) {
+                                accuracy::StratifiedTruth& out) {
   std::ifstream in(file, std::ios::binary);
   char magic[sizeof truth_magic];
   std::uint64_t stored_key = 0, count = 0;
@@ -64,29 +65,37 @@ PROCEDURAY_DECL bool read_truth(const std::filesystem::path& file, std::uint64_t
   if (!in.read(reinterpret_cast<char*>(records.data()), static_cast<std::streamsize>(pixels * sizeof(TruthRecord)))) {
     return false;
   }
-  out.resize(pixels);
+  accuracy::StratifiedTruth t;
+  t.pixels.resize(pixels);
+  t.weight.resize(pixels);
   for (std::size_t i = 0; i < pixels; ++i) {
     const TruthRecord& r = records[i];
     if (r.outcome > static_cast<std::uint32_t>(accuracy::Outcome::undetermined)) return false;  // not ours
-    out[i] = {static_cast<accuracy::Outcome>(r.outcome), r.t, glm::dvec3(r.normal[0], r.normal[1], r.normal[2])};
+    t.pixels[i] = {static_cast<accuracy::Outcome>(r.outcome), r.t, glm::dvec3(r.normal[0], r.normal[1], r.normal[2])};
+    t.weight[i] = r.weight;
+    t.stride = std::max(t.stride, r.weight);
+    t.band += r.weight == 1;
+    t.sampled += r.weight > 1;
   }
+  t.traced = t.band + t.sampled;  // the coarse pass's other pixels are not kept apart
+  out = std::move(t);
   return true;
 }
 
 PROCEDURAY_DECL void write_truth(const std::filesystem::path& file, std::uint64_t key,
-                                 const std::vector<accuracy::Reference>& truth) {
+                                 const accuracy::StratifiedTruth& truth) {
   std::error_code ec;
   std::filesystem::create_directories(file.parent_path(), ec);
-  std::vector<TruthRecord> records(truth.size());
-  for (std::size_t i = 0; i < truth.size(); ++i) {
-    const accuracy::Reference& r = truth[i];
-    records[i] = {r.t, {r.normal.x, r.normal.y, r.normal.z}, static_cast<std::uint32_t>(r.outcome), 0};
+  std::vector<TruthRecord> records(truth.pixels.size());
+  for (std::size_t i = 0; i < truth.pixels.size(); ++i) {
+    const accuracy::Reference& r = truth.pixels[i];
+    records[i] = {r.t, {r.normal.x, r.normal.y, r.normal.z}, static_cast<std::uint32_t>(r.outcome), truth.weight[i]};
   }
   // Written beside and renamed: a reader never sees half a file (a cache is best effort: no throw).
   const std::filesystem::path part = file.string() + ".part";
   {
     std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    const std::uint64_t count = truth.size();
+    const std::uint64_t count = truth.pixels.size();
     out.write(truth_magic, sizeof truth_magic);
     out.write(reinterpret_cast<const char*>(&key), sizeof key);
     out.write(reinterpret_cast<const char*>(&count), sizeof count);
@@ -116,6 +125,10 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
   if (m_options.repeats == 0) {
     throw UsageError("FieldMeter: MeasureOptions::repeats is 0; trace at least one frame per measurement (default 3)");
   }
+  if (m_options.interior_stride == 0 || m_options.interior_stride > 1024) {
+    throw UsageError("FieldMeter: MeasureOptions::interior_stride is " + std::to_string(m_options.interior_stride) +
+                     "; give 1 (the truth of every pixel) to 1024 (one pixel in that many outside the silhouettes)");
+  }
   std::vector<std::filesystem::path> dirs = m_options.shader_dirs;
   m_glsl_text = read_text_file(find_shader(dirs, m_field.glsl));
   Scene<detail::MeasureInterface> scene;
@@ -136,7 +149,7 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
 PROCEDURAY_DECL FieldMeter::~FieldMeter() = default;
 
 PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const MeasureView& view,
-                                          const std::vector<accuracy::Reference>& truth, Measurement& m) {
+                                          const accuracy::StratifiedTruth& truth, Measurement& m) {
   m_renderer->set(detail::measure_constants, detail::MeasureConstants{view.camera});
   m_renderer->set_pixel_angle(view.camera.pixel_angle);
   m_renderer->set_field_knobs(m_geometry, knobs);
@@ -148,11 +161,12 @@ PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const Measure
   }
   std::sort(times.begin(), times.end());
   m.gpu_ms = times[times.size() / 2];
-  const std::size_t pixels = truth.size();
+  const std::size_t pixels = truth.pixels.size();
   const std::vector<accuracy::Sample> samples = accuracy::samples_from(
       pixels, frame.outputs.t, frame.outputs.normal, frame.outputs.steps, frame.outputs.flags);
   const accuracy::Frame grid{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
-  m.metrics = accuracy::measure(grid, samples, truth);
+  m.metrics = accuracy::measure_stratified(grid, samples, truth);
+  m.confidence = accuracy::confidence(grid, samples, truth);
   m.wrong_surface = m.metrics.all.wrong_surface;
   std::uint64_t evaluations = 0, box_rays = 0;
   for (std::uint32_t s : frame.outputs.steps) {

@@ -21,10 +21,12 @@
 // The truth: the camera ray of each pixel in double (common/camera.glsl's formula), the field's
 // box and bound checked first (scan_field: a bound the field exceeds is refused, naming the
 // point and the slope), then field_hit per pixel on every core; normals are central
-// differences of the double function at 1e-6 of the box diagonal. It does not depend on the
+// differences of the double function at 1e-6 of the box diagonal. With interior_stride k > 1
+// it is computed on a stratified sample (every pixel near a silhouette, one in k elsewhere:
+// accuracy/stratified.hpp) and the rates come with their 95% bounds. It does not depend on the
 // knobs, so it is computed once per view and kept: in memory, and with a cache folder on disk,
-// keyed by the GLSL file's text, the declaration, the view and the library version (a changed
-// file or view computes it again).
+// keyed by the GLSL file's text, the declaration, the view, the sample and the library version
+// (a changed file or view computes it again).
 #pragma once
 
 #include <proceduray/config.hpp>
@@ -33,6 +35,7 @@
 #include <proceduray/accuracy/metrics.hpp>
 #include <proceduray/accuracy/parallel.hpp>
 #include <proceduray/accuracy/samples.hpp>
+#include <proceduray/accuracy/stratified.hpp>
 #include <proceduray/scene/field.hpp>
 #include <proceduray/scene/ids.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
@@ -65,6 +68,11 @@ struct MeasureOptions {
   std::vector<std::filesystem::path> shader_dirs;  ///< folders holding the field's GLSL file
   std::filesystem::path cache_dir;                 ///< empty: the truth is kept in memory only
   std::uint32_t repeats = 3;                       ///< frames traced per measurement; gpu_ms is their median
+  /// 1: the truth of every pixel. k > 1: of every pixel near a silhouette or a depth jump and of
+  /// one in k of the others, each standing for k (accuracy/stratified.hpp); the rates are then
+  /// estimates, with their 95% bounds in Measurement::confidence.
+  std::uint32_t interior_stride = 1;
+  std::uint64_t seed = 1;                          ///< which pixels a stride > 1 samples
 };
 
 /// One field, one setting, one view.
@@ -77,11 +85,14 @@ struct Measurement {
   double gpu_ms = 0.0;                ///< median trace time of the frames
   double truth_ms = 0.0;              ///< wall time of the truth (0 when it came from a cache)
   bool truth_cached = false;          ///< the truth came from memory or the cache folder
+  std::size_t truth_traced = 0;       ///< pixels whose truth was computed (all of them at stride 1)
+  /// The false-miss and wrong-surface rates and their upper 95% bounds (equal at stride 1).
+  accuracy::SampleConfidence confidence;
 };
 
-/// The truth of one view: per pixel, from field_hit and the double normal.
+/// The truth of one view: per pixel (or on a stratified sample), from field_hit and the double normal.
 struct ViewTruth {
-  std::vector<accuracy::Reference> pixels;
+  accuracy::StratifiedTruth sample;
   double ms = 0.0;
 };
 
@@ -97,13 +108,15 @@ inline constexpr UniformSlot<MeasureConstants> measure_constants{.binding = 2, .
 /// Unit direction of pixel (x, y): camera.glsl's camera_ray in double.
 PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, std::uint32_t y, std::uint32_t width,
                                              std::uint32_t height);
-/// The cache key of a view's truth: the field's GLSL text, its declaration, the view, the version.
-PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view);
+/// The cache key of a view's truth: the field's GLSL text, its declaration, the view, the sample
+/// (stride and seed), the version.
+PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view,
+                                        const MeasureOptions& options);
 /// Reads a cached truth (false when absent or not this key's); writes one (best effort).
 PROCEDURAY_DECL bool read_truth(const std::filesystem::path& file, std::uint64_t key, std::size_t pixels,
-                                std::vector<accuracy::Reference>& out);
+                                accuracy::StratifiedTruth& out);
 PROCEDURAY_DECL void write_truth(const std::filesystem::path& file, std::uint64_t key,
-                                 const std::vector<accuracy::Reference>& truth);
+                                 const accuracy::StratifiedTruth& truth);
 PROCEDURAY_DECL void check_view(const MeasureView& view, std::string_view op);
 
 }  // namespace detail
@@ -127,14 +140,15 @@ class FieldMeter {
     Measurement m;
     const ViewTruth& truth = truth_of(distance, view, m.truth_cached);
     m.truth_ms = m.truth_cached ? 0.0 : truth.ms;
-    rendered(knobs, view, truth.pixels, m);
+    m.truth_traced = truth.sample.traced;
+    rendered(knobs, view, truth.sample, m);
     return m;
   }
 
   /// The truth of `view` (cached as measure() does).
   template <class Distance>
   const ViewTruth& truth_of(const Distance& distance, const MeasureView& view, bool& cached) {
-    const std::uint64_t key = detail::truth_key(m_field, m_glsl_text, view);
+    const std::uint64_t key = detail::truth_key(m_field, m_glsl_text, view, m_options);
     cached = true;
     if (auto it = m_truths.find(key); it != m_truths.end()) return it->second;
     ViewTruth t;
@@ -142,17 +156,19 @@ class FieldMeter {
     const std::filesystem::path file = m_options.cache_dir.empty()
                                            ? std::filesystem::path()
                                            : m_options.cache_dir / "truth" / (std::to_string(key) + ".truth");
-    if (file.empty() || !detail::read_truth(file, key, pixels, t.pixels)) {
+    if (file.empty() || !detail::read_truth(file, key, pixels, t.sample)) {
       cached = false;
       const auto start = std::chrono::steady_clock::now();
-      compute_truth(distance, view, t.pixels);
+      compute_truth(distance, view, t.sample);
       t.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      if (!file.empty()) detail::write_truth(file, key, t.pixels);
+      if (!file.empty()) detail::write_truth(file, key, t.sample);
     }
     return m_truths.emplace(key, std::move(t)).first->second;
   }
 
   const DistanceField& field() const noexcept { return m_field; }
+  /// The options the meter was built with.
+  const MeasureOptions& options() const noexcept { return m_options; }
   /// The text of the field's GLSL file as read when the meter was built.
   const std::string& glsl_text() const noexcept { return m_glsl_text; }
   /// The device's name (Context::name), for calibration tables.
@@ -162,7 +178,7 @@ class FieldMeter {
 
  private:
   template <class Distance>
-  void compute_truth(const Distance& distance, const MeasureView& view, std::vector<accuracy::Reference>& out) {
+  void compute_truth(const Distance& distance, const MeasureView& view, accuracy::StratifiedTruth& out) {
     const accuracy::FieldBounds bounds = accuracy::field_bounds(m_field);
     if (!m_scanned) {
       accuracy::scan_field(distance, bounds, "FieldMeter::measure");  // throws: NaN, a slope past L
@@ -171,21 +187,19 @@ class FieldMeter {
     const double diagonal = glm::length(bounds.max - bounds.min);
     const accuracy::SearchOptions search{.min_step = 1.0e-9 * diagonal};
     const glm::dvec3 eye(view.camera.eye);
-    out.assign(std::size_t{view.width} * view.height, accuracy::Reference{});
-    accuracy::parallel_rows(view.height, [&](std::uint32_t y, std::uint32_t) {
-      for (std::uint32_t x = 0; x < view.width; ++x) {
-        const glm::dvec3 d = detail::measure_direction(view.camera, x, y, view.width, view.height);
-        const accuracy::Result r = accuracy::field_hit(distance, bounds, eye, d, 0.0, 1.0e30, search);
-        accuracy::Reference& ref = out[std::size_t{y} * view.width + x];
-        ref.outcome = r.outcome;
-        if (r.outcome != accuracy::Outcome::hit) continue;
-        ref.t = r.t;
-        ref.normal = accuracy::gradient_normal(distance, eye + r.t * d, 1.0e-6 * diagonal);
-      }
+    const accuracy::Frame frame{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
+    out = accuracy::stratified_truth(frame, m_options.interior_stride, m_options.seed, [&](std::uint32_t x, std::uint32_t y) {
+      const glm::dvec3 d = detail::measure_direction(view.camera, x, y, view.width, view.height);
+      const accuracy::Result r = accuracy::field_hit(distance, bounds, eye, d, 0.0, 1.0e30, search);
+      accuracy::Reference ref{.outcome = r.outcome};
+      if (r.outcome != accuracy::Outcome::hit) return ref;
+      ref.t = r.t;
+      ref.normal = accuracy::gradient_normal(distance, eye + r.t * d, 1.0e-6 * diagonal);
+      return ref;
     });
   }
   /// Renders and fills m from the frames against `truth`.
-  void rendered(const MarchKnobs& knobs, const MeasureView& view, const std::vector<accuracy::Reference>& truth,
+  void rendered(const MarchKnobs& knobs, const MeasureView& view, const accuracy::StratifiedTruth& truth,
                 Measurement& m);
 
   DistanceField m_field;
