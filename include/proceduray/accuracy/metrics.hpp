@@ -293,6 +293,29 @@ inline std::vector<PixelClass> classify(const Frame& frame, std::span<const Refe
   return classes;
 }
 
+namespace detail {
+/// measure()'s core, on checked inputs: pixel i counted weight(i) times (0: left out of every
+/// statistic, its reference still classing its neighbours; a sample standing for that many
+/// pixels: accuracy/stratified.hpp).
+template <class Weight>
+Metrics accumulate(const Frame& frame, std::span<const Sample> samples, std::span<const Reference> references,
+                   const Weight& weight) {
+  const std::vector<PixelClass> classes = classify(frame, references);
+  std::array<Accumulator, 4> per_class;
+  Accumulator all;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    for (std::uint32_t k = weight(i); k > 0; --k) {
+      per_class[static_cast<std::size_t>(classes[i])].add(samples[i], references[i], frame.angle(i));
+      all.add(samples[i], references[i], frame.angle(i));
+    }
+  }
+  Metrics m;
+  for (std::size_t c = 0; c < per_class.size(); ++c) m.classes[c] = per_class[c].finish();
+  m.all = all.finish();
+  return m;
+}
+}  // namespace detail
+
 /// Compares the method's samples with the reference, pixel by pixel, per class and overall. Throws
 /// UsageError for a bad frame (no pixels, a non-positive or non-finite pixel angle), sizes other than
 /// width * height, or an invalid reference (see Reference). The method's outputs are data, never an
@@ -303,17 +326,7 @@ inline Metrics measure(const Frame& frame, std::span<const Sample> samples, std:
   detail::check_count(samples.size(), frame, "samples", call);
   detail::check_count(references.size(), frame, "references", call);
   detail::check_references(references, frame, call);
-  const std::vector<PixelClass> classes = classify(frame, references);
-  std::array<detail::Accumulator, 4> per_class;
-  detail::Accumulator all;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    per_class[static_cast<std::size_t>(classes[i])].add(samples[i], references[i], frame.angle(i));
-    all.add(samples[i], references[i], frame.angle(i));
-  }
-  Metrics m;
-  for (std::size_t c = 0; c < per_class.size(); ++c) m.classes[c] = per_class[c].finish();
-  m.all = all.finish();
-  return m;
+  return detail::accumulate(frame, samples, references, [](std::size_t) { return 1u; });
 }
 
 /// Peak signal-to-noise ratio in dB of two images of the same layout (any channels, any order):

@@ -182,38 +182,29 @@ StratifiedTruth stratified_truth(const Frame& frame, std::uint32_t stride, std::
   return out;
 }
 
+namespace detail {
+inline void check_stratified(const Frame& frame, std::span<const Sample> samples, const StratifiedTruth& truth,
+                             std::string_view call) {
+  check_frame(frame, call);
+  check_count(samples.size(), frame, "samples", call);
+  check_count(truth.pixels.size(), frame, "truth pixels", call);
+  check_count(truth.weight.size(), frame, "truth weights", call);
+  check_references(truth.pixels, frame, call);
+}
+}  // namespace detail
+
 /// measure() on a stratified truth: the classes from every pixel's outcome, the statistics from
 /// the traced pixels, each counted as many times as it stands for. Throws as measure() does.
 inline Metrics measure_stratified(const Frame& frame, std::span<const Sample> samples, const StratifiedTruth& truth) {
-  constexpr std::string_view call = "accuracy::measure_stratified";
-  detail::check_frame(frame, call);
-  detail::check_count(samples.size(), frame, "samples", call);
-  detail::check_count(truth.pixels.size(), frame, "truth pixels", call);
-  detail::check_count(truth.weight.size(), frame, "truth weights", call);
-  detail::check_references(truth.pixels, frame, call);
-  const std::vector<PixelClass> classes = classify(frame, truth.pixels);
-  std::array<detail::Accumulator, 4> per_class;
-  detail::Accumulator all;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    for (std::uint32_t k = 0; k < truth.weight[i]; ++k) {
-      per_class[static_cast<std::size_t>(classes[i])].add(samples[i], truth.pixels[i], frame.angle(i));
-      all.add(samples[i], truth.pixels[i], frame.angle(i));
-    }
-  }
-  Metrics m;
-  for (std::size_t c = 0; c < per_class.size(); ++c) m.classes[c] = per_class[c].finish();
-  m.all = all.finish();
-  return m;
+  detail::check_stratified(frame, samples, truth, "accuracy::measure_stratified");
+  return detail::accumulate(frame, samples, truth.pixels, [&](std::size_t i) { return truth.weight[i]; });
 }
 
 /// The estimates of the frame's false-miss and wrong-surface rates (over the truth's hits, as
 /// ClassStats has them) and their upper 95% bounds: the band's counts are exact, the sample's
 /// proportion is bounded by Wilson's interval and scaled by the stride.
 inline SampleConfidence confidence(const Frame& frame, std::span<const Sample> samples, const StratifiedTruth& truth) {
-  constexpr std::string_view call = "accuracy::confidence";
-  detail::check_frame(frame, call);
-  detail::check_count(samples.size(), frame, "samples", call);
-  detail::check_count(truth.weight.size(), frame, "truth weights", call);
+  detail::check_stratified(frame, samples, truth, "accuracy::confidence");
   // Per part (band, sample): the truth's hits, the misses among them, the hits behind.
   double hits[2] = {0, 0}, misses[2] = {0, 0}, behind[2] = {0, 0};
   for (std::size_t i = 0; i < samples.size(); ++i) {
