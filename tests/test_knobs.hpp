@@ -14,14 +14,9 @@
 
 namespace test_knobs {
 
-/// `caps`' half-footprint setting (march/primitives.hpp's preset_base).
-inline proceduray::MarchKnobs half_footprint(const proceduray::MarchCapabilities& caps) {
-  return proceduray::preset_base(caps);
-}
-
 /// The paper scene's constants with both fractals on the half-footprint setting.
 inline paper::SceneConstants pinned(paper::SceneConstants c) {
-  for (const auto& [id, name] : paper::marched_objects) c.knobs[id] = half_footprint(paper::capabilities(id));
+  for (const auto& [id, name] : paper::marched_objects) c.knobs[id] = proceduray::preset_base(paper::capabilities(id));
   return c;
 }
 
@@ -29,7 +24,7 @@ inline paper::SceneConstants pinned(paper::SceneConstants c) {
 inline d3d12::SceneConstants pinned(d3d12::SceneConstants c) {
   for (std::uint32_t k = d3d12::metaballs; k < d3d12::primitive_count; ++k) {
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
-    d3d12::knobs(c, kind) = half_footprint(d3d12::capabilities(kind));
+    d3d12::knobs(c, kind) = proceduray::preset_base(d3d12::capabilities(kind));
   }
   return c;
 }

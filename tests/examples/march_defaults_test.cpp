@@ -42,13 +42,16 @@ std::string setting(MarchKnobs k) {
 struct Tables {
   Calibration full = Calibration::load(shipped_calibration());
   Calibration small = Calibration::load(shipped_calibration().parent_path() / "primitives_640x360.csv");
+  /// small's verdict per geometry and setting, looked up once per row of full.
+  std::map<std::string, bool> small_meets = [this] {
+    std::map<std::string, bool> out;
+    for (const CalibrationRow& s : small.rows()) out[s.geometry + " " + describe(s.knobs)] = s.meets(ErrorBudget{});
+    return out;
+  }();
   /// Whether `r` (a row of `full`) meets the default budget in both tables.
   bool meets(const CalibrationRow& r) const {
-    if (!r.meets(ErrorBudget{})) return false;
-    for (const CalibrationRow& s : small.rows()) {
-      if (s.geometry == r.geometry && describe(s.knobs) == describe(r.knobs)) return s.meets(ErrorBudget{});
-    }
-    return false;  // not measured there
+    const auto it = small_meets.find(r.geometry + " " + describe(r.knobs));
+    return r.meets(ErrorBudget{}) && it != small_meets.end() && it->second;  // not measured there: no
   }
 };
 

@@ -36,6 +36,12 @@ std::string text_of(const Calibration& c) {
   return out.str();
 }
 
+/// The test table's text as a table of an older format would start it.
+std::string in_format(const char* number) {
+  return std::regex_replace(text_of(table()), std::regex("# proceduray-calibration 3"),
+                            std::string("# proceduray-calibration ") + number);
+}
+
 std::string read(const std::string& path) {
   std::ifstream in(path);
   std::stringstream s;
@@ -114,9 +120,7 @@ TEST_CASE("calibration - the default budget is what a 1080p picture cannot tell;
 }
 
 TEST_CASE("calibration - a format-2 table reads with false misses unmeasured (they were per ray)") {
-  std::string text = text_of(table());
-  text = std::regex_replace(text, std::regex("# proceduray-calibration 3"), "# proceduray-calibration 2");
-  std::istringstream in(text);
+  std::istringstream in(in_format("2"));
   const Calibration two = Calibration::parse(in, "two.csv");
   REQUIRE(two.rows().size() == 5);
   CHECK(std::isnan(two.rows()[0].false_misses));
@@ -127,8 +131,7 @@ TEST_CASE("calibration - a format-2 table reads with false misses unmeasured (th
 }
 
 TEST_CASE("calibration - a format-1 table reads with wrong-surface unmeasured, CRLF lines too") {
-  std::string text = text_of(table());
-  text = std::regex_replace(text, std::regex("# proceduray-calibration 3"), "# proceduray-calibration 1");
+  std::string text = in_format("1");
   text = std::regex_replace(text, std::regex("normal_p95_degrees,wrong_surface,"), "normal_p95_degrees,");
   text = std::regex_replace(text, std::regex(",0\\.5,0,lipschitz"), ",0.5,lipschitz");  // drop the column's values
   text = std::regex_replace(text, std::regex("\n"), "\r\n");
