@@ -18,11 +18,11 @@ namespace distance_field_test {
 struct Payload { glm::vec4 colour; };
 struct Occlusion { std::uint32_t occluded; };
 struct Material { glm::vec3 albedo; std::uint32_t id; };
-struct Frame { glm::vec4 sky; };
+struct Frame { glm::vec4 sky; float time; };
 PROCEDURAY_STRUCT(Payload, scalar, colour);
 PROCEDURAY_STRUCT(Occlusion, scalar, occluded);
 PROCEDURAY_STRUCT(Material, scalar, albedo, id);
-PROCEDURAY_STRUCT(Frame, scalar, sky);
+PROCEDURAY_STRUCT(Frame, scalar, sky, time);
 using Interface = ShaderInterface<proceduray::Payload<Payload, Occlusion>, RootComponent<Frame>,
                                   RootArguments<Material>, Attributes<FieldHit>>;
 constexpr UniformSlot<Frame> frame_slot{.binding = 2, .name = "frame"};
@@ -87,6 +87,57 @@ TEST_CASE("distance field: registers the object, and compile() plans its setting
     CHECK(s.declarations.find("hitAttributeEXT FieldHit hit") != std::string::npos);
   }
   CHECK(generated == 2);  // one per field: the shadow groups share the radiance groups' stage
+}
+
+TEST_CASE("distance field: parameters are uniform members passed per frame; compile() wants the uniform declared") {
+  Rays r;
+  DistanceFieldDesc d = gyroid(r.radiance);
+  d.parameters = {field_parameter(frame_slot, &Frame::time), field_parameter(frame_slot, &Frame::sky)};
+  d.iterations = 4;
+  add_distance_field(r.scene, "gyroid", d, r.material, {{{1, 0, 0}, 7}});
+  const Plan plan = compile(r.scene);
+  REQUIRE(plan.fields().size() == 1);
+  CHECK(plan.fields()[0].field.parameters.size() == 2);
+  bool called = false;
+  for (const PlannedStage& s : plan.pipeline().stages) {
+    called = called || s.source.find("return gyroid_distance(p, iterations, frame.time, frame.sky);") != std::string::npos;
+  }
+  CHECK(called);
+  // The same uniform under another name (or not declared at all) is no uniform the shader can read.
+  Rays other;
+  constexpr UniformSlot<Frame> elsewhere{.binding = 5, .name = "other"};
+  DistanceFieldDesc e = gyroid(other.radiance);
+  e.parameters = {field_parameter(elsewhere, &Frame::time)};
+  add_distance_field(other.scene, "gyroid", e, other.material, {{{1, 0, 0}, 7}});
+  try {
+    (void)compile(other.scene);
+    FAIL("a parameter of an undeclared uniform compiled");
+  } catch (const SceneError& err) {
+    const std::string m = err.what();
+    CHECK(m.find("distance field \"gyroid\"") != std::string::npos);
+    CHECK(m.find("other.time") != std::string::npos);
+    CHECK(m.find("set_global_signature") != std::string::npos);
+  }
+  // A slot without a GLSL name cannot be read by a generated shader.
+  constexpr UniformSlot<Frame> unnamed{.binding = 2};
+  CHECK_THROWS_WITH_AS(field_parameter(unnamed, &Frame::time), doctest::Contains("has no GLSL name"), UsageError);
+}
+
+TEST_CASE("distance field: starting knobs are the field's defaults, checked when declared") {
+  Rays r;
+  DistanceFieldDesc d = gyroid(r.radiance);
+  MarchKnobs k = march_base_knobs;
+  k.threshold = 2.0f;
+  d.knobs = k;
+  add_distance_field(r.scene, "gyroid", d, r.material, {{{1, 0, 0}, 7}});
+  CHECK(compile(r.scene).fields()[0].caps.defaults.threshold == 2.0f);
+  Rays bad;
+  DistanceFieldDesc b = gyroid(bad.radiance);
+  k.method = MarchMethod::sphere;  // L = 1.75: sphere steps overshoot
+  b.knobs = k;
+  CHECK_THROWS_WITH_AS(add_distance_field(bad.scene, "gyroid", b, bad.material, {{{1, 0, 0}, 7}}),
+                       doctest::Contains("starting knobs"), UsageError);
+  CHECK(bad.scene.fields().empty());  // nothing registered
 }
 
 TEST_CASE("distance field: a scene without fields plans no settings binding") {

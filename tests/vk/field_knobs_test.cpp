@@ -22,8 +22,9 @@ namespace pr = proceduray;
 struct Constants {
   pr::Camera camera;
   pr::MarchKnobs knobs;  // handwritten.rint's; the generated shader reads the library's buffer
+  float radius = 1.0f;   // sized_ball.glsl's parameter
 };
-PROCEDURAY_STRUCT(Constants, scalar, camera, knobs);
+PROCEDURAY_STRUCT(Constants, scalar, camera, knobs, radius);
 struct Colour {
   glm::vec3 rgb;
 };
@@ -41,7 +42,8 @@ struct FieldScene {
   Scene scene;
   pr::GeometryId object;
 
-  explicit FieldScene(const std::string& glsl, const std::string& intersection = {}, float lipschitz = 0.0f) {
+  explicit FieldScene(const std::string& glsl, const std::string& intersection = {}, float lipschitz = 0.0f,
+                      std::vector<pr::FieldParameter> parameters = {}) {
     const auto primary = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
     scene.set_global_signature(pr::default_global_signature({constants_slot}));
     scene.add_raygen("field.rgen");
@@ -54,6 +56,7 @@ struct FieldScene {
     object = pr::add_distance_field(scene, "ball", {.glsl = glsl, .function = glsl.substr(0, glsl.find('.')) + "_distance",
                                                     .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)},
                                                     .lipschitz = lipschitz, .exact = lipschitz == 0.0f,
+                                                    .parameters = std::move(parameters),
                                                     .closest_hit = {{primary, "shade.rchit"}}});
   }
 };
@@ -67,9 +70,11 @@ Constants constants() {
   return {pr::look_at({0.0f, 0.6f, 3.2f}, {0.0f, 0.0f, 0.0f}, 50.0f, width, height), pr::march_base_knobs};
 }
 
-std::vector<std::uint8_t> render(pr::vk::Renderer& r, const pr::MarchKnobs& knobs = pr::march_base_knobs) {
+std::vector<std::uint8_t> render(pr::vk::Renderer& r, const pr::MarchKnobs& knobs = pr::march_base_knobs,
+                                 float radius = 1.0f) {
   Constants c = constants();
   c.knobs = knobs;
+  c.radius = radius;
   r.set(constants_slot, c);
   if (!r.plan().fields().empty()) {
     r.set_pixel_angle(c.camera.pixel_angle);
@@ -158,4 +163,19 @@ TEST_CASE("distance field knobs: checked on change, the pixel angle required, no
   const std::size_t g = covered(image), b = covered(render(rb));
   CHECK(g > b / 5);
   CHECK(g < b * 9 / 10);
+}
+
+TEST_CASE("a distance field's parameters come from the scene's uniform, frame by frame, without a rebuild") {
+  TestContext t;
+  FieldScene sized("sized_ball.glsl", "", 0.0f, {pr::field_parameter(constants_slot, &Constants::radius)});
+  FieldScene ball("ball.glsl");
+  pr::vk::Renderer a(t.ctx, sized.scene, options()), b(t.ctx, ball.scene, options());
+  CHECK(render(a, pr::march_base_knobs, 1.0f) == render(b));  // radius 1: the unit ball, byte for byte
+  const std::size_t small = covered(render(a, pr::march_base_knobs, 0.5f));
+  const std::size_t large = covered(render(a, pr::march_base_knobs, 0.9f));
+  CHECK(small > 50);
+  // The disc's area grows with the radius squared (3.24x), less the perspective's few percent.
+  CHECK(double(large) / double(small) > 2.8);
+  CHECK(double(large) / double(small) < 3.8);
+  CHECK(a.plan().fields()[0].field.parameters[0].member == "radius");
 }

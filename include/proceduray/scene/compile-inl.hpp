@@ -23,6 +23,15 @@ PROCEDURAY_DECL void PlanBuilder::outputs() {
   });
 }
 
+PROCEDURAY_DECL void PlanBuilder::check_parameter(const DistanceField& f, const FieldParameter& p) const {
+  for (const Binding& b : out.m_global->bindings) {
+    if (b.kind == BindingKind::uniform_buffer && b.name == p.uniform && b.type == p.uniform_type) return;
+  }
+  throw SceneError("compile: distance field \"" + f.id + "\" takes the parameter " + p.uniform + "." + p.member +
+                   ", but the global signature declares no uniform " + std::string(p.uniform_type->glsl_name) + " " +
+                   p.uniform + "; add that UniformSlot to the global signature (set_global_signature)");
+}
+
 PROCEDURAY_DECL void PlanBuilder::fields() {
   if (s.fields().empty()) return;
   if (!out.m_global) out.m_global = GlobalSignatureDesc{};
@@ -33,6 +42,7 @@ PROCEDURAY_DECL void PlanBuilder::fields() {
   out.m_field_binding = next;
   out.m_global->bindings.push_back(StorageSlot<FieldSettings>{.binding = next, .name = field_settings_name});
   for (const DistanceField& f : s.fields()) {
+    for (const FieldParameter& p : f.parameters) check_parameter(f, p);
     PlannedField planned{f, s.geometry_id(f.id), field_capabilities(f), std::nullopt, {}, {}};
     if (s.error_budget()) {
       planned.pick = pick_setting(f, *s.error_budget(), "compile");

@@ -238,6 +238,8 @@ struct PlanBuilder {
   void pipeline();
   void outputs();
   void fields();
+  /// Throws SceneError unless the global signature declares the uniform `p` reads.
+  void check_parameter(const DistanceField& f, const FieldParameter& p) const;
   void declarations();
 };
 

@@ -12,6 +12,8 @@
 //        .closest_hit = {{radiance, "shade.rchit"}}},         // reads hit.normal (object space), hit.steps
 //       material, {gold});
 //   // a fractal: .iterations = 8 and `pr_real bulb_distance(pr_real3 p, uint iterations)`
+//   // animated: .parameters = {proceduray::field_parameter(constants_slot, &Constants::time)} and
+//   //           `pr_real bulb_distance(pr_real3 p, uint iterations, float time)`, read per frame
 //
 // The renderer then needs the view's pixel angle (Renderer::set_pixel_angle(camera.pixel_angle):
 // footprint thresholds scale with it) and takes each field's knobs (Renderer::set_field_knobs(g,
@@ -25,6 +27,7 @@
 
 #include <proceduray/config.hpp>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +45,8 @@ struct DistanceFieldDesc {
   float lipschitz = 0.0f;        ///< |f(p) - f(q)| <= L |p - q|: required (> 0) unless exact
   bool exact = false;            ///< an exact distance (L = 1)
   std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count (a knob)
+  std::vector<FieldParameter> parameters;  ///< uniform members passed after p (and iterations): field_parameter
+  std::optional<MarchKnobs> knobs;         ///< starting knobs (checked); none: field_capabilities' defaults
   std::vector<InstanceTransform> instances{identity_transform()};  ///< where it stands
   std::vector<RayShader> closest_hit;  ///< closest-hit shaders; a ray type not listed runs none
   std::vector<RayShader> any_hit;      ///< any-hit shaders; a ray type not listed runs none
@@ -55,8 +60,9 @@ inline constexpr bool reports_field_hits = Interface::AttributesSet::template co
 
 /// The field and the object add_distance_field registers for `desc`; checks the field.
 inline std::pair<DistanceField, ObjectDesc> field_object(const std::string& id, DistanceFieldDesc desc) {
-  DistanceField f{id, std::move(desc.glsl), std::move(desc.function), desc.aabb, desc.lipschitz, desc.exact,
-                  desc.iterations};
+  DistanceField f{id,          std::move(desc.glsl), std::move(desc.function), desc.aabb,
+                  desc.lipschitz, desc.exact,         desc.iterations,          std::move(desc.parameters),
+                  desc.knobs};
   validate(f, "add_distance_field");
   ObjectDesc object{.geometry = GeometryDesc::procedural({f.aabb}, std::move(desc.instances)),
                     .intersection = field_stage_name(f), .closest_hit = std::move(desc.closest_hit),

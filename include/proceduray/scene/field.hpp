@@ -9,8 +9,9 @@
 //   proceduray::MarchCapabilities caps = proceduray::field_capabilities(f);   // no sphere steps: L > 1
 //   std::string rint = proceduray::field_stage_source(f, 0);   // the generated intersection shader
 //
-// The GLSL file holds `pr_real <function>(pr_real3 p)` (a fractal: `(pr_real3 p, uint iterations)`)
-// in the portable subset of shader/glsl_cpp.hpp, so the same file compiles as C++ for the ground
+// The GLSL file holds `pr_real <function>(pr_real3 p)` (a fractal: `(pr_real3 p, uint iterations)`),
+// then one argument per declared parameter (field_parameter: a member of a scene uniform, read
+// per frame, such as an animation's time), in the portable subset of shader/glsl_cpp.hpp, so the same file compiles as C++ for the ground
 // truth. f(p) <= 0 inside; |f(p) - f(q)| <= L |p - q| with L the declared bound (1 when exact).
 // The generated shader passes L to march_settings: lipschitz and relaxed steps are f / L, and
 // plain sphere steps (which take the distance as it is, assuming L = 1) are refused where L > 1.
@@ -22,14 +23,19 @@
 
 #include <proceduray/config.hpp>
 
+#include <proceduray/error.hpp>
 #include <proceduray/march/calibration.hpp>
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/scene/geometry.hpp>
+#include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/define_struct.hpp>
 
 #include <cstdint>
+#include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -49,6 +55,41 @@ PROCEDURAY_DEFINE_STRUCT(FieldSettings, scalar,
 /// The GLSL instance name of the field settings buffer (reserved: the proceduray_ prefix).
 inline constexpr const char* field_settings_name = "proceduray_fields";
 
+/// A value a distance function takes after the point (and the iterations): a member of a uniform
+/// the scene's global signature declares, so it changes per frame with Renderer::set (an
+/// animation's time, a cut plane) and the pipeline is not rebuilt. Made by field_parameter, so
+/// the argument's type is the member's; compile() checks that the uniform is declared.
+struct FieldParameter {
+  std::string uniform;                    ///< the uniform's GLSL instance name (UniformSlot::name)
+  const TypeOps* uniform_type = nullptr;  ///< what it holds
+  std::string member;                     ///< the member passed, by name
+  const TypeOps* type = nullptr;          ///< the member's type
+  friend bool operator==(const FieldParameter&, const FieldParameter&) = default;
+};
+
+/// The parameter `slot.name.<member>`: `field_parameter(constants_slot, &Constants::time)`.
+/// Throws UsageError for a slot without a GLSL name (it is declared by hand, so no generated
+/// shader can name it).
+template <RegisteredStruct S, class M>
+FieldParameter field_parameter(const UniformSlot<S>& slot, M S::*member) {
+  const std::string uniform = slot.name == nullptr ? "" : slot.name;
+  if (uniform.empty()) {
+    throw UsageError(std::string("field_parameter: the uniform of ") + std::string(type_ops<S>.glsl_name) +
+                     " has no GLSL name; give its UniformSlot a .name so the generated shader can read it");
+  }
+  const S probe{};
+  const auto offset = static_cast<std::size_t>(reinterpret_cast<const char*>(&(probe.*member)) -
+                                               reinterpret_cast<const char*>(&probe));
+  const TypeOps& s = type_ops<S>;
+  for (std::size_t i = 0; i < s.field_count; ++i) {
+    if (s.fields[i].offset == offset && s.fields[i].type == &type_ops<M>) {
+      return {uniform, &s, std::string(s.fields[i].name), &type_ops<M>};
+    }
+  }
+  throw UsageError("field_parameter: the member at byte " + std::to_string(offset) + " of " + std::string(s.glsl_name) +
+                   " is not one of its registered members; register it (PROCEDURAY_STRUCT) or pass another");
+}
+
 /// A distance field: what add_distance_field records and compile() plans.
 struct DistanceField {
   std::string id;                ///< the object's id: geometry and hit groups
@@ -58,7 +99,16 @@ struct DistanceField {
   float lipschitz = 0.0f;        ///< the bound L (> 0); exact fields: 1
   bool exact = false;            ///< f is an exact distance (L = 1)
   std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count
-  friend bool operator==(const DistanceField&, const DistanceField&) = default;
+  std::vector<FieldParameter> parameters;  ///< passed after p (and iterations), in order
+  std::optional<MarchKnobs> knobs;         ///< its starting knobs; none: field_capabilities' defaults
+  friend bool operator==(const DistanceField& a, const DistanceField& b) {
+    const auto same_knobs = [](const std::optional<MarchKnobs>& x, const std::optional<MarchKnobs>& y) {
+      return x.has_value() == y.has_value() && (!x || std::memcmp(&*x, &*y, sizeof(MarchKnobs)) == 0);
+    };
+    return a.id == b.id && a.glsl == b.glsl && a.function == b.function && a.aabb == b.aabb &&
+           a.lipschitz == b.lipschitz && a.exact == b.exact && a.iterations == b.iterations &&
+           a.parameters == b.parameters && same_knobs(a.knobs, b.knobs);
+  }
 };
 
 /// An error budget for the fields, with the calibration it is met from and the frame size that
@@ -88,12 +138,13 @@ inline float field_lipschitz(const DistanceField& f) { return f.exact ? 1.0f : f
 
 /// Throws UsageError, naming `op`, the field, the value and the fix: an empty or non-GLSL file
 /// name, a function name that is no identifier, a non-finite or inverted AABB, a bound <= 0, NaN
-/// or infinite (or missing and not exact), iterations past march_max_iterations_limit.
+/// or infinite (or missing and not exact), iterations past march_max_iterations_limit, a
+/// parameter without a uniform or member name, starting knobs the field does not accept.
 PROCEDURAY_DECL void validate(const DistanceField& f, std::string_view op);
 
 /// What the field accepts: every method of march/ but plain sphere steps where L > 1 (they take
 /// the distance as it is and overshoot), difference normals, iterations when a fractal; the
-/// defaults are march_base_knobs (a fractal's iterations its own).
+/// defaults are the field's starting knobs, else march_base_knobs (a fractal's iterations its own).
 PROCEDURAY_DECL MarchCapabilities field_capabilities(const DistanceField& f);
 
 /// The name of the field's generated intersection stage: "<id>.field.rint" (no file has it).

@@ -6,6 +6,7 @@
 #include "proceduray/vk/field_knobs.hpp"
 
 #include <cmath>
+#include <cstring>
 
 #include "proceduray/vk/scene_pipeline.hpp"
 #include "proceduray/vk/shader_compiler.hpp"
@@ -30,9 +31,10 @@ PROCEDURAY_DECL void FieldKnobs::set_pixel_angle(float radians, std::string_view
     throw UsageError(std::string(op) + ": pixel angle " + std::to_string(radians) + " must be a finite angle > 0 "
                      "(radians per pixel: Camera::pixel_angle, or the vertical field of view / the image height)");
   }
+  const bool same = m_pixel_angle && !m_settings.empty() && m_settings[0].pixel_angle == radians;
   for (FieldSettings& s : m_settings) s.pixel_angle = radians;
   m_pixel_angle = true;
-  m_dirty = !m_settings.empty();
+  m_dirty = m_dirty || (!m_settings.empty() && !same);
 }
 
 PROCEDURAY_DECL std::size_t FieldKnobs::index(GeometryId field, std::string_view op) const {
@@ -52,6 +54,9 @@ PROCEDURAY_DECL void FieldKnobs::set(GeometryId field, const MarchKnobs& knobs, 
   const std::size_t i = index(field, op);
   const PlannedField& f = m_plan->fields()[i];
   validate(knobs, f.caps, std::string(op) + ": field \"" + f.field.id + "\"");
+  // Unchanged knobs (a frame loop setting them every frame) leave the buffer alone: a change
+  // waits for the frames in flight.
+  if (std::memcmp(&m_settings[i].knobs, &knobs, sizeof knobs) == 0) return;
   m_settings[i].knobs = knobs;
   m_dirty = true;
 }

@@ -121,6 +121,12 @@ PROCEDURAY_DECL void check_view(const MeasureView& view, std::string_view op) {
 PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, MeasureOptions options)
     : m_field(std::move(field)), m_options(std::move(options)) {
   validate(m_field, "FieldMeter");
+  if (!m_field.parameters.empty()) {
+    const FieldParameter& p = m_field.parameters[0];
+    throw UsageError("FieldMeter: distance field \"" + m_field.id + "\" takes parameters (" + p.uniform + "." + p.member +
+                     "...) from its scene's uniforms, which the measuring scene does not have; measure a function "
+                     "with the parameters' values fixed (a wrapper in the GLSL file)");
+  }
   m_caps = field_capabilities(m_field);
   if (m_options.repeats == 0) {
     throw UsageError("FieldMeter: MeasureOptions::repeats is 0; trace at least one frame per measurement (default 3)");
