@@ -2,6 +2,7 @@
 //
 //   paper::PaperScene scene;                       // its constants declared on it (flags, depth limit)
 //   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
+//   paper::set_frame(renderer, paper::default_constants(1024, 768, time));   // each frame: constants, fractal knobs
 //   paper::PaperScene portable({}, paper::Tracing::iterative);   // runs where maxRayRecursionDepth is 1
 //
 // Recursion: recursive tracing declares depth_limit + 1 (the deepest radiance hit traces a
@@ -49,16 +50,23 @@ struct PaperScene : pr::Scene<Interface> {
     if (tracing == Tracing::iterative) add_define("PAPER_ITERATIVE");
     pr::add_object(*this, "plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
                                     .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
-    // Each marched object: its own intersection shader for both rays, shade.rchit for radiance.
-    const auto procedural = [&](const std::string& id, pr::Aabb box, const std::vector<pr::Placement>& at,
-                                const std::vector<MaterialRecord>& materials) {
-      pr::add_object<ProceduralHit>(*this, id, {.geometry = pr::GeometryDesc::procedural({box}, pr::transforms(at)),
-                                                .intersection = id + ".rint", .closest_hit = {{radiance, "shade.rchit"}}},
-                                    material, materials);
-    };
-    procedural("pacman", pacman_aabb, pacman_placements, pacman_materials);
-    procedural("julia", julia_aabb, {julia_placement}, {julia_material});
-    procedural("mandelbulb", mandelbulb_aabb, {mandelbulb_placement}, {mandelbulb_material});
+    pr::add_object<pr::FieldHit>(*this, "pacman", {.geometry = pr::GeometryDesc::procedural({pacman_aabb},
+                                                                                          pr::transforms(pacman_placements)),
+                                                   .intersection = "pacman.rint", .closest_hit = {{radiance, "shade.rchit"}}},
+                                 material, pacman_materials);
+    // The fractals are distance fields: the library marches them with their knobs (set_frame).
+    const auto time = pr::field_parameter(constants_slot, &SceneConstants::time);
+    pr::add_distance_field(*this, "julia", {.glsl = "fractals.glsl", .function = "julia_field", .aabb = julia_aabb,
+                                            .lipschitz = 1.0f, .iterations = capabilities(julia_id).defaults.iterations,
+                                            .parameters = {time, pr::field_parameter(constants_slot, &SceneConstants::julia_cuts)},
+                                            .knobs = capabilities(julia_id).defaults, .instances = pr::transforms(std::vector<pr::Placement>{julia_placement}),
+                                            .closest_hit = {{radiance, "shade.rchit"}}}, material, {julia_material});
+    pr::add_distance_field(*this, "mandelbulb", {.glsl = "fractals.glsl", .function = "mandelbulb_field",
+                                                 .aabb = mandelbulb_aabb, .lipschitz = 1.0f,
+                                                 .iterations = capabilities(mandelbulb_id).defaults.iterations,
+                                                 .parameters = {time}, .knobs = capabilities(mandelbulb_id).defaults,
+                                                 .instances = pr::transforms(std::vector<pr::Placement>{mandelbulb_placement}),
+                                                 .closest_hit = {{radiance, "shade.rchit"}}}, material, {mandelbulb_material});
   }
 
   /// Shaders from this example's folder (each compiled with its stage's declarations from the
@@ -74,5 +82,16 @@ struct PaperScene : pr::Scene<Interface> {
   Tracing m_tracing;
   std::uint32_t m_depth_limit;
 };
+
+/// Sets a frame's constants on `renderer` (a PaperScene's), and hands the fractals' knobs
+/// (SceneConstants::knobs, what a sweep rewrites) and the view's pixel angle to the library,
+/// which marches the fractals. Throws UsageError for knobs a fractal does not accept.
+inline void set_frame(pr::vk::Renderer& renderer, const SceneConstants& c) {
+  renderer.set(constants_slot, c);
+  renderer.set_pixel_angle(c.camera.pixel_angle);
+  for (const pr::PlannedField& f : renderer.plan().fields()) {
+    renderer.set_field_knobs(f.geometry, c.knobs[f.field.id == "julia" ? julia_id : mandelbulb_id]);
+  }
+}
 
 }  // namespace paper

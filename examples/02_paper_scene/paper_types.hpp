@@ -13,9 +13,9 @@
 //          scene declares, sbtRecordOffset = missIndex = <ray>_ray and sbtRecordStride = ray_count.
 //   Hit groups (radiance | shadow):
 //          Plane      triangles   closest hit plane.rchit         | no shaders
-//          Pacman     procedural  shade.rchit + pacman.rint        | pacman.rint
-//          Julia      procedural  shade.rchit + julia.rint         | julia.rint
-//          Mandelbulb procedural  shade.rchit + mandelbulb.rint    | mandelbulb.rint
+//          Pacman     procedural  shade.rchit + pacman.rint       | pacman.rint
+//          Julia      distance field (fractals.glsl julia_field): shade.rchit + the generated intersection
+//          Mandelbulb distance field (fractals.glsl mandelbulb_field): likewise
 //   Hit records carry a MaterialRecord (radiance; shadow records carry one too, unread).
 //   Raygen and miss records carry no data. Geometry: one AABB per procedural BLAS (the
 //   *_aabb below, in local space), instances placed by the *_placement(s) below; the plane is
@@ -49,20 +49,21 @@ inline constexpr std::uint32_t max_depth_supported = 16;
 using Tracing = examples::Tracing;
 
 /// Per-frame uniform (set 0, binding 2). The march knobs are per object (indexed by ObjectId):
-/// run-time values a sweep rewrites. The fractals read theirs; the Pac-men (analytic) read only
-/// epsilon, their secondary rays' offset; sky and plane entries are unused.
+/// run-time values a sweep rewrites. set_frame (paper_scene.hpp) hands the fractals' to the
+/// library, which marches them; shade.rchit reads them for the secondary rays' offset, the
+/// Pac-men (analytic) epsilon alone; sky and plane entries are unused.
 PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (pr::Camera, camera),                ///< primary rays; camera.pixel_angle sets the footprint
     (glm::vec3, light_position),         ///< point light, world space
     (float, ambient),                    ///< ambient fraction of the albedo; default 0.15
     (glm::vec3, light_colour),           ///< default white
-    (float, time),                       ///< seconds: animates the Julia constant and the Mandelbulb iterations
+    (float, time),                       ///< seconds: animates the Julia constant and the Mandelbulb iterations (a field parameter)
     (glm::vec3, sky_colour),             ///< zenith colour; the horizon is lighter
     (std::uint32_t, max_depth),          ///< radiance segments, primary included (3: two reflections), <= max_depth_limit
     (std::uint32_t, flags),              ///< flag_* bits; default shadows | reflections
     (float, min_weight),                 ///< reflections adding less than this to the pixel are not traced; default 0.05
     (pr::MarchKnobs[object_id_count], knobs),  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
-    (pr::CutPlanes, julia_cuts),         ///< the planes cutting the Julia set (julia.rint); default julia_cut
+    (pr::CutPlanes, julia_cuts),         ///< the planes cutting the Julia set (a field parameter); default julia_cut
     (float, pacman_mouth));              ///< the Pac-men's mouth half angle, radians (pacman.rint); default pacman_mouth
 
 /// The radiance ray's payload (location 0). The fields after `weight` carry a hit back to
@@ -84,11 +85,6 @@ PROCEDURAY_DEFINE_STRUCT(RadiancePayload, scalar,
 /// The shadow ray's payload (location 1): preset to 1, the shadow miss sets 0.
 PROCEDURAY_DEFINE_STRUCT(ShadowPayload, scalar, (std::uint32_t, occluded));
 
-/// What every procedural intersection shader reports (16 bytes).
-PROCEDURAY_DEFINE_STRUCT(ProceduralHit, scalar,
-    (glm::vec3, normal),                 ///< object space, outward
-    (float, steps));                     ///< marching steps taken (0 for Pac-man)
-
 /// Hit root arguments: one material per object, read by plane.rchit and shade.rchit.
 PROCEDURAY_DEFINE_STRUCT(MaterialRecord, scalar,
     (glm::vec3, albedo),                 ///< base colour
@@ -100,20 +96,11 @@ PROCEDURAY_DEFINE_STRUCT(MaterialRecord, scalar,
     (float, shininess),                  ///< Phong exponent (>= 1)
     (std::uint32_t, object_id));         ///< ObjectId, for the object-id view
 
-/// What mandelbulb.rint's distance reads besides the point: its marcher's field (marching/marcher.glsl).
-PROCEDURAY_DEFINE_STRUCT(BulbField, scalar,
-    (std::uint32_t, iterations));        ///< the animated count (mandelbulb_animated_iterations)
-/// What julia.rint's distance reads besides the point.
-PROCEDURAY_DEFINE_STRUCT(JuliaField, scalar,
-    (glm::vec4, c),                      ///< the animated constant (julia_animated_c)
-    (std::uint32_t, iterations),         ///< from the knobs (by distance, maybe)
-    (pr::CutPlanes, cuts));              ///< SceneConstants::julia_cuts
-
-/// The shader compatibility layer: each struct in its category (std::variant alternatives). The
-/// fields are values the intersection shaders build from the constants: root components.
-using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>,
-                                      pr::RootComponent<SceneConstants, BulbField, JuliaField>,
-                                      pr::RootArguments<MaterialRecord>, pr::Attributes<ProceduralHit>>;
+/// The shader compatibility layer: each struct in its category (std::variant alternatives). Every
+/// procedural object reports pr::FieldHit (object-space normal, evaluations): the fractals' generated
+/// intersections and pacman.rint alike, so one shade.rchit shades them all.
+using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>, pr::RootComponent<SceneConstants>,
+                                      pr::RootArguments<MaterialRecord>, pr::Attributes<pr::FieldHit>>;
 
 /// Local AABBs: Pac-man is the unit sphere; the Julia set (c near (-0.2, 0.6, 0.2, 0.2), within
 /// about 1.2 of the origin, lowest y about -1.02) and the Mandelbulb (within about 1.07) fit in
@@ -163,7 +150,7 @@ inline void validate_knobs(const SceneConstants& c) {
 
 /// The plane cutting the Julia set (object space; keeps dot(xyz, p) <= w): normalize(0.3, 0.3, 1)
 /// to five digits, removing the front so the camera looks at the slice through the set. Data:
-/// julia.rint reads SceneConstants::julia_cuts, and the reference (reference_objects.hpp) this.
+/// the Julia field reads SceneConstants::julia_cuts, and the reference (reference_objects.hpp) this.
 inline const glm::vec4 julia_cut{0.27617f, 0.27617f, 0.92057f, 0.1f};
 /// The Pac-men's mouth half angle (radians, about 34 degrees): data as well (pacman.rint reads
 /// SceneConstants::pacman_mouth).

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "cli.hpp"
+#include "set_constants.hpp"
 
 #include <proceduray/image/png.hpp>
 #include <proceduray/scene/sbt_printer.hpp>
@@ -79,9 +80,9 @@ int run_scene(int argc, char** argv, const char* program, Options defaults, proc
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
     Scene scene;
     proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options(o.cache));
-    renderer.set(slot, constants(o, 0u));
+    set_constants(renderer, slot, constants(o, 0u));
     print_build(ctx, renderer);
-    const Run run = run_frames(renderer, o, [&](std::uint32_t f) { renderer.set(slot, constants(o, f)); });
+    const Run run = run_frames(renderer, o, [&](std::uint32_t f) { set_constants(renderer, slot, constants(o, f)); });
     print_run(run, o);
     std::printf("%s", proceduray::format_sbt(renderer.plan(), renderer.sbt().layout()).c_str());
     write_last(run, o);

@@ -4,6 +4,7 @@
 // interval CSG, misses by a slab test written here; and against the float sphere tracer
 // (sphere_trace.glsl with marching/field.glsl's settings, the paper's defaults) run in C++.
 #include "test_knobs.hpp"
+#include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/reference.hpp"
 
 namespace paper_reference_test {
@@ -132,9 +133,13 @@ std::string read(const std::string& path) {
 
 TEST_CASE("paper reference: the cut plane and the mouth are data the shaders and the reference share") {
   const std::string dir = std::string(PROCEDURAY_EXAMPLES_DIR) + "/02_paper_scene/shaders/";
-  // The cut is data: julia.rint reads it from the uniform, and the reference from the same C++ value.
-  CHECK(read(dir + "julia.rint").find("constants.julia_cuts") != std::string::npos);
-  CHECK(read(dir + "julia.rint").find("0.27617") == std::string::npos);
+  // The cut is data: the Julia field takes it from the uniform (a parameter), and the reference
+  // from the same C++ value.
+  bool cut_parameter = false;
+  for (const auto& p : paper::PaperScene{}.fields()[0].parameters) cut_parameter = cut_parameter || p.member == "julia_cuts";
+  CHECK(cut_parameter);
+  CHECK(read(dir + "fractals.glsl").find("cuts.plane[0]") != std::string::npos);
+  CHECK(read(dir + "fractals.glsl").find("0.27617") == std::string::npos);
   const paper::SceneConstants defaults = test_knobs::pinned(paper::default_constants(64, 48, 0.0f));
   CHECK(defaults.julia_cuts.count == 1u);
   CHECK(glm::dvec4(defaults.julia_cuts.plane[0]) == paper::julia_cut_plane);

@@ -32,7 +32,7 @@ struct Measured {
 Measured measure_paper(const vk::Context& ctx, paper::SceneConstants constants) {
   const paper::PaperScene scene(paper::accuracy_outputs);
   vk::Renderer renderer(ctx, scene, scene.renderer_options());
-  renderer.set(paper::constants_slot, constants);
+  paper::set_frame(renderer, constants);
   const vk::Frame f = renderer.render(width, height);
   Measured m;
   m.samples = accuracy::samples_from(std::size_t{width} * height, f.outputs.t, f.outputs.normal, f.outputs.steps, f.outputs.flags);
@@ -111,7 +111,7 @@ TEST_CASE("paper accuracy: outputs do not change the colour image") {
   const Measured with = measure_paper(t.ctx, c);
   const paper::PaperScene plain;
   vk::Renderer renderer(t.ctx, plain, plain.renderer_options());
-  renderer.set(paper::constants_slot, c);
+  paper::set_frame(renderer, c);
   const vk::Frame without = renderer.render(width, height);
   CHECK(without.outputs.t.empty());
   CHECK(with.rgba == without.rgba);

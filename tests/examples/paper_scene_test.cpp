@@ -31,7 +31,7 @@ struct Paper {
   vk::Frame render(float time, std::uint32_t flags) {
     paper::SceneConstants c = paper::default_constants(width, height, time);
     c.flags = flags;
-    renderer.set(paper::constants_slot, c);
+    paper::set_frame(renderer, c);
     return renderer.render(width, height);
   }
 };
@@ -172,7 +172,7 @@ TEST_CASE("paper scene plan equals the recorded groups records and bytes") {
       {ShaderStage::raygen, "raygen.rgen"},        {ShaderStage::miss, "radiance.rmiss"},
       {ShaderStage::miss, "shadow.rmiss"},         {ShaderStage::closest_hit, "plane.rchit"},
       {ShaderStage::closest_hit, "shade.rchit"},   {ShaderStage::intersection, "pacman.rint"},
-      {ShaderStage::intersection, "julia.rint"},   {ShaderStage::intersection, "mandelbulb.rint"}};
+      {ShaderStage::intersection, "julia.field.rint"},   {ShaderStage::intersection, "mandelbulb.field.rint"}};
   REQUIRE(pipeline.stages.size() == stages.size());
   for (std::size_t s = 0; s < stages.size(); ++s) {
     CHECK(pipeline.stages[s].stage == stages[s].first);
@@ -181,7 +181,7 @@ TEST_CASE("paper scene plan equals the recorded groups records and bytes") {
   CHECK(pipeline.max_recursion_depth == paper::max_depth_limit + 1);
   CHECK(pipeline.recursion_depth_declared);
   CHECK(pipeline.max_payload_size == sizeof(paper::RadiancePayload));
-  CHECK(pipeline.max_attribute_size == sizeof(paper::ProceduralHit));
+  CHECK(pipeline.max_attribute_size == sizeof(FieldHit));
   CHECK(pipeline.max_root_arguments_size == std::array<std::uint32_t, 4>{0, 0, sizeof(paper::MaterialRecord), 0});
 
   // Hit records: the plane's shared block, one block per Pac-man (each has its own material),
@@ -306,7 +306,7 @@ TEST_CASE("paper scene knobs a march cannot survive are refused when set, naming
                        doctest::Contains("'constants'.knobs[4]: iterations 1048576 is past 64"), UsageError);
   // A refused value left the last good one in place: the frame is the default scene's.
   c.knobs[paper::julia_id].iterations = 10;
-  p.renderer.set(paper::constants_slot, c);
+  paper::set_frame(p.renderer, c);
   const vk::Frame ids = p.render(0.0f, paper::flag_object_ids);
   CHECK(at(ids, pixel_of(paper::mandelbulb_placement.translation)).r == paper::mandelbulb_id);
   CHECK(t.ctx.validation_messages().empty());

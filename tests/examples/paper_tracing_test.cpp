@@ -23,7 +23,7 @@ std::vector<std::uint8_t> render(const vk::Context& ctx, const paper::PaperScene
   vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::SceneConstants c = paper::default_constants(width, height, 0.0f);
   c.max_depth = max_depth;
-  renderer.set(paper::constants_slot, c);
+  paper::set_frame(renderer, c);
   return renderer.render(width, height).rgba;
 }
 

@@ -12,6 +12,7 @@
 // ray's: evaluations per ray, a cost that does not depend on the machine.
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/accuracy.hpp"
+#include "common/set_constants.hpp"
 #include "02_paper_scene/reference.hpp"
 #include "03_d3d12_scene/accuracy.hpp"
 
@@ -92,7 +93,7 @@ std::pair<proceduray::vk::Frame, std::vector<acc::Sample>> render(proceduray::vk
                                                                   proceduray::UniformSlot<Constants> slot,
                                                                   const Constants& constants, unsigned width,
                                                                   unsigned height) {
-  renderer.set(slot, constants);
+  examples::set_constants(renderer, slot, constants);
   renderer.warm_up();
   proceduray::vk::Frame frame = renderer.render(width, height);
   std::vector<acc::Sample> samples = acc::samples_from(std::size_t{width} * height, frame.outputs.t, frame.outputs.normal,

@@ -249,7 +249,7 @@ struct View {
 template <class Constants>
 double time_frames(pr::vk::Renderer& r, pr::UniformSlot<Constants> slot, const Constants& c, const Options& o,
                    unsigned w, unsigned h) {
-  r.set(slot, c);
+  examples::set_constants(r, slot, c);
   for (unsigned i = 0; i < o.warmup; ++i) r.render(w, h, false);
   std::vector<double> ms;
   for (unsigned i = 0; i < o.frames; ++i) ms.push_back(r.render(w, h, false).trace_ms);
@@ -261,7 +261,7 @@ template <class Constants, class Truth, class Seen, class Measure>
 std::map<std::uint32_t, ObjectResult> measure(pr::vk::Renderer& r, pr::UniformSlot<Constants> slot, const Constants& c,
                                               const Truth& truth, unsigned w, unsigned h,
                                               const std::vector<std::uint32_t>& ids, Seen seen_of, Measure measure_of) {
-  r.set(slot, c);
+  examples::set_constants(r, slot, c);
   const pr::vk::Frame f = r.render(w, h);
   const std::vector<acc::Sample> samples =
       acc::samples_from(std::size_t{w} * h, f.outputs.t, f.outputs.normal, f.outputs.steps, f.outputs.flags);

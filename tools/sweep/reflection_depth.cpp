@@ -68,8 +68,8 @@ int main(int argc, char** argv) {
       paper::SceneConstants c = paper::default_constants(width, height, 0.0f);
       c.max_depth = r + 1;
       c.min_weight = 0.0f;
-      a.set(paper::constants_slot, c);
-      b.set(paper::constants_slot, c);
+      paper::set_frame(a, c);
+      paper::set_frame(b, c);
       for (unsigned i = 0; i < warmup; ++i) {
         a.render(width, height, false);
         b.render(width, height, false);
