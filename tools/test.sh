@@ -44,6 +44,15 @@ if want cmake; then
   env -u PROCEDURAY_SHADER_DIR -u PROCEDURAY_INCLUDE_DIR "$prefix/bin/proceduray-field" measure \
     --sdf "$root/tests/vk/shaders/fields/ball.glsl" --exact --size 16x12 --device cpu --validation \
     --cache "$out/field-cache-installed" | grep -q "^wrong_surface"
+  # The measuring tools, installed: a user's field, and an example scene from the prefix's shaders.
+  env -u PROCEDURAY_SHADER_DIR -u PROCEDURAY_INCLUDE_DIR -u PROCEDURAY_EXAMPLES_DIR "$prefix/bin/proceduray_accuracy" \
+    --sdf "$root/tests/vk/shaders/fields/ball.glsl" --exact --size 16x12 --device cpu \
+    --cache "$out/field-cache-installed" > "$out/installed-accuracy-field.txt"
+  grep -q "^wrong_surface" "$out/installed-accuracy-field.txt"
+  env -u PROCEDURAY_SHADER_DIR -u PROCEDURAY_EXAMPLES_DIR "$prefix/bin/proceduray_accuracy" --scene d3d12 \
+    --size 16x12 --device cpu > "$out/installed-accuracy-d3d12.txt"
+  grep -q "depth_px_median" "$out/installed-accuracy-d3d12.txt"
+  test -x "$prefix/bin/proceduray_sweep"
   cmake -S "$root/tests/consumer" -B "$out/consumer-cmake" -G Ninja -DCMAKE_PREFIX_PATH="$out/prefix"
   cmake --build "$out/consumer-cmake"
   "$out/consumer-cmake/consumer" "$out/consumer-cmake.png"

@@ -7,12 +7,14 @@
 //   proceduray_accuracy --size 320x240 --device cpu --csv paper.csv
 //   proceduray_accuracy --scene d3d12 --size 320x240 --device cpu
 //   proceduray_accuracy --device gpu --steps 512 --threshold 0.25 --csv sweep.csv --append
+//   proceduray_accuracy --sdf gyroid.glsl --lipschitz 1.75 --size 1920x1080 --knob method=relaxed   (your field)
 //
 // Secondary rays (shadows, reflections) are off, so the steps a pixel reports are its camera
 // ray's: evaluations per ray, a cost that does not depend on the machine.
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/accuracy.hpp"
 #include "common/set_constants.hpp"
+#include "field/field_tool.hpp"
 #include "02_paper_scene/reference.hpp"
 #include "03_d3d12_scene/accuracy.hpp"
 
@@ -252,6 +254,8 @@ int run(const Knobs& k) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A user's field (--sdf file.glsl --aabb ... --lipschitz ...): vk::FieldMeter against its own truth.
+  if (field_tool::wants_field(argc, argv)) return field_tool::measure_main(argc, argv, "proceduray_accuracy");
   Knobs k;
   CLI::App app{"Renders a scene with per-pixel outputs and measures it against a double-precision ground truth"};
   app.add_option("--scene", k.scene, "paper (the report's) or d3d12 (the D3D12 sample's)")

@@ -7,6 +7,7 @@
 //   proceduray_sweep --scene paper --objects mandelbulb --vary threshold=0.125,0.25,0.5,1
 //                    --vary method=sphere,relaxed --set relaxation=1.5 --csv bulb.csv   (one line)
 //   proceduray_sweep --scene d3d12 --alone --objects cog,metaballs --preset methods --shard 1/4 --csv part1.csv
+//   proceduray_sweep --sdf gyroid.glsl --lipschitz 1.75 --size 1920x1080 --csv gyroid.csv   (your field: a calibration table)
 //
 // A point sets knobs on every selected object that accepts them (march/knobs.hpp's validate);
 // an object that does not (segment tracing on an SDF) keeps its defaults and gets no row for
@@ -19,6 +20,7 @@
 // The reference uses each object's default iterations: fewer iterations show as error.
 #include "02_paper_scene/accuracy.hpp"
 #include "common/run.hpp"
+#include "field/field_tool.hpp"
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/reference.hpp"
 #include "03_d3d12_scene/accuracy.hpp"
@@ -514,6 +516,8 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A user's field (--sdf file.glsl --aabb ... --lipschitz ... --csv table.csv): vk::calibrate.
+  if (field_tool::wants_field(argc, argv)) return field_tool::calibrate_main(argc, argv, "proceduray_sweep");
   Options o;
   CLI::App app{"Sweeps march knobs over a scene: GPU time, evaluations per ray and accuracy against a ground truth"};
   app.add_option("--scene", o.scene, "paper (the report's) or d3d12 (the D3D12 sample's)")
