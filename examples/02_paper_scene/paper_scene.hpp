@@ -59,7 +59,8 @@ struct PaperScene : pr::Scene<Interface> {
     pr::add_distance_field(*this, "julia", {.glsl = "fractals.glsl", .function = "julia_field", .aabb = julia_aabb,
                                             .lipschitz = 1.0f, .iterations = capabilities(julia_id).defaults.iterations,
                                             .parameters = {time, pr::field_parameter(constants_slot, &SceneConstants::julia_cuts)},
-                                            .knobs = capabilities(julia_id).defaults, .instances = pr::transforms(std::vector<pr::Placement>{julia_placement}),
+                                            .knobs = capabilities(julia_id).defaults, .normal = "julia_field_normal",
+                                            .instances = pr::transforms(std::vector<pr::Placement>{julia_placement}),
                                             .closest_hit = {{radiance, "shade.rchit"}}}, material, {julia_material});
     pr::add_distance_field(*this, "mandelbulb", {.glsl = "fractals.glsl", .function = "mandelbulb_field",
                                                  .aabb = mandelbulb_aabb, .lipschitz = 1.0f,

@@ -127,4 +127,18 @@ TEST_CASE("field: the generated shader includes the file, calls the function and
   const std::string b = field_stage_source(bulb, 0);
   CHECK(has(b, "return bulb_de(p, iterations);"));
   CHECK(has(b, "const float proceduray_field0_lipschitz = 1.0;"));
+  CHECK(!has(b, "bulb_normal"));
+  bulb.normal = "bulb_normal";  // the user's exact normal first, differences where it declines
+  CHECK(has(field_stage_source(bulb, 0), "if (found && !bulb_normal(p, iterations, n)) n = proceduray_march0_normal("));
+}
+
+TEST_CASE("field: a normal function needs a name of its own") {
+  DistanceField f = gyroid();
+  f.normal = "gyroid_normal";
+  CHECK(refusal(f).empty());
+  for (const char* bad : {"2n", "gl_Normal", "proceduray_n", "gyroid_distance", "in"}) {
+    f.normal = bad;
+    CAPTURE(bad);
+    CHECK(has(refusal(f), std::string("normal function '") + bad + "' is no GLSL function name of its own"));
+  }
 }

@@ -43,7 +43,7 @@ struct FieldScene {
   pr::GeometryId object;
 
   explicit FieldScene(const std::string& glsl, const std::string& intersection = {}, float lipschitz = 0.0f,
-                      std::vector<pr::FieldParameter> parameters = {}) {
+                      std::vector<pr::FieldParameter> parameters = {}, std::string normal = {}) {
     const auto primary = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
     scene.set_global_signature(pr::default_global_signature({constants_slot}));
     scene.add_raygen("field.rgen");
@@ -56,7 +56,7 @@ struct FieldScene {
     object = pr::add_distance_field(scene, "ball", {.glsl = glsl, .function = glsl.substr(0, glsl.find('.')) + "_distance",
                                                     .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)},
                                                     .lipschitz = lipschitz, .exact = lipschitz == 0.0f,
-                                                    .parameters = std::move(parameters),
+                                                    .parameters = std::move(parameters), .normal = std::move(normal),
                                                     .closest_hit = {{primary, "shade.rchit"}}});
   }
 };
@@ -178,4 +178,21 @@ TEST_CASE("a distance field's parameters come from the scene's uniform, frame by
   CHECK(double(large) / double(small) > 2.8);
   CHECK(double(large) / double(small) < 3.8);
   CHECK(a.plan().fields()[0].field.parameters[0].member == "radius");
+}
+
+TEST_CASE("a distance field's normal function gives the normal where it says it knows it") {
+  TestContext t;
+  FieldScene facing("facing_ball.glsl", "", 0.0f, {}, "facing_ball_normal"), ball("ball.glsl");
+  pr::vk::Renderer a(t.ctx, facing.scene, options()), b(t.ctx, ball.scene, options());
+  const auto ia = render(a), ib = render(b);
+  // The camera sees the ball's front (z > 0): every hit takes the function's +z, colour (128, 128, 255).
+  std::size_t hits = 0, facing_colour = 0;
+  for (std::size_t i = 0; i < ia.size(); i += 4) {
+    if ((ia[i] | ia[i + 1] | ia[i + 2]) == 0) continue;
+    ++hits;
+    facing_colour += std::abs(int(ia[i]) - 128) <= 1 && std::abs(int(ia[i + 1]) - 128) <= 1 && ia[i + 2] >= 254;
+  }
+  CHECK(hits == covered(ib));                      // the same march, the same silhouette
+  CHECK(facing_colour == hits);
+  CHECK(ia != ib);                                 // the plain ball's differences vary over the disc
 }

@@ -47,6 +47,7 @@ struct DistanceFieldDesc {
   std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count (a knob)
   std::vector<FieldParameter> parameters;  ///< uniform members passed after p (and iterations): field_parameter
   std::optional<MarchKnobs> knobs;         ///< starting knobs (checked); none: field_capabilities' defaults
+  std::string normal;                      ///< bool f(p[, iterations][, parameters], out n): exact where true
   std::vector<InstanceTransform> instances{identity_transform()};  ///< where it stands
   std::vector<RayShader> closest_hit;  ///< closest-hit shaders; a ray type not listed runs none
   std::vector<RayShader> any_hit;      ///< any-hit shaders; a ray type not listed runs none
@@ -62,7 +63,7 @@ inline constexpr bool reports_field_hits = Interface::AttributesSet::template co
 inline std::pair<DistanceField, ObjectDesc> field_object(const std::string& id, DistanceFieldDesc desc) {
   DistanceField f{id,          std::move(desc.glsl), std::move(desc.function), desc.aabb,
                   desc.lipschitz, desc.exact,         desc.iterations,          std::move(desc.parameters),
-                  desc.knobs};
+                  desc.knobs,   std::move(desc.normal)};
   validate(f, "add_distance_field");
   ObjectDesc object{.geometry = GeometryDesc::procedural({f.aabb}, std::move(desc.instances)),
                     .intersection = field_stage_name(f), .closest_hit = std::move(desc.closest_hit),

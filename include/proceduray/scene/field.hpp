@@ -11,7 +11,11 @@
 //
 // The GLSL file holds `pr_real <function>(pr_real3 p)` (a fractal: `(pr_real3 p, uint iterations)`),
 // then one argument per declared parameter (field_parameter: a member of a scene uniform, read
-// per frame, such as an animation's time), in the portable subset of shader/glsl_cpp.hpp, so the same file compiles as C++ for the ground
+// per frame, such as an animation's time), in the portable subset. A field whose normal is known
+// exactly somewhere (a cut face, where differences of max(f, plane) tilt) names a function
+// `bool <normal>(pr_real3 p[, uint iterations][, parameters...], PROCEDURAY_OUT(pr_real3) n)`:
+// true where n (unit, outward, object space) is exact; elsewhere the library takes differences.
+// All of it of shader/glsl_cpp.hpp, so the same file compiles as C++ for the ground
 // truth. f(p) <= 0 inside; |f(p) - f(q)| <= L |p - q| with L the declared bound (1 when exact).
 // The generated shader passes L to march_settings: lipschitz and relaxed steps are f / L, and
 // plain sphere steps (which take the distance as it is, assuming L = 1) are refused where L > 1.
@@ -101,13 +105,14 @@ struct DistanceField {
   std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count
   std::vector<FieldParameter> parameters;  ///< passed after p (and iterations), in order
   std::optional<MarchKnobs> knobs;         ///< its starting knobs; none: field_capabilities' defaults
+  std::string normal;                      ///< a function giving the exact normal where it knows it; empty: none
   friend bool operator==(const DistanceField& a, const DistanceField& b) {
     const auto same_knobs = [](const std::optional<MarchKnobs>& x, const std::optional<MarchKnobs>& y) {
       return x.has_value() == y.has_value() && (!x || std::memcmp(&*x, &*y, sizeof(MarchKnobs)) == 0);
     };
     return a.id == b.id && a.glsl == b.glsl && a.function == b.function && a.aabb == b.aabb &&
            a.lipschitz == b.lipschitz && a.exact == b.exact && a.iterations == b.iterations &&
-           a.parameters == b.parameters && same_knobs(a.knobs, b.knobs);
+           a.parameters == b.parameters && same_knobs(a.knobs, b.knobs) && a.normal == b.normal;
   }
 };
 

@@ -145,7 +145,7 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
   m_geometry = add_distance_field(scene, m_field.id,
                                   {.glsl = m_field.glsl, .function = m_field.function, .aabb = m_field.aabb,
                                    .lipschitz = m_field.exact ? 0.0f : m_field.lipschitz, .exact = m_field.exact,
-                                   .iterations = m_field.iterations,
+                                   .iterations = m_field.iterations, .normal = m_field.normal,
                                    .closest_hit = {{ray, "measure/measure.rchit"}}});
   if (const auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
   m_renderer = std::make_unique<Renderer>(ctx, scene, RendererOptions{.shader_dirs = dirs});
