@@ -87,8 +87,8 @@ TEST_CASE("a defined struct has the field list of the same struct registered by 
   check_same_fields(type_ops<DefinedScalar>, type_ops<shader_test::ScalarMix>);
   static_assert(type_ops<Defined430>.glsl_name == "Defined430");
   static_assert(type_ops<Defined430>.fields[2].type->element == &type_ops<Light>);
-  CHECK(sizeof(Defined430) == sizeof(shader_test::Material430));
-  CHECK(sizeof(DefinedScalar) == sizeof(shader_test::ScalarMix));
+  static_assert(sizeof(Defined430) == sizeof(shader_test::Material430));
+  static_assert(sizeof(DefinedScalar) == sizeof(shader_test::ScalarMix));
 }
 
 TEST_CASE("a defined struct generates the GLSL of the same struct registered by hand") {
@@ -107,7 +107,7 @@ TEST_CASE("a defined struct is a plain aggregate with its members in order") {
   static_assert(std::is_same_v<decltype(DefinedScalar::grid), glm::uvec3[2][2]>);
   constexpr Outer o{{7u}, 0.5f};
   static_assert(o.inner.occluded == 7u && o.weight == 0.5f);
-  CHECK(offsetof(Outer, weight) == 4);
+  static_assert(offsetof(Outer, weight) == 4);
   static_assert(type_ops<Outer>.fields[1].offset == 4);
 }
 
@@ -115,5 +115,5 @@ TEST_CASE("a defined struct takes 32 members") {
   static_assert(type_ops<Widest>.field_count == 32);
   static_assert(type_ops<Widest>.fields[31].name == "m31");
   static_assert(type_ops<Widest>.fields[31].offset == 31 * sizeof(float));
-  CHECK(sizeof(Widest) == 32 * sizeof(float));
+  static_assert(sizeof(Widest) == 32 * sizeof(float));
 }

@@ -26,8 +26,8 @@ TEST_CASE("lights the GLSL struct is the C++ layout: lights.glsl reads kind, pos
   CHECK(glsl.find("struct Light {") != std::string::npos);
   CHECK(glsl.find("Light light[4];") != std::string::npos);
   CHECK(glsl.find("uint count;") != std::string::npos);
-  CHECK(sizeof(Light) == 32);  // scalar: vec3 + uint + vec3 + float
-  CHECK(sizeof(Lights) == 4 * 32 + 16);
+  static_assert(sizeof(Light) == 32);  // scalar: vec3 + uint + vec3 + float
+  static_assert(sizeof(Lights) == 4 * 32 + 16);
 }
 
 TEST_CASE("lights bad input: none, too many, NaN, zero direction, negative colour, unknown kind") {

@@ -89,13 +89,13 @@ TEST_CASE("paper types fit the pipeline limits") {
   const proceduray::PipelinePlan& plan = paper_plan().pipeline();
   CHECK(plan.max_attribute_size == 16);
   CHECK(plan.max_payload_size == sizeof(paper::RadiancePayload));
-  CHECK(sizeof(paper::RadiancePayload) == 88);  // colour, depth, object id, steps, weight; the iterative fields
-  CHECK(sizeof(paper::ShadowPayload) == 4);
+  static_assert(sizeof(paper::RadiancePayload) == 88);  // colour, depth, object id, steps, weight; the iterative fields
+  static_assert(sizeof(paper::ShadowPayload) == 4);
   CHECK(plan.max_root_arguments_size[2] == 48);  // a MaterialRecord per hit record
-  CHECK(sizeof(proceduray::MarchKnobs) == 14 * 4);
-  CHECK(sizeof(proceduray::CutPlanes) == 2 * 16 + 16);
+  static_assert(sizeof(proceduray::MarchKnobs) == 14 * 4);
+  static_assert(sizeof(proceduray::CutPlanes) == 2 * 16 + 16);
   // camera, light and sky, depth, flags, weight, knobs per id, the Julia set's cut planes, the mouth
-  CHECK(sizeof(paper::SceneConstants) == 80 + 4 * 11 + 4 * 3 + 6 * 14 * 4 + sizeof(proceduray::CutPlanes) + 4);
+  static_assert(sizeof(paper::SceneConstants) == 80 + 4 * 11 + 4 * 3 + 6 * 14 * 4 + sizeof(proceduray::CutPlanes) + 4);
   // Payload locations are ray indices: radiance 0, shadow 1 (the shaders' radiance_ray, shadow_ray).
   CHECK(paper_scene().ray_id<paper::RadiancePayload>("radiance").index() == 0);
   CHECK(paper_scene().ray_id<paper::ShadowPayload>("shadow").index() == 1);
