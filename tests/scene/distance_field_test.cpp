@@ -123,6 +123,31 @@ TEST_CASE("distance field: parameters are uniform members passed per frame; comp
   CHECK_THROWS_WITH_AS(field_parameter(unnamed, &Frame::time), doctest::Contains("has no GLSL name"), UsageError);
 }
 
+TEST_CASE("distance field: record parameters read the field's own hit record, of the records' type") {
+  Rays r;
+  DistanceFieldDesc d = gyroid(r.radiance);
+  d.parameters = {field_parameter(r.material, &Material::albedo), field_parameter(frame_slot, &Frame::time)};
+  add_distance_field(r.scene, "gyroid", d, r.material, {{{1, 0, 0}, 7}});
+  const Plan plan = compile(r.scene);
+  bool called = false;
+  for (const PlannedStage& s : plan.pipeline().stages) {
+    called = called || s.source.find("return gyroid_distance(p, arguments.albedo, frame.time);") != std::string::npos;
+  }
+  CHECK(called);
+  // No records at all: the parameter would read what is not there.
+  Rays none;
+  DistanceFieldDesc e = gyroid(none.radiance);
+  e.parameters = {field_parameter(none.material, &Material::id)};
+  try {
+    add_distance_field(none.scene, "gyroid", e);
+    FAIL("a record parameter without records was accepted");
+  } catch (const UsageError& err) {
+    const std::string m = err.what();
+    CHECK(m.find("arguments.id of Material records, but its records are none") != std::string::npos);
+  }
+  CHECK(none.scene.fields().empty());
+}
+
 TEST_CASE("distance field: starting knobs are the field's defaults, checked when declared") {
   Rays r;
   DistanceFieldDesc d = gyroid(r.radiance);

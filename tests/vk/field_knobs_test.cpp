@@ -196,3 +196,40 @@ TEST_CASE("a distance field's normal function gives the normal where it says it 
   CHECK(facing_colour == hits);
   CHECK(ia != ib);                                 // the plain ball's differences vary over the disc
 }
+
+namespace {
+struct Size {
+  float radius;
+};
+PROCEDURAY_STRUCT(Size, scalar, radius);
+using SizedInterface = pr::ShaderInterface<pr::Payload<Colour>, pr::RootComponent<Constants>, pr::RootArguments<Size>,
+                                           pr::Attributes<pr::FieldHit>>;
+}  // namespace
+
+TEST_CASE("a distance field's record parameters give each instance block its own value") {
+  TestContext t;
+  pr::Scene<SizedInterface> scene;
+  const auto primary = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
+  scene.set_global_signature(pr::default_global_signature({constants_slot}));
+  scene.add_raygen("field.rgen");
+  const auto size = scene.add_local_signature<Size>("size");
+  // Two balls of one field, left and right of the view's centre, radius 0.4 and 0.8 from their records.
+  const auto at = [](float x) { return pr::instance_transform(glm::translate(glm::mat4(1.0f), {x, 0.0f, 0.0f})); };
+  pr::add_distance_field(scene, "ball", {.glsl = "sized_ball.glsl", .function = "sized_ball_distance", .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)},
+                                         .exact = true, .parameters = {pr::field_parameter(size, &Size::radius)},
+                                         .instances = {at(-1.0f), at(1.0f)}, .closest_hit = {{primary, "shade.rchit"}}},
+                         size, {{0.4f}, {0.8f}});
+  pr::vk::Renderer r(t.ctx, scene, options());
+  const auto image = render(r);
+  std::size_t left = 0, right = 0;
+  for (std::uint32_t y = 0; y < height; ++y) {
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const std::size_t i = 4 * (std::size_t{y} * width + x);
+      if ((image[i] | image[i + 1] | image[i + 2]) != 0) (x < width / 2 ? left : right) += 1;
+    }
+  }
+  CHECK(left > 20);
+  // Areas as the radii squared (0.25), give or take the perspective of balls off the axis.
+  CHECK(double(left) / double(right) > 0.18);
+  CHECK(double(left) / double(right) < 0.34);
+}

@@ -24,12 +24,13 @@ PROCEDURAY_DECL void PlanBuilder::outputs() {
 }
 
 PROCEDURAY_DECL void PlanBuilder::check_parameter(const DistanceField& f, const FieldParameter& p) const {
+  if (p.record) return;  // add_distance_field checked the records' type
   for (const Binding& b : out.m_global->bindings) {
-    if (b.kind == BindingKind::uniform_buffer && b.name == p.uniform && b.type == p.uniform_type) return;
+    if (b.kind == BindingKind::uniform_buffer && b.name == p.block && b.type == p.block_type) return;
   }
-  throw SceneError("compile: distance field \"" + f.id + "\" takes the parameter " + p.uniform + "." + p.member +
-                   ", but the global signature declares no uniform " + std::string(p.uniform_type->glsl_name) + " " +
-                   p.uniform + "; add that UniformSlot to the global signature (set_global_signature)");
+  throw SceneError("compile: distance field \"" + f.id + "\" takes the parameter " + p.block + "." + p.member +
+                   ", but the global signature declares no uniform " + std::string(p.block_type->glsl_name) + " " +
+                   p.block + "; add that UniformSlot to the global signature (set_global_signature)");
 }
 
 PROCEDURAY_DECL void PlanBuilder::fields() {

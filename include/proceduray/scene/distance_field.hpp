@@ -45,7 +45,7 @@ struct DistanceFieldDesc {
   float lipschitz = 0.0f;        ///< |f(p) - f(q)| <= L |p - q|: required (> 0) unless exact
   bool exact = false;            ///< an exact distance (L = 1)
   std::uint32_t iterations = 0;  ///< > 0: a fractal, f(p, iterations), with this default count (a knob)
-  std::vector<FieldParameter> parameters;  ///< uniform members passed after p (and iterations): field_parameter
+  std::vector<FieldParameter> parameters;  ///< uniform or record members passed after p (and iterations): field_parameter
   std::optional<MarchKnobs> knobs;         ///< starting knobs (checked); none: field_capabilities' defaults
   std::string normal;                      ///< bool f(p[, iterations][, parameters], out n): exact where true
   std::vector<InstanceTransform> instances{identity_transform()};  ///< where it stands
@@ -59,8 +59,18 @@ namespace detail {
 template <class Interface>
 inline constexpr bool reports_field_hits = Interface::AttributesSet::template contains<FieldHit>;
 
-/// The field and the object add_distance_field registers for `desc`; checks the field.
-inline std::pair<DistanceField, ObjectDesc> field_object(const std::string& id, DistanceFieldDesc desc) {
+/// The field and the object add_distance_field registers for `desc`; checks the field, and that
+/// its record parameters read `records` (the type of its hit records; null: it has none).
+inline std::pair<DistanceField, ObjectDesc> field_object(const std::string& id, DistanceFieldDesc desc,
+                                                         const TypeOps* records) {
+  for (const FieldParameter& p : desc.parameters) {
+    if (!p.record || p.block_type == records) continue;
+    throw UsageError("add_distance_field: distance field \"" + id + "\" takes the parameter arguments." + p.member +
+                     " of " + std::string(p.block_type->glsl_name) + " records, but its records are " +
+                     (records == nullptr ? std::string("none") : std::string(records->glsl_name)) +
+                     "; pass records of that type (a LocalSignatureId<" + std::string(p.block_type->glsl_name) +
+                     ">) or make the parameter from their signature");
+  }
   DistanceField f{id,          std::move(desc.glsl), std::move(desc.function), desc.aabb,
                   desc.lipschitz, desc.exact,         desc.iterations,          std::move(desc.parameters),
                   desc.knobs,   std::move(desc.normal)};
@@ -83,7 +93,7 @@ GeometryId add_distance_field(Scene<Interface>& scene, std::string id, DistanceF
   static_assert(detail::reports_field_hits<Interface>,
                 "add_distance_field: proceduray::FieldHit (what a field's generated intersection reports) is not in "
                 "the interface's Attributes<...>: list it there");
-  auto [field, object] = detail::field_object(id, std::move(desc));
+  auto [field, object] = detail::field_object(id, std::move(desc), &type_ops<Arguments>);
   const GeometryId geometry = add_object<FieldHit>(scene, std::move(id), std::move(object), signature, std::move(records));
   scene.add_field(std::move(field));  // checked above: cannot throw now
   return geometry;
@@ -95,7 +105,7 @@ GeometryId add_distance_field(Scene<Interface>& scene, std::string id, DistanceF
   static_assert(detail::reports_field_hits<Interface>,
                 "add_distance_field: proceduray::FieldHit (what a field's generated intersection reports) is not in "
                 "the interface's Attributes<...>: list it there");
-  auto [field, object] = detail::field_object(id, std::move(desc));
+  auto [field, object] = detail::field_object(id, std::move(desc), nullptr);
   const GeometryId geometry = add_object<FieldHit>(scene, std::move(id), std::move(object));
   scene.add_field(std::move(field));
   return geometry;

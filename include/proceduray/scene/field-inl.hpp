@@ -67,8 +67,8 @@ PROCEDURAY_DECL void validate(const DistanceField& f, std::string_view op) {
          "not gl_ or proceduray_, not the distance function); set .normal to the name in " + f.glsl + " or leave it empty");
   }
   for (const FieldParameter& p : f.parameters) {
-    if (p.uniform.empty() || p.member.empty() || p.type == nullptr || p.uniform_type == nullptr) {
-      fail("has a parameter without a uniform or a member ('" + p.uniform + "." + p.member +
+    if (p.block.empty() || p.member.empty() || p.type == nullptr || p.block_type == nullptr) {
+      fail("has a parameter without a uniform or a member ('" + p.block + "." + p.member +
            "'); make each with field_parameter(slot, &Struct::member)");
     }
   }
@@ -143,7 +143,7 @@ PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint
   const std::string marcher = "proceduray_march" + n;
   // The parameters are read from their uniforms where the field is evaluated: per frame, no rebuild.
   std::string arguments = f.iterations > 0 ? "p, iterations" : "p";
-  for (const FieldParameter& p : f.parameters) arguments += ", " + p.uniform + "." + p.member;
+  for (const FieldParameter& p : f.parameters) arguments += ", " + p.block + "." + p.member;
   const std::string call = field_function(f) + "(" + arguments + ")";
   std::string s;
   s += "#version 460\n";

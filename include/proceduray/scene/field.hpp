@@ -31,6 +31,7 @@
 #include <proceduray/march/calibration.hpp>
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/scene/geometry.hpp>
+#include <proceduray/scene/ids.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/define_struct.hpp>
 
@@ -59,17 +60,38 @@ PROCEDURAY_DEFINE_STRUCT(FieldSettings, scalar,
 /// The GLSL instance name of the field settings buffer (reserved: the proceduray_ prefix).
 inline constexpr const char* field_settings_name = "proceduray_fields";
 
-/// A value a distance function takes after the point (and the iterations): a member of a uniform
-/// the scene's global signature declares, so it changes per frame with Renderer::set (an
-/// animation's time, a cut plane) and the pipeline is not rebuilt. Made by field_parameter, so
-/// the argument's type is the member's; compile() checks that the uniform is declared.
+/// A value a distance function takes after the point (and the iterations), read where the field
+/// is evaluated, so it changes without a pipeline rebuild: a member of a uniform the scene's
+/// global signature declares (per frame: an animation's time, a cut plane), or of the field's hit
+/// record (per instance block: a size, a twist). Made by field_parameter, so the argument's type
+/// is the member's; compile() checks the uniform is declared, add_distance_field that the records
+/// are of that type.
 struct FieldParameter {
-  std::string uniform;                    ///< the uniform's GLSL instance name (UniformSlot::name)
-  const TypeOps* uniform_type = nullptr;  ///< what it holds
-  std::string member;                     ///< the member passed, by name
-  const TypeOps* type = nullptr;          ///< the member's type
+  std::string block;                    ///< the uniform's GLSL instance name (UniformSlot::name), or "arguments"
+  const TypeOps* block_type = nullptr;  ///< what the uniform or the record holds
+  std::string member;                   ///< the member passed, by name
+  const TypeOps* type = nullptr;        ///< the member's type
+  bool record = false;                  ///< true: a member of the field's hit record
   friend bool operator==(const FieldParameter&, const FieldParameter&) = default;
 };
+
+namespace detail {
+/// The registered member of S that `member` points to, as a parameter read from `block`.
+template <RegisteredStruct S, class M>
+FieldParameter member_parameter(std::string block, M S::*member, bool record) {
+  const S probe{};
+  const auto offset = static_cast<std::size_t>(reinterpret_cast<const char*>(&(probe.*member)) -
+                                               reinterpret_cast<const char*>(&probe));
+  const TypeOps& s = type_ops<S>;
+  for (std::size_t i = 0; i < s.field_count; ++i) {
+    if (s.fields[i].offset == offset && s.fields[i].type == &type_ops<M>) {
+      return {std::move(block), &s, std::string(s.fields[i].name), &type_ops<M>, record};
+    }
+  }
+  throw UsageError("field_parameter: the member at byte " + std::to_string(offset) + " of " + std::string(s.glsl_name) +
+                   " is not one of its registered members; register it (PROCEDURAY_STRUCT) or pass another");
+}
+}  // namespace detail
 
 /// The parameter `slot.name.<member>`: `field_parameter(constants_slot, &Constants::time)`.
 /// Throws UsageError for a slot without a GLSL name (it is declared by hand, so no generated
@@ -81,17 +103,14 @@ FieldParameter field_parameter(const UniformSlot<S>& slot, M S::*member) {
     throw UsageError(std::string("field_parameter: the uniform of ") + std::string(type_ops<S>.glsl_name) +
                      " has no GLSL name; give its UniformSlot a .name so the generated shader can read it");
   }
-  const S probe{};
-  const auto offset = static_cast<std::size_t>(reinterpret_cast<const char*>(&(probe.*member)) -
-                                               reinterpret_cast<const char*>(&probe));
-  const TypeOps& s = type_ops<S>;
-  for (std::size_t i = 0; i < s.field_count; ++i) {
-    if (s.fields[i].offset == offset && s.fields[i].type == &type_ops<M>) {
-      return {uniform, &s, std::string(s.fields[i].name), &type_ops<M>};
-    }
-  }
-  throw UsageError("field_parameter: the member at byte " + std::to_string(offset) + " of " + std::string(s.glsl_name) +
-                   " is not one of its registered members; register it (PROCEDURAY_STRUCT) or pass another");
+  return detail::member_parameter(uniform, member, false);
+}
+
+/// The parameter `arguments.<member>` of the field's hit record (its instance block's):
+/// `field_parameter(record_signature, &Record::scale)`; the field's records must be R's.
+template <class R, class M>
+FieldParameter field_parameter(LocalSignatureId<R>, M R::*member) {
+  return detail::member_parameter("arguments", member, true);
 }
 
 /// A distance field: what add_distance_field records and compile() plans.

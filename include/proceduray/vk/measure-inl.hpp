@@ -123,7 +123,7 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
   validate(m_field, "FieldMeter");
   if (!m_field.parameters.empty()) {
     const FieldParameter& p = m_field.parameters[0];
-    throw UsageError("FieldMeter: distance field \"" + m_field.id + "\" takes parameters (" + p.uniform + "." + p.member +
+    throw UsageError("FieldMeter: distance field \"" + m_field.id + "\" takes parameters (" + p.block + "." + p.member +
                      "...) from its scene's uniforms, which the measuring scene does not have; measure a function "
                      "with the parameters' values fixed (a wrapper in the GLSL file)");
   }
