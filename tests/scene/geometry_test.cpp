@@ -45,6 +45,13 @@ TEST_CASE("geometry instance transforms match VkTransformMatrixKHR rows") {
   CHECK(identity_transform()[2][3] == 0.0f);
 }
 
+TEST_CASE("geometry AABBs (proceduray/aabb.hpp): the default is the unit box; equality compares both corners") {
+  static_assert(std::is_aggregate_v<Aabb>);
+  CHECK(Aabb{} == Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)});
+  CHECK(Aabb{} != Aabb{glm::vec3(-1.0f), glm::vec3(1.0f, 1.0f, 2.0f)});
+  CHECK(Aabb{} != Aabb{glm::vec3(0.0f), glm::vec3(1.0f)});
+}
+
 TEST_CASE("geometry bad AABBs throw with the bounds and the fix") {
   CHECK_NOTHROW(validate(Aabb{glm::vec3(-1), glm::vec3(1)}, "box"));
   CHECK_NOTHROW(validate(Aabb{glm::vec3(2), glm::vec3(2)}, "flat box"));

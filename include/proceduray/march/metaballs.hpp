@@ -19,7 +19,7 @@
 #include <proceduray/config.hpp>
 
 #include <proceduray/error.hpp>
-#include <proceduray/scene/geometry.hpp>
+#include <proceduray/aabb.hpp>
 #include <proceduray/shader/field_list.hpp>
 
 #include <glm/glm.hpp>

@@ -17,6 +17,7 @@
 //                     and indices, BLAS rebuild when the topology changes, then a TLAS update
 #pragma once
 
+#include <proceduray/aabb.hpp>
 #include <proceduray/config.hpp>
 
 #include <algorithm>
@@ -44,13 +45,6 @@ PROCEDURAY_DECL const char* to_string(GeometryKind kind);
 enum class UpdatePolicy : std::uint32_t { Static = 0, DynamicTransform = 1, DynamicGeometry = 2 };
 
 PROCEDURAY_DECL const char* to_string(UpdatePolicy policy);
-
-/// An axis-aligned box in BLAS space.
-struct Aabb {
-  glm::vec3 min{-1.0f};  ///< default: the unit box's corner (-1, -1, -1)
-  glm::vec3 max{1.0f};   ///< default: (1, 1, 1)
-  friend bool operator==(const Aabb&, const Aabb&) = default;
-};
 
 /// A triangle mesh: positions and a triangle list.
 struct TriangleMesh {

@@ -1,0 +1,5 @@
+#include <proceduray/aabb.hpp>
+// @declarations
+void usage() {
+  // @statements
+}
