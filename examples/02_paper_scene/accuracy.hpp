@@ -58,7 +58,8 @@ inline std::vector<ObjectId> device_objects(const pr::Plan& plan, std::span<cons
 inline pr::accuracy::Metrics measure_object(const ReferenceImage& truth, std::span<const pr::accuracy::Sample> samples,
                                             std::span<const ObjectId> seen, ObjectId object) {
   return examples::measure_object(truth.frame(), std::span<const pr::accuracy::Reference>(truth.pixels),
-                                  std::span<const ObjectId>(truth.objects), samples, seen, object);
+                                  std::span<const ObjectId>(truth.objects), samples, seen, object,
+                                  std::span<const std::uint32_t>(truth.weights), truth.stride);
 }
 
 }  // namespace paper

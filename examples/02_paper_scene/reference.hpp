@@ -33,6 +33,7 @@
 
 #include <proceduray/accuracy/metrics.hpp>
 #include <proceduray/accuracy/nearest.hpp>
+#include <proceduray/accuracy/stratified.hpp>
 
 #include <array>
 #include <cstdint>
@@ -73,6 +74,11 @@ struct ReferenceImage {
   std::array<ObjectCost, 6> costs{};        ///< by ObjectId (sky_id's stays 0)
   std::uint64_t evaluations = 0;            ///< the sum of costs[].evaluations: every search's Result::evaluations
   std::uint64_t undetermined = 0;           ///< pixels whose reference is Outcome::undetermined
+  /// A stratified reference (stratified_reference_image): how many pixels each pixel stands for
+  /// (0: not traced; its object the last traced one's to its left); empty: every pixel traced.
+  std::vector<std::uint32_t> weights;
+  std::uint32_t stride = 1;                 ///< one pixel in this many traced outside the band
+  std::size_t traced = 0;                   ///< pixels traced
 
   /// The frame measure() takes for these pixels.
   acc::Frame frame() const { return {.width = width, .height = height, .pixel_angle = pixel_angle}; }
@@ -163,6 +169,50 @@ inline ReferenceImage reference_image(const SceneConstants& constants, std::uint
     out.undetermined += t.undetermined;
   }
   for (const ObjectCost& c : out.costs) out.evaluations += c.evaluations;
+  return out;
+}
+
+/// The reference on a stratified sample (accuracy/stratified.hpp): every pixel near a silhouette
+/// or a depth jump, and one in `stride` elsewhere, standing for `stride` pixels (weights), on
+/// every core. Costs are not counted (costs, evaluations stay 0). stride 1: reference_image's
+/// pixels and objects, every weight 1. Throws what reference_image throws, and UsageError for a
+/// stride of 0.
+inline ReferenceImage stratified_reference_image(const SceneConstants& constants, std::uint32_t width,
+                                                 std::uint32_t height, std::uint32_t stride,
+                                                 const ReferenceOptions& options = {}) {
+  if (width == 0 || height == 0) return reference_image(constants, width, height, options);  // its error
+  const ReferenceScene s = reference_scene(constants, options);
+  ReferenceImage out;
+  out.width = width;
+  out.height = height;
+  out.pixel_angle = s.pixel_angle;
+  out.objects.assign(static_cast<std::size_t>(width) * height, sky_id);
+  std::vector<std::uint8_t> known(out.objects.size(), 0);
+  acc::StratifiedTruth truth = acc::stratified_truth(out.frame(), stride, 1, [&](std::uint32_t x, std::uint32_t y) {
+    const glm::dvec3 dir = camera_direction(s, x, y, width, height);
+    const RayReference r = reference_ray(s, dir);
+    const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+    out.objects[pixel] = r.object;  // this pixel's only: no other trace writes it
+    known[pixel] = 1;
+    return r.reference;
+  });
+  // A pixel not traced takes its block's outcome (stratified.hpp) and, for one object's view of
+  // the classes, the object of the last traced pixel to its left (blocks off the band hold one).
+  for (std::uint32_t y = 0; y < height; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * width;
+    ObjectId last = sky_id;
+    for (std::uint32_t x = 0; x < width; ++x) {
+      if (known[row + x]) last = out.objects[row + x];
+      else out.objects[row + x] = last;
+    }
+  }
+  out.pixels = std::move(truth.pixels);
+  out.weights = std::move(truth.weight);
+  out.stride = truth.stride;
+  out.traced = truth.traced;
+  for (std::size_t i = 0; i < out.pixels.size(); ++i) {
+    out.undetermined += out.weights[i] > 0 && out.pixels[i].outcome == acc::Outcome::undetermined;
+  }
   return out;
 }
 

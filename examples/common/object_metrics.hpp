@@ -10,12 +10,16 @@
 //   double steps = examples::mean_steps(std::span<const std::uint32_t>(truth_ids),
 //       std::span<const proceduray::accuracy::Sample>(samples), std::span<const std::uint32_t>(seen), 3u);
 //
+// A reference on a stratified sample (accuracy/stratified.hpp) passes its weights (how many pixels
+// each traced pixel stands for; 0: not traced) and stride: both then estimate the full frame's.
+//
 // The reference keeps its hits only where it sees the object and the render only where its
 // hit is on the object, so silhouettes are that object's against everything else, and a false
 // hit of one object in front of another counts against the one in front.
 #pragma once
 
 #include <proceduray/accuracy/metrics.hpp>
+#include <proceduray/accuracy/stratified.hpp>
 #include <proceduray/error.hpp>
 
 #include <cstddef>
@@ -30,7 +34,8 @@ proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& 
                                              std::span<const proceduray::accuracy::Reference> reference,
                                              std::span<const Id> reference_objects,
                                              std::span<const proceduray::accuracy::Sample> samples,
-                                             std::span<const Id> seen, Id object) {
+                                             std::span<const Id> seen, Id object,
+                                             std::span<const std::uint32_t> weights = {}, std::uint32_t stride = 1) {
   namespace acc = proceduray::accuracy;
   if (reference_objects.size() != reference.size() || seen.size() != samples.size()) {
     throw proceduray::UsageError("examples::measure_object: " + std::to_string(reference_objects.size()) +
@@ -46,26 +51,32 @@ proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& 
   for (std::size_t i = 0; i < mine.size(); ++i) {
     if (mine[i].hit && seen[i] != object) mine[i].hit = false;
   }
-  return acc::measure(frame, mine, refs);  // throws for a reference and samples of different sizes
+  if (weights.empty()) return acc::measure(frame, mine, refs);  // throws for a reference and samples of different sizes
+  acc::StratifiedTruth truth;
+  truth.pixels = std::move(refs);
+  truth.weight.assign(weights.begin(), weights.end());
+  truth.stride = stride;
+  return acc::measure_stratified(frame, mine, truth);  // throws for sizes that differ
 }
 
 /// Mean evaluations over the rays that see the object in the reference or in the render.
 template <class Id>
 double mean_steps(std::span<const Id> reference_objects, std::span<const proceduray::accuracy::Sample> samples,
-                  std::span<const Id> seen, Id object) {
+                  std::span<const Id> seen, Id object, std::span<const std::uint32_t> weights = {}) {
   if (reference_objects.size() != samples.size() || seen.size() != samples.size()) {
     throw proceduray::UsageError("examples::mean_steps: " + std::to_string(reference_objects.size()) + " reference ids, " +
                                  std::to_string(seen.size()) + " rendered ids and " + std::to_string(samples.size()) +
                                  " samples; pass one of each per pixel of the same frame");
   }
-  double steps = 0.0;
-  std::size_t rays = 0;
+  // On a stratified sample, the traced pixels each count as many as they stand for.
+  double steps = 0.0, rays = 0.0;
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (reference_objects[i] != object && seen[i] != object) continue;
-    steps += samples[i].steps;
-    ++rays;
+    const double w = weights.empty() ? 1.0 : double(weights[i]);
+    if (w == 0.0 || (reference_objects[i] != object && seen[i] != object)) continue;
+    steps += w * samples[i].steps;
+    rays += w;
   }
-  return rays > 0 ? steps / double(rays) : 0.0;
+  return rays > 0.0 ? steps / rays : 0.0;
 }
 
 }  // namespace examples

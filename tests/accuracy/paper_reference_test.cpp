@@ -4,6 +4,7 @@
 // interval CSG, misses by a slab test written here; and against the float sphere tracer
 // (sphere_trace.glsl with marching/field.glsl's settings, the paper's defaults) run in C++.
 #include "test_knobs.hpp"
+#include "02_paper_scene/accuracy.hpp"
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/reference.hpp"
 
@@ -513,4 +514,50 @@ TEST_CASE("paper reference: bad input is refused with the call, the value and th
   const paper::ReferenceScene s = paper::reference_scene(constants());
   CHECK(message([&] { paper::trace_object(s, paper::sky_id, s.eye, glm::dvec3(0.0, 0.0, -1.0)); })
             .find("paper::trace_object: object id 0") != std::string::npos);
+}
+
+TEST_CASE("paper reference: a stratified reference is the full one where traced, and estimates its metrics") {
+  // Stride 1 traces every pixel: reference_image's pixels and objects, every weight 1.
+  const paper::ReferenceImage all = paper::stratified_reference_image(constants(), W, H, 1);
+  REQUIRE(all.pixels.size() == truth().pixels.size());
+  CHECK(all.objects == truth().objects);
+  CHECK(all.traced == all.pixels.size());
+  std::size_t same = 0;
+  for (std::size_t i = 0; i < all.pixels.size(); ++i) {
+    same += all.pixels[i].outcome == truth().pixels[i].outcome && all.pixels[i].t == truth().pixels[i].t &&
+            all.weights[i] == 1u;
+  }
+  CHECK(same == all.pixels.size());
+  // Stride 4 at 96 x 64: fewer pixels traced, each equal to the full reference's; a render whose
+  // hits all lie 0.1 footprint behind the truth measures the same per object either way.
+  const std::uint32_t w = 96, h = 64;
+  const paper::SceneConstants c = test_knobs::pinned(paper::default_constants(w, h, 0.0f));
+  const paper::ReferenceImage full = paper::reference_image(c, w, h), sample = paper::stratified_reference_image(c, w, h, 4);
+  CHECK(sample.traced < full.pixels.size() * 3 / 4);
+  std::vector<proceduray::accuracy::Sample> render(full.pixels.size());
+  std::size_t traced = 0, agree = 0;
+  for (std::size_t i = 0; i < full.pixels.size(); ++i) {
+    const proceduray::accuracy::Reference& r = full.pixels[i];
+    if (sample.weights[i] > 0) {
+      ++traced;
+      agree += sample.pixels[i].t == r.t && sample.objects[i] == full.objects[i];
+    }
+    if (r.outcome != proceduray::accuracy::Outcome::hit) continue;
+    render[i] = {.hit = true, .t = r.t * (1.0 + 0.1 * full.pixel_angle), .normal = r.normal, .steps = 10.0};
+  }
+  CHECK(traced > 0);
+  CHECK(agree == traced);
+  const std::vector<paper::ObjectId> seen = full.objects;
+  for (const paper::ObjectId id : {paper::julia_id, paper::mandelbulb_id, paper::plane_id}) {
+    CAPTURE(id);
+    const proceduray::accuracy::Metrics a = paper::measure_object(full, render, seen, id);
+    const proceduray::accuracy::Metrics b = paper::measure_object(sample, render, seen, id);
+    CHECK(a.all.both_hit > 50);
+    CHECK(b.all.depth.median == doctest::Approx(a.all.depth.median).epsilon(0.02));
+    CHECK(b.all.depth.median == doctest::Approx(0.1).epsilon(0.02));
+    CHECK(b.all.false_hits + b.all.false_misses == 0);
+    // The hit count is estimated: within 10% of the full frame's.
+    CHECK(double(b.all.both_hit) == doctest::Approx(double(a.all.both_hit)).epsilon(0.1));
+  }
+  CHECK_THROWS_AS(paper::stratified_reference_image(c, w, h, 0), proceduray::UsageError);
 }

@@ -47,6 +47,7 @@ struct Knobs {
   float relative = -1.0f;    // threshold as a fraction of t; < 0: use threshold
   double spacing = 1.0e-3;   // reference spacing, footprints (paper scene)
   std::uint32_t iteration_factor = 1;
+  std::uint32_t stride = 1;  // paper scene: the truth of one pixel in this many outside the silhouette band
 };
 
 namespace acc = proceduray::accuracy;
@@ -150,22 +151,32 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   apply(k, constants);
   const auto [frame, samples] = render(renderer, paper::constants_slot, constants, width, height);
   const auto start = std::chrono::steady_clock::now();
-  const paper::ReferenceImage truth =
-      paper::reference_image(constants, width, height, {.spacing = k.spacing, .iteration_factor = k.iteration_factor});
+  const paper::ReferenceOptions options{.spacing = k.spacing, .iteration_factor = k.iteration_factor};
+  const paper::ReferenceImage truth = k.stride > 1
+                                          ? paper::stratified_reference_image(constants, width, height, k.stride, options)
+                                          : paper::reference_image(constants, width, height, options);
   Measurement out;
-  out.reference = format("reference: %.2f s, %.3g evaluations (spacing %.3g footprints, iterations x%u)",
-                         seconds_since(start), static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
+  out.reference = k.stride > 1
+      ? format("reference: %.2f s, stratified: %zu of %zu pixels traced, one in %u off the silhouette band "
+               "(spacing %.3g footprints, iterations x%u)", seconds_since(start), truth.traced, truth.pixels.size(),
+               k.stride, k.spacing, k.iteration_factor)
+      : format("reference: %.2f s, %.3g evaluations (spacing %.3g footprints, iterations x%u)", seconds_since(start),
+               static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
   out.settings = format("scene: paper, %ux%u, time %.2f s; Mandelbulb knobs: %s", width, height,
                         static_cast<double>(k.time), proceduray::describe(constants.knobs[paper::mandelbulb_id]).c_str());
   out.trace_ms = frame.trace_ms;
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
-  out.all = acc::measure(truth.frame(), samples, truth.pixels);
+  out.all = truth.weights.empty()
+                ? acc::measure(truth.frame(), samples, truth.pixels)
+                : acc::measure_stratified(truth.frame(), samples,
+                                          acc::StratifiedTruth{truth.pixels, truth.weights, truth.stride, truth.traced});
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
     out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),
                            examples::mean_steps(std::span<const paper::ObjectId>(truth.objects),
                                                 std::span<const acc::Sample>(samples),
-                                                std::span<const paper::ObjectId>(seen), id)});
+                                                std::span<const paper::ObjectId>(seen), id,
+                                                std::span<const std::uint32_t>(truth.weights))});
   }
   out.labels = knob_labels(constants);
   return out;
@@ -279,6 +290,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--iterations-factor", k.iteration_factor, "reference fractal iterations x this (2: truncation error)")
       ->check(CLI::Range(1u, 8u))->capture_default_str();
+  app.add_option("--stride", k.stride, "paper scene: the truth of every pixel near a silhouette and one in this many "
+                 "elsewhere, counted that many times (accuracy/stratified.hpp); 1: every pixel")
+      ->check(CLI::Range(1u, 1024u))->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     return run(k);

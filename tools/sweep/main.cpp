@@ -65,6 +65,7 @@ struct Options {
   bool validation = false;
   float time = 0.0f;
   double spacing = 1.0e-3;
+  std::uint32_t stride = 1;  // paper: the truth of one pixel in this many off the silhouette band
   unsigned frames = 9;
   unsigned warmup = 3;
 };
@@ -272,8 +273,10 @@ std::map<std::uint32_t, ObjectResult> measure(pr::vk::Renderer& r, pr::UniformSl
   for (std::uint32_t id : ids) {
     ObjectResult& o = out[id];
     o.metrics = measure_of(truth, samples, seen, id);
+    std::span<const std::uint32_t> weights;  // a stratified reference's (paper --stride); none: every pixel
+    if constexpr (requires { truth.weights; }) weights = truth.weights;
     o.evals = examples::mean_steps(std::span(truth.objects), std::span<const acc::Sample>(samples), std::span(seen),
-                                   static_cast<std::remove_cvref_t<decltype(seen[0])>>(id));
+                                   static_cast<std::remove_cvref_t<decltype(seen[0])>>(id), weights);
   }
   return out;
 }
@@ -391,7 +394,9 @@ void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
   paper::SceneConstants base = paper::default_constants(sw.width, sw.height, sw.o.time);
   base.flags = 0;
   std::fprintf(stderr, "sweep: reference of the paper scene (spacing %g footprints) ...\n", sw.o.spacing);
-  const paper::ReferenceImage truth = paper::reference_image(base, sw.width, sw.height, {.spacing = sw.o.spacing});
+  const paper::ReferenceImage truth =
+      sw.o.stride > 1 ? paper::stratified_reference_image(base, sw.width, sw.height, sw.o.stride, {.spacing = sw.o.spacing})
+                      : paper::reference_image(base, sw.width, sw.height, {.spacing = sw.o.spacing});
   sw.progress.total = sw.points.size();
   for (const auto& [index, p] : sw.points) {
     paper::SceneConstants c = base;
@@ -538,6 +543,8 @@ int main(int argc, char** argv) {
   app.add_option("--frames", o.frames, "timed frames per point (median)")->check(CLI::Range(1u, 1000u))->capture_default_str();
   app.add_option("--warmup", o.warmup, "untimed frames before them")->check(CLI::Range(0u, 100u))->capture_default_str();
   app.add_option("--time", o.time, "scene time in seconds")->capture_default_str();
+  app.add_option("--stride", o.stride, "paper scene: the truth of every pixel near a silhouette and one in this many "
+                 "elsewhere (accuracy/stratified.hpp); 1: every pixel")->check(CLI::Range(1u, 1024u))->capture_default_str();
   app.add_option("--spacing", o.spacing, "paper reference sample spacing in footprints")->check(CLI::Range(1e-6, 1.0))
       ->capture_default_str();
   app.add_flag("--validation", o.validation, "enable the Khronos validation layer");
