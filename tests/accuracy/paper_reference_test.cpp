@@ -137,7 +137,8 @@ TEST_CASE("paper reference: the cut plane and the mouth are data the shaders and
   // The cut is data: the Julia field takes it from the uniform (a parameter), and the reference
   // from the same C++ value.
   bool cut_parameter = false;
-  for (const auto& p : paper::PaperScene{}.fields()[0].parameters) cut_parameter = cut_parameter || p.member == "julia_cuts";
+  const paper::PaperScene scene;
+  for (const auto& p : scene.fields()[0].parameters) cut_parameter = cut_parameter || p.member == "julia_cuts";
   CHECK(cut_parameter);
   CHECK(read(dir + "fractals.glsl").find("cuts.plane[0]") != std::string::npos);
   CHECK(read(dir + "fractals.glsl").find("0.27617") == std::string::npos);
