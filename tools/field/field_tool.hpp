@@ -276,6 +276,17 @@ inline int merge(const std::vector<std::string>& parts, const std::string& out) 
   return 0;
 }
 
+/// What `command` returns, or 2 after report() when it throws.
+template <class Command>
+int guarded(const std::string& tool, Command command) {
+  try {
+    return command();
+  } catch (const std::exception& e) {
+    report(tool, e);
+    return 2;
+  }
+}
+
 /// True when the command line names a user's field (--sdf): proceduray_accuracy and
 /// proceduray_sweep then measure it through measure_main / calibrate_main.
 inline bool wants_field(int argc, char** argv) {
@@ -297,12 +308,7 @@ inline int measure_main(int argc, char** argv, const char* tool) {
   app.add_option("--knob", knobs, "name=value of march/knobs.hpp (repeat it)");
   app.add_option("--csv", csv, "also write the metrics as CSV (accuracy/report.hpp's columns)");
   CLI11_PARSE(app, argc, argv);
-  try {
-    return measure(o, knobs, csv);
-  } catch (const std::exception& e) {
-    report(tool, e);
-    return 2;
-  }
+  return guarded(tool, [&] { return measure(o, knobs, csv); });
 }
 
 /// `tool --sdf ... --csv F [--shard i/n]`: the methods preset as a calibration table, as
@@ -316,12 +322,7 @@ inline int calibrate_main(int argc, char** argv, const char* tool) {
   app.add_option("--shard", shard, "i/n: the i-th of n contiguous blocks of settings");
   app.add_option("--csv", out, "the calibration table to write")->required();
   CLI11_PARSE(app, argc, argv);
-  try {
-    return calibrate(o, shard, out);
-  } catch (const std::exception& e) {
-    report(tool, e);
-    return 2;
-  }
+  return guarded(tool, [&] { return calibrate(o, shard, out); });
 }
 
 }  // namespace field_tool

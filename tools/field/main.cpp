@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  try {
+  return guarded("proceduray-field", [&] {
     if (m->parsed()) return measure(mo, knobs, csv);
     if (c->parsed()) return calibrate(co, shard, cal_out);
     if (w->parsed()) {
@@ -52,8 +52,5 @@ int main(int argc, char** argv) {
       return 0;
     }
     return merge(parts, merge_out);
-  } catch (const std::exception& e) {
-    report("proceduray-field", e);
-    return 2;
-  }
+  });
 }
