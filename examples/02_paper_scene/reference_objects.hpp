@@ -207,7 +207,7 @@ inline bool julia_inside(glm::dvec3 p, glm::dvec4 c, std::uint32_t n) {
   return true;
 }
 
-/// julia_inside on the side of the cut that julia.rint keeps.
+/// julia_inside on the side of the cut that the Julia field keeps (shaders/fractals.glsl).
 inline bool julia_cut_inside(glm::dvec3 p, glm::dvec4 c, std::uint32_t n) {
   return glm::dot(glm::dvec3(julia_cut_plane), p) <= julia_cut_plane.w && julia_inside(p, c, n);
 }

@@ -3,7 +3,7 @@
 // the shader computes) or double (a reference), pure, so a CPU reference runs them on every core.
 //
 //   double d = proceduray::glsl::mandelbulb<double>::mandelbulb_distance(glm::dvec3(0.5), 8u);
-//   glm::vec4 c = proceduray::glsl::julia<float>::julia_animated_c(2.5f);    // at 2.5 s, as julia.rint does
+//   glm::vec4 c = proceduray::glsl::julia<float>::julia_animated_c(2.5f);    // at 2.5 s, as the paper scene's Julia field does
 //   double j = proceduray::glsl::julia<double>::julia_distance(glm::dvec3(0.3), glm::dvec4(c), 10u);
 //
 // This header owns the two files for every translation unit that includes it (their include
