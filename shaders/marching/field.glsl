@@ -73,14 +73,24 @@ float field_normal_offset(MarchKnobs k, MarchSettings m, vec3 p, float s) {
   return march_knobs_normal_offset(k, p, max(march_epsilon(m, s), 1.0e-5));
 }
 
-/// Reports the march's hit at t (when found and in range) with `normal` and the march's
-/// evaluations (FieldHit::steps); the steps output counts the normal's evaluations as well.
+/// Whether the ray's cull flags drop a hit with this object-space normal. Vulkan culls triangles
+/// only; a field honours the flags as a triangle would, taking the side its normal faces (a back
+/// face: the normal along the ray), as the D3D12 sample's procedural hits do.
+bool field_hit_culled(vec3 normal) {
+  bool back = dot(normal, gl_ObjectRayDirectionEXT) > 0.0;
+  uint flags = gl_IncomingRayFlagsEXT;
+  return back ? (flags & gl_RayFlagsCullBackFacingTrianglesEXT) != 0u
+              : (flags & gl_RayFlagsCullFrontFacingTrianglesEXT) != 0u;
+}
+
+/// Reports the march's hit at t (when found, in range and not culled) with `normal` and the
+/// march's evaluations (FieldHit::steps); the steps output counts the normal's evaluations as well.
 void field_march_report(bool found, float t, uint steps, MarchSettings m, vec3 normal, uint normal_evaluations) {
   output_steps(steps);
 #ifdef PROCEDURAY_OUTPUTS
   if (!found && steps >= m.max_steps) output_flags(output_flag_exhausted);
 #endif
-  if (!found || !t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT)) return;
+  if (!found || !t_in_range(t, gl_RayTminEXT, gl_RayTmaxEXT) || field_hit_culled(normal)) return;
   output_steps(normal_evaluations);
 #ifdef PROCEDURAY_OUTPUTS
   if (isnan(t) || any(isnan(normal))) output_flags(output_flag_nan);

@@ -23,8 +23,9 @@ struct Constants {
   pr::Camera camera;
   pr::MarchKnobs knobs;  // handwritten.rint's; the generated shader reads the library's buffer
   float radius = 1.0f;   // sized_ball.glsl's parameter
+  std::uint32_t ray_flags = 0;  // field.rgen traces with these besides opaque (cull flags)
 };
-PROCEDURAY_STRUCT(Constants, scalar, camera, knobs, radius);
+PROCEDURAY_STRUCT(Constants, scalar, camera, knobs, radius, ray_flags);
 struct Colour {
   glm::vec3 rgb;
 };
@@ -71,10 +72,11 @@ Constants constants() {
 }
 
 std::vector<std::uint8_t> render(pr::vk::Renderer& r, const pr::MarchKnobs& knobs = pr::march_base_knobs,
-                                 float radius = 1.0f) {
+                                 float radius = 1.0f, std::uint32_t ray_flags = 0) {
   Constants c = constants();
   c.knobs = knobs;
   c.radius = radius;
+  c.ray_flags = ray_flags;
   r.set(constants_slot, c);
   if (!r.plan().fields().empty()) {
     r.set_pixel_angle(c.camera.pixel_angle);
@@ -232,4 +234,15 @@ TEST_CASE("a distance field's record parameters give each instance block its own
   // Areas as the radii squared (0.25), give or take the perspective of balls off the axis.
   CHECK(double(left) / double(right) > 0.18);
   CHECK(double(left) / double(right) < 0.34);
+}
+
+TEST_CASE("a distance field honours the ray's cull flags as a triangle would, by the side its normal faces") {
+  TestContext t;
+  FieldScene ball("ball.glsl");
+  pr::vk::Renderer r(t.ctx, ball.scene, options());
+  const auto plain = render(r);
+  CHECK(covered(plain) > width * height / 8);
+  // From outside, every hit is a front face: culling back faces keeps them, culling front faces drops them.
+  CHECK(render(r, pr::march_base_knobs, 1.0f, 0x10u /* gl_RayFlagsCullBackFacingTrianglesEXT */) == plain);
+  CHECK(covered(render(r, pr::march_base_knobs, 1.0f, 0x20u /* gl_RayFlagsCullFrontFacingTrianglesEXT */)) == 0);
 }
