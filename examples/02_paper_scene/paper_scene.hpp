@@ -91,7 +91,9 @@ inline void set_frame(pr::vk::Renderer& renderer, const SceneConstants& c) {
   renderer.set(constants_slot, c);
   renderer.set_pixel_angle(c.camera.pixel_angle);
   for (const pr::PlannedField& f : renderer.plan().fields()) {
-    renderer.set_field_knobs(f.geometry, c.knobs[f.field.id == "julia" ? julia_id : mandelbulb_id]);
+    for (const auto& [id, name] : marched_objects) {
+      if (f.field.id == name) renderer.set_field_knobs(f.geometry, c.knobs[id]);  // the fields' ids are the names
+    }
   }
 }
 

@@ -9,6 +9,7 @@
 //       std::span<const std::uint32_t>(truth_ids), samples, std::span<const std::uint32_t>(seen), 3u);
 //   double steps = examples::mean_steps(std::span<const std::uint32_t>(truth_ids),
 //       std::span<const proceduray::accuracy::Sample>(samples), std::span<const std::uint32_t>(seen), 3u);
+//   proceduray::accuracy::Metrics all = examples::measure_frame(truth.frame(), samples, truth.pixels);  // every object
 //
 // A reference on a stratified sample (accuracy/stratified.hpp) passes its weights (how many pixels
 // each traced pixel stands for; 0: not traced) and stride: both then estimate the full frame's.
@@ -28,6 +29,21 @@
 #include <vector>
 
 namespace examples {
+
+/// The metrics of a whole frame: measure(), or on a stratified reference (weights given)
+/// measure_stratified(), which estimates them.
+inline proceduray::accuracy::Metrics measure_frame(const proceduray::accuracy::Frame& frame,
+                                                   std::span<const proceduray::accuracy::Sample> samples,
+                                                   std::vector<proceduray::accuracy::Reference> reference,
+                                                   std::span<const std::uint32_t> weights = {}, std::uint32_t stride = 1) {
+  namespace acc = proceduray::accuracy;
+  if (weights.empty()) return acc::measure(frame, samples, reference);  // throws for sizes that differ
+  acc::StratifiedTruth truth;
+  truth.pixels = std::move(reference);
+  truth.weight.assign(weights.begin(), weights.end());
+  truth.stride = stride;
+  return acc::measure_stratified(frame, samples, truth);  // throws for sizes that differ
+}
 
 template <class Id>
 proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& frame,
@@ -51,12 +67,7 @@ proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& 
   for (std::size_t i = 0; i < mine.size(); ++i) {
     if (mine[i].hit && seen[i] != object) mine[i].hit = false;
   }
-  if (weights.empty()) return acc::measure(frame, mine, refs);  // throws for a reference and samples of different sizes
-  acc::StratifiedTruth truth;
-  truth.pixels = std::move(refs);
-  truth.weight.assign(weights.begin(), weights.end());
-  truth.stride = stride;
-  return acc::measure_stratified(frame, mine, truth);  // throws for sizes that differ
+  return measure_frame(frame, mine, std::move(refs), weights, stride);
 }
 
 /// Mean evaluations over the rays that see the object in the reference or in the render.

@@ -166,10 +166,7 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                         static_cast<double>(k.time), proceduray::describe(constants.knobs[paper::mandelbulb_id]).c_str());
   out.trace_ms = frame.trace_ms;
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
-  out.all = truth.weights.empty()
-                ? acc::measure(truth.frame(), samples, truth.pixels)
-                : acc::measure_stratified(truth.frame(), samples,
-                                          acc::StratifiedTruth{truth.pixels, truth.weights, truth.stride, truth.traced});
+  out.all = examples::measure_frame(truth.frame(), samples, truth.pixels, truth.weights, truth.stride);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
     out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),

@@ -12,4 +12,5 @@ void usage(const proceduray::accuracy::Frame& frame, const std::vector<procedura
   // @statements
   (void)m;
   (void)steps;
+  (void)all;
 }
