@@ -5,17 +5,17 @@
 // whatever the defaults become; the defaults have their own tests (examples/march_defaults_test,
 // examples/march_budget_test).
 //
-//   paper::SceneConstants c = test_knobs::pinned(paper::default_constants(w, h, 0.0f));
+//   paper::Frame c = test_knobs::pinned(paper::default_frame(w, h, 0.0f));
 #pragma once
 
-#include <02_paper_scene/paper_types.hpp>
+#include <02_paper_scene/frame.hpp>
 #include <03_d3d12_scene/d3d12_types.hpp>
 #include <proceduray/march/primitives.hpp>
 
 namespace test_knobs {
 
 /// The paper scene's constants with both fractals on the half-footprint setting.
-inline paper::SceneConstants pinned(paper::SceneConstants c) {
+inline paper::Frame pinned(paper::Frame c) {
   for (const auto& [id, name] : paper::marched_objects) c.knobs[id] = proceduray::preset_base(paper::capabilities(id));
   return c;
 }

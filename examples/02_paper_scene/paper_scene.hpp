@@ -2,7 +2,7 @@
 //
 //   paper::PaperScene scene;                       // its constants declared on it (flags, depth limit)
 //   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
-//   paper::set_frame(renderer, paper::default_constants(1024, 768, time));   // each frame: constants, fractal knobs
+//   paper::set_frame(renderer, paper::default_constants(1024, 768, time));   // each frame: constants, pixel angle
 //   paper::PaperScene portable({}, paper::Tracing::iterative);   // runs where maxRayRecursionDepth is 1
 //
 // Recursion: recursive tracing declares depth_limit + 1 (the deepest radiance hit traces a
@@ -27,8 +27,7 @@ inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .n
 struct PaperScene : pr::Scene<Interface> {
   /// `outputs`: per-pixel outputs besides colour (the accuracy tool asks for t, normal, steps, flags).
   explicit PaperScene(pr::OutputSet outputs = {}, Tracing tracing = Tracing::recursive,
-                      std::uint32_t depth_limit = max_depth_limit)
-      : m_tracing(tracing), m_depth_limit(depth_limit) {
+                      std::uint32_t depth_limit = max_depth_limit) {
     if (depth_limit == 0 || depth_limit > max_depth_supported) {
       throw pr::UsageError("PaperScene: depth limit " + std::to_string(depth_limit) + " is out of range; give 1 to " +
                            std::to_string(max_depth_supported) + " radiance segments (primary included)");
@@ -36,9 +35,8 @@ struct PaperScene : pr::Scene<Interface> {
     set_outputs(outputs);
     const auto radiance = add_ray<RadiancePayload>("radiance", {.miss = "radiance.rmiss", .flags = pr::RayFlags::opaque});
     // Shadow rays accept any hit and run no closest hit: the miss shader clears `occluded`.
-    add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss",
-                                      .flags = pr::RayFlags::terminate_on_first_hit | pr::RayFlags::skip_closest_hit |
-                                               pr::RayFlags::opaque});
+    add_ray<ShadowPayload>("shadow", {.miss = "shadow.rmiss", .flags = pr::RayFlags::terminate_on_first_hit |
+                                                                       pr::RayFlags::skip_closest_hit | pr::RayFlags::opaque});
     const auto material = add_local_signature<MaterialRecord>("material");
     set_global_signature(pr::default_global_signature({constants_slot}));
     add_raygen("raygen.rgen");
@@ -48,26 +46,27 @@ struct PaperScene : pr::Scene<Interface> {
     PROCEDURAY_SCENE_CONSTANTS(*this, flag_shadows, flag_reflections, flag_object_ids);
     add_constant("max_depth_limit", depth_limit);
     if (tracing == Tracing::iterative) add_define("PAPER_ITERATIVE");
+    const std::vector<pr::RayShader> shade{{radiance, "shade.rchit"}};
     pr::add_object(*this, "plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
                                     .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
-    pr::add_object<pr::FieldHit>(*this, "pacman", {.geometry = pr::GeometryDesc::procedural({pacman_aabb},
-                                                                                          pr::transforms(pacman_placements)),
-                                                   .intersection = "pacman.rint", .closest_hit = {{radiance, "shade.rchit"}}},
+    const auto pacmen = pr::GeometryDesc::procedural({pacman_aabb}, pr::transforms(pacman_placements));
+    pr::add_object<pr::FieldHit>(*this, "pacman", {.geometry = pacmen, .intersection = "pacman.rint", .closest_hit = shade},
                                  material, pacman_materials);
-    // The fractals are distance fields: the library marches them with their knobs (set_frame).
+    // The fractals are distance fields (shaders/fractals.glsl): the library marches them, with
+    // their knobs. The time and the Julia set's cut planes are read per frame.
     const auto time = pr::field_parameter(constants_slot, &SceneConstants::time);
+    const auto cuts = pr::field_parameter(constants_slot, &SceneConstants::julia_cuts);
     pr::add_distance_field(*this, "julia", {.glsl = "fractals.glsl", .function = "julia_field", .aabb = julia_aabb,
-                                            .lipschitz = 1.0f, .iterations = capabilities(julia_id).defaults.iterations,
-                                            .parameters = {time, pr::field_parameter(constants_slot, &SceneConstants::julia_cuts)},
-                                            .knobs = capabilities(julia_id).defaults, .normal = "julia_field_normal",
-                                            .instances = pr::transforms(std::vector<pr::Placement>{julia_placement}),
-                                            .closest_hit = {{radiance, "shade.rchit"}}}, material, {julia_material});
+                                            .lipschitz = 1.0f, .iterations = julia_knobs.iterations, .parameters = {time, cuts},
+                                            .knobs = julia_knobs, .normal = "julia_field_normal",
+                                            .instances = {julia_placement.transform()}, .closest_hit = shade},
+                           material, {julia_material});
     pr::add_distance_field(*this, "mandelbulb", {.glsl = "fractals.glsl", .function = "mandelbulb_field",
                                                  .aabb = mandelbulb_aabb, .lipschitz = 1.0f,
-                                                 .iterations = capabilities(mandelbulb_id).defaults.iterations,
-                                                 .parameters = {time}, .knobs = capabilities(mandelbulb_id).defaults,
-                                                 .instances = pr::transforms(std::vector<pr::Placement>{mandelbulb_placement}),
-                                                 .closest_hit = {{radiance, "shade.rchit"}}}, material, {mandelbulb_material});
+                                                 .iterations = mandelbulb_knobs.iterations, .parameters = {time},
+                                                 .knobs = mandelbulb_knobs, .instances = {mandelbulb_placement.transform()},
+                                                 .closest_hit = shade},
+                           material, {mandelbulb_material});
   }
 
   /// Shaders from this example's folder (each compiled with its stage's declarations from the
@@ -75,26 +74,13 @@ struct PaperScene : pr::Scene<Interface> {
   pr::vk::RendererOptions renderer_options(std::filesystem::path cache = {}) const {
     return {.shader_dirs = {examples::examples_dir() / "02_paper_scene" / "shaders"}, .pipeline_cache = std::move(cache)};
   }
-
-  Tracing tracing() const noexcept { return m_tracing; }
-  std::uint32_t depth_limit() const noexcept { return m_depth_limit; }
-
- private:
-  Tracing m_tracing;
-  std::uint32_t m_depth_limit;
 };
 
-/// Sets a frame's constants on `renderer` (a PaperScene's), and hands the fractals' knobs
-/// (SceneConstants::knobs, what a sweep rewrites) and the view's pixel angle to the library,
-/// which marches the fractals. Throws UsageError for knobs a fractal does not accept.
+/// Sets a frame's constants on `renderer` (a PaperScene's), and the view's pixel angle, which the
+/// fractals' footprint thresholds scale with.
 inline void set_frame(pr::vk::Renderer& renderer, const SceneConstants& c) {
   renderer.set(constants_slot, c);
   renderer.set_pixel_angle(c.camera.pixel_angle);
-  for (const pr::PlannedField& f : renderer.plan().fields()) {
-    for (const auto& [id, name] : marched_objects) {
-      if (f.field.id == name) renderer.set_field_knobs(f.geometry, c.knobs[id]);  // the fields' ids are the names
-    }
-  }
 }
 
 }  // namespace paper

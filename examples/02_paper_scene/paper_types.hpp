@@ -1,5 +1,5 @@
 // The report's figure 3 scene, shader side: every struct that crosses to the GLSL, and the
-// scene's fixed numbers (AABBs, placements, materials, default knobs).
+// scene's fixed numbers (AABBs, placements, materials, the fractals' starting knobs).
 //
 //   paper::SceneConstants constants = paper::default_constants(1024, 768, time);   // binding 2
 //   // each shader compiles with glsl_for(plan, stage, name): the AABBs (pacman_aabb_min, ...) and
@@ -24,8 +24,6 @@
 
 #include "../common/tracing.hpp"
 
-#include <proceduray/march/cut_planes.hpp>
-#include <proceduray/march/primitives.hpp>
 #include <proceduray/proceduray.hpp>
 
 #include <vector>
@@ -39,8 +37,6 @@ namespace pr = proceduray;
 inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_object_ids = 4u;
 /// MaterialRecord::object_id of each object; 0 is the sky.
 enum ObjectId : std::uint32_t { sky_id = 0, plane_id = 1, pacman0_id = 2, pacman1_id = 3, julia_id = 4, mandelbulb_id = 5 };
-/// Ids 0 .. object_id_count - 1: SceneConstants::knobs has one entry per id.
-inline constexpr std::uint32_t object_id_count = 6;
 /// Largest SceneConstants::max_depth a PaperScene honours by default (radiance segments, primary
 /// included); a scene may be built for up to max_depth_supported.
 inline constexpr std::uint32_t max_depth_limit = 3;
@@ -48,10 +44,8 @@ inline constexpr std::uint32_t max_depth_supported = 16;
 /// How reflections and shadows are traced (examples/common/tracing.hpp).
 using Tracing = examples::Tracing;
 
-/// Per-frame uniform (set 0, binding 2). The march knobs are per object (indexed by ObjectId):
-/// run-time values a sweep rewrites. set_frame (paper_scene.hpp) hands the fractals' to the
-/// library, which marches them; shade.rchit reads them for the secondary rays' offset, the
-/// Pac-men (analytic) epsilon alone; sky and plane entries are unused.
+/// Per-frame uniform (set 0, binding 2). The fractals' march knobs are not here: the library
+/// owns them (Renderer::set_field_knobs) and reports each hit's threshold (FieldHit).
 PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (pr::Camera, camera),                ///< primary rays; camera.pixel_angle sets the footprint
     (glm::vec3, light_position),         ///< point light, world space
@@ -62,7 +56,6 @@ PROCEDURAY_DEFINE_STRUCT(SceneConstants, scalar,
     (std::uint32_t, max_depth),          ///< radiance segments, primary included (3: two reflections), <= max_depth_limit
     (std::uint32_t, flags),              ///< flag_* bits; default shadows | reflections
     (float, min_weight),                 ///< reflections adding less than this to the pixel are not traced; default 0.05
-    (pr::MarchKnobs[object_id_count], knobs),  ///< per ObjectId; the Mandelbulb's iterations are the animation's maximum
     (pr::CutPlanes, julia_cuts),         ///< the planes cutting the Julia set (a field parameter); default julia_cut
     (float, pacman_mouth));              ///< the Pac-men's mouth half angle, radians (pacman.rint); default pacman_mouth
 
@@ -123,30 +116,18 @@ inline const std::vector<MaterialRecord> pacman_materials{{{1.0f, 0.8f, 0.1f}, 0
 inline constexpr MaterialRecord julia_material{{0.9f, 0.3f, 0.25f}, 0.2f, {}, 0.0f, 0.9f, 0.6f, 60.0f, julia_id};
 inline constexpr MaterialRecord mandelbulb_material{{0.35f, 0.85f, 0.45f}, 0.2f, {}, 0.0f, 0.9f, 0.6f, 60.0f, mandelbulb_id};
 
-/// The knobs a fractal accepts, with its defaults (iterations: Julia 10, Mandelbulb 8): each its
-/// own pick from the shipped calibration tables, the cheapest setting at 1920x1080 that meets
-/// ErrorBudget{} there and at 640x360 (tests/examples/march_defaults_test.cpp checks). The Julia
-/// set's: half a footprint without the bisection (11.4 evaluations per ray); the Mandelbulb's:
-/// the library's, a quarter footprint (52.4).
-inline const pr::MarchCapabilities& capabilities(ObjectId id) {
-  static const pr::MarchCapabilities julia = [] {
-    pr::MarchCapabilities c = pr::fractal_capabilities(10);
-    c.defaults.threshold = 0.5f;
-    c.defaults.refine = 0;
-    return c;
-  }();
-  static const pr::MarchCapabilities bulb = pr::fractal_capabilities(8);
-  static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
-  return id == julia_id ? julia : (id == mandelbulb_id ? bulb : analytic);
-}
-
-/// Marched objects and their names (the sweep's and the accuracy tool's).
-inline constexpr std::pair<ObjectId, const char*> marched_objects[] = {{julia_id, "julia"}, {mandelbulb_id, "mandelbulb"}};
-
-/// Throws UsageError unless the fractals' knobs are valid (march/knobs.hpp's validate).
-inline void validate_knobs(const SceneConstants& c) {
-  for (const auto& [id, name] : marched_objects) pr::validate(c.knobs[id], capabilities(id), name);
-}
+/// The fractals' starting knobs (iterations: Julia 10, Mandelbulb 8; the Mandelbulb's are the
+/// animation's maximum): each its own pick from the shipped calibration tables, the cheapest
+/// setting at 1920x1080 that meets ErrorBudget{} there and at 640x360
+/// (tests/examples/march_defaults_test.cpp checks). The Julia set's: half a footprint without the
+/// bisection (11.4 evaluations per ray); the Mandelbulb's: the library's, a quarter footprint (52.4).
+inline const pr::MarchKnobs julia_knobs = [] {
+  pr::MarchKnobs k = pr::fractal_capabilities(10).defaults;
+  k.threshold = 0.5f;
+  k.refine = 0;
+  return k;
+}();
+inline const pr::MarchKnobs mandelbulb_knobs = pr::fractal_capabilities(8).defaults;
 
 /// The plane cutting the Julia set (object space; keeps dot(xyz, p) <= w): normalize(0.3, 0.3, 1)
 /// to five digits, removing the front so the camera looks at the slice through the set. Data:
@@ -156,12 +137,11 @@ inline const glm::vec4 julia_cut{0.27617f, 0.27617f, 0.92057f, 0.1f};
 /// SceneConstants::pacman_mouth).
 inline constexpr float pacman_mouth = 0.6f;
 
-/// Camera framing all four objects, default light and knobs, at `time` seconds.
+/// Camera framing all four objects, default light, at `time` seconds.
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
   SceneConstants c{pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
                    {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
-                   3, flag_shadows | flag_reflections, 0.05f, {}, {}, pacman_mouth};
-  for (std::uint32_t id = 0; id < object_id_count; ++id) c.knobs[id] = capabilities(static_cast<ObjectId>(id)).defaults;
+                   3, flag_shadows | flag_reflections, 0.05f, {}, pacman_mouth};
   c.julia_cuts = pr::make_cut_planes({julia_cut});
   return c;
 }

@@ -2,7 +2,7 @@
 // (row-major, y down, as raygen.rgen), the nearest primary hit over all objects, in double and
 // independent of the sphere tracer. What an accuracy tool compares a render's hits against.
 //
-//   const paper::SceneConstants constants = paper::default_constants(48, 32, 0.0f);
+//   const paper::Frame constants = paper::default_frame(48, 32, 0.0f);
 //   const paper::ReferenceImage truth = paper::reference_image(constants, 48, 32);   // ~1e-3 footprints
 //   const paper::ReferenceImage coarse = paper::reference_image(constants, 48, 32, {.spacing = 1.0e-2});
 //   const paper::ReferenceImage longer = paper::reference_image(constants, 48, 32, {.iteration_factor = 2});
@@ -146,7 +146,7 @@ inline void reference_row(const ReferenceScene& s, std::uint32_t y, ReferenceIma
 /// The reference of every pixel of a width x height image of `constants` (camera, time, iteration
 /// counts). Throws UsageError for a zero size, a non-finite or degenerate camera, or a bad option,
 /// naming the call, the value and the fix.
-inline ReferenceImage reference_image(const SceneConstants& constants, std::uint32_t width, std::uint32_t height,
+inline ReferenceImage reference_image(const Frame& constants, std::uint32_t width, std::uint32_t height,
                                       const ReferenceOptions& options = {}) {
   if (width == 0 || height == 0) {
     throw proceduray::UsageError("paper::reference_image: image size " + std::to_string(width) + "x" +
@@ -177,7 +177,7 @@ inline ReferenceImage reference_image(const SceneConstants& constants, std::uint
 /// every core. Costs are not counted (costs, evaluations stay 0). stride 1: reference_image's
 /// pixels and objects, every weight 1. Throws what reference_image throws, and UsageError for a
 /// stride of 0.
-inline ReferenceImage stratified_reference_image(const SceneConstants& constants, std::uint32_t width,
+inline ReferenceImage stratified_reference_image(const Frame& constants, std::uint32_t width,
                                                  std::uint32_t height, std::uint32_t stride,
                                                  const ReferenceOptions& options = {}) {
   if (width == 0 || height == 0) return reference_image(constants, width, height, options);  // its error

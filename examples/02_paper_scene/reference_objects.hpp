@@ -46,7 +46,7 @@
 #pragma once
 
 #include <proceduray/march/primitives_glsl.hpp>
-#include "paper_types.hpp"
+#include "frame.hpp"
 
 #include <proceduray/accuracy/closed_form.hpp>
 #include <proceduray/accuracy/ground_truth.hpp>
@@ -78,7 +78,7 @@ struct ReferenceOptions {
   std::uint64_t budget = std::uint64_t{1} << 24;  ///< evaluations per object and ray; beyond: undetermined
 };
 
-/// What the reference needs from SceneConstants, in double, and the options.
+/// What the reference needs from the Frame, in double, and the options.
 struct ReferenceScene {
   glm::dvec3 eye{0.0}, forward{0.0}, right{0.0}, up{0.0};  ///< the camera's vectors (camera.glsl scales)
   double pixel_angle = 0.0;                                ///< footprint per unit distance
@@ -214,7 +214,7 @@ inline bool julia_cut_inside(glm::dvec3 p, glm::dvec4 c, std::uint32_t n) {
 
 /// The prepared scene for `constants` (camera, time, iteration counts). Throws UsageError naming a
 /// non-finite or zero camera vector, a non-positive pixel angle or an out-of-range option.
-inline ReferenceScene reference_scene(const SceneConstants& constants, const ReferenceOptions& options = {}) {
+inline ReferenceScene reference_scene(const Frame& constants, const ReferenceOptions& options = {}) {
   detail::check_camera(constants.camera);
   detail::check_options(options);
   const proceduray::Camera& c = constants.camera;

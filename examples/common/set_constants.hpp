@@ -8,14 +8,18 @@
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/vk/renderer.hpp>
 
+#include <concepts>
+
 namespace examples {
 
-template <class T>
-void set_constants(proceduray::vk::Renderer& renderer, proceduray::UniformSlot<T> slot, const T& value) {
+/// `value`: the slot's type, or one derived from it that carries more (the paper scene's
+/// measuring Frame carries the fractals' knobs).
+template <class T, std::derived_from<T> V>
+void set_constants(proceduray::vk::Renderer& renderer, proceduray::UniformSlot<T> slot, const V& value) {
   if constexpr (requires { set_frame(renderer, value); }) {
     set_frame(renderer, value);
   } else {
-    renderer.set(slot, value);
+    renderer.set(slot, static_cast<const T&>(value));
   }
 }
 

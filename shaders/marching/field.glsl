@@ -84,7 +84,8 @@ bool field_hit_culled(vec3 normal) {
 }
 
 /// Reports the march's hit at t (when found, in range and not culled) with `normal` and the
-/// march's evaluations (FieldHit::steps); the steps output counts the normal's evaluations as well.
+/// march's evaluations (FieldHit::steps) and the threshold there, in world units
+/// (FieldHit::threshold); the steps output counts the normal's evaluations as well.
 void field_march_report(bool found, float t, uint steps, MarchSettings m, vec3 normal, uint normal_evaluations) {
   output_steps(steps);
 #ifdef PROCEDURAY_OUTPUTS
@@ -97,6 +98,9 @@ void field_march_report(bool found, float t, uint steps, MarchSettings m, vec3 n
 #endif
   hit.normal = normal;
   hit.steps = float(steps);  // the march's; the outputs' steps count the normal's too
+  // The threshold at the hit in world units: object lengths times the instance's scale.
+  float len = length(gl_ObjectRayDirectionEXT);
+  hit.threshold = march_epsilon(m, t * len) * length(gl_WorldRayDirectionEXT) / len;
   reportIntersectionEXT(t, 0u);
 }
 

@@ -60,8 +60,8 @@ namespace {
 
 constexpr std::uint32_t W = 48, H = 32;
 
-const paper::SceneConstants& constants() {
-  static const paper::SceneConstants c = test_knobs::pinned(paper::default_constants(W, H, 0.0f));
+const paper::Frame& constants() {
+  static const paper::Frame c = test_knobs::pinned(paper::default_frame(W, H, 0.0f));
   return c;
 }
 /// The default reference at 48 x 32 (spacing 1e-3 footprints: ~0.2 s in a Release build).
@@ -142,7 +142,7 @@ TEST_CASE("paper reference: the cut plane and the mouth are data the shaders and
   CHECK(cut_parameter);
   CHECK(read(dir + "fractals.glsl").find("cuts.plane[0]") != std::string::npos);
   CHECK(read(dir + "fractals.glsl").find("0.27617") == std::string::npos);
-  const paper::SceneConstants defaults = test_knobs::pinned(paper::default_constants(64, 48, 0.0f));
+  const paper::Frame defaults = test_knobs::pinned(paper::default_frame(64, 48, 0.0f));
   CHECK(defaults.julia_cuts.count == 1u);
   CHECK(glm::dvec4(defaults.julia_cuts.plane[0]) == paper::julia_cut_plane);
   CHECK(read(dir + "pacman.rint").find("constants.pacman_mouth") != std::string::npos);
@@ -270,7 +270,7 @@ struct Marched {
 template <int kind>
 Marched march_ray(std::uint32_t x, std::uint32_t y, const World& w, const proceduray::Aabb& box) {
   using M = march<kind>;
-  const paper::SceneConstants& k = constants();
+  const paper::Frame& k = constants();
   const proceduray::Camera& cam = k.camera;
   const glm::vec2 uv = (glm::vec2(float(x), float(y)) + 0.5f) / glm::vec2(float(W), float(H)) * 2.0f - 1.0f;
   const glm::vec3 dir = glm::normalize(glm::vec3(cam.forward) + uv.x * glm::vec3(cam.right) - uv.y * glm::vec3(cam.up));
@@ -340,7 +340,7 @@ Agreement compare(paper::ObjectId id, const proceduray::Aabb& box) {
 }  // namespace
 
 TEST_CASE("paper reference: the float sphere tracer lands at the reference surface") {
-  const paper::SceneConstants& k = constants();
+  const paper::Frame& k = constants();
   march<0>::count = proceduray::glsl::mandelbulb<float>::mandelbulb_animated_iterations(k.knobs[paper::mandelbulb_id].iterations, k.time);
   march<1>::count = std::max(k.knobs[paper::julia_id].iterations, 1u);
   march<1>::c = proceduray::glsl::julia<float>::julia_animated_c(k.time);
@@ -499,7 +499,7 @@ TEST_CASE("paper reference: bad input is refused with the call, the value and th
   CHECK(size.find("paper::reference_image") != std::string::npos);
   CHECK(size.find("0x32") != std::string::npos);
   CHECK(size.find("pass width and height") != std::string::npos);
-  paper::SceneConstants bad = constants();
+  paper::Frame bad = constants();
   bad.camera.eye.y = std::numeric_limits<float>::quiet_NaN();
   const std::string eye = message([&] { paper::reference_image(bad, W, H); });
   CHECK(eye.find("camera.eye") != std::string::npos);
@@ -532,7 +532,7 @@ TEST_CASE("paper reference: a stratified reference is the full one where traced,
   // Stride 4 at 96 x 64: fewer pixels traced, each equal to the full reference's; a render whose
   // hits all lie 0.1 footprint behind the truth measures the same per object either way.
   const std::uint32_t w = 96, h = 64;
-  const paper::SceneConstants c = test_knobs::pinned(paper::default_constants(w, h, 0.0f));
+  const paper::Frame c = test_knobs::pinned(paper::default_frame(w, h, 0.0f));
   const paper::ReferenceImage full = paper::reference_image(c, w, h), sample = paper::stratified_reference_image(c, w, h, 4);
   CHECK(sample.traced < full.pixels.size() * 3 / 4);
   std::vector<proceduray::accuracy::Sample> render(full.pixels.size());

@@ -63,7 +63,7 @@ TEST_CASE("worker_count follows PROCEDURAY_THREADS and refuses what is no count"
 }
 
 TEST_CASE("the paper scene's ground truth is the same on one thread and on four") {
-  const paper::SceneConstants c = paper::default_constants(48, 32, 0.3f);
+  const paper::Frame c = paper::default_frame(48, 32, 0.3f);
   const auto truth = [&](const char* threads) {
     ScopedEnv env("PROCEDURAY_THREADS", threads);
     return paper::reference_image(c, 48, 32, {.spacing = 1.0e-2});

@@ -24,7 +24,8 @@ namespace {
 /// Every marched primitive of the two scenes with its default knobs.
 std::vector<std::pair<std::string, MarchKnobs>> scene_defaults() {
   std::vector<std::pair<std::string, MarchKnobs>> out;
-  for (const auto& [id, name] : paper::marched_objects) out.emplace_back(name, paper::capabilities(id).defaults);
+  out.emplace_back("julia", paper::julia_knobs);  // the fields' starting knobs (DistanceFieldDesc::knobs)
+  out.emplace_back("mandelbulb", paper::mandelbulb_knobs);
   for (std::uint32_t k = d3d12::metaballs; k < d3d12::primitive_count; ++k) {
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
     out.emplace_back(std::string(d3d12::primitive_names[k]), d3d12::capabilities(kind).defaults);

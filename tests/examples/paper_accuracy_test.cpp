@@ -29,7 +29,7 @@ struct Measured {
   std::vector<std::uint32_t> flags;
 };
 
-Measured measure_paper(const vk::Context& ctx, paper::SceneConstants constants) {
+Measured measure_paper(const vk::Context& ctx, paper::Frame constants) {
   const paper::PaperScene scene(paper::accuracy_outputs);
   vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::set_frame(renderer, constants);
@@ -43,8 +43,8 @@ Measured measure_paper(const vk::Context& ctx, paper::SceneConstants constants) 
   return m;
 }
 
-paper::SceneConstants camera_rays_only() {
-  paper::SceneConstants c = test_knobs::pinned(paper::default_constants(width, height, 0.0f));
+paper::Frame camera_rays_only() {
+  paper::Frame c = test_knobs::pinned(paper::default_frame(width, height, 0.0f));
   c.flags = 0;
   return c;
 }
@@ -111,7 +111,7 @@ TEST_CASE("paper accuracy: marched fractals stay within their method's bounds") 
 
 TEST_CASE("paper accuracy: outputs do not change the colour image") {
   TestContext t;
-  paper::SceneConstants c = test_knobs::pinned(paper::default_constants(width, height, 0.0f));  // shadows and reflections on
+  paper::Frame c = test_knobs::pinned(paper::default_frame(width, height, 0.0f));  // shadows and reflections on
   const Measured with = measure_paper(t.ctx, c);
   const paper::PaperScene plain;
   vk::Renderer renderer(t.ctx, plain, plain.renderer_options());

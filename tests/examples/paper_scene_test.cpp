@@ -1,7 +1,7 @@
 // examples/02_paper_scene: the report's figure 3, checked by object ids and pixel classes.
 #include "vk/test_context.hpp"
 
-#include <02_paper_scene/paper_scene.hpp>
+#include <02_paper_scene/frame.hpp>
 
 #include <algorithm>
 #include <array>
@@ -29,7 +29,7 @@ struct Paper {
   explicit Paper(const vk::Context& ctx) : renderer(ctx, scene, scene.renderer_options()) {}
 
   vk::Frame render(float time, std::uint32_t flags) {
-    paper::SceneConstants c = paper::default_constants(width, height, time);
+    paper::Frame c = paper::default_frame(width, height, time);
     c.flags = flags;
     paper::set_frame(renderer, c);
     return renderer.render(width, height);
@@ -45,7 +45,7 @@ glm::ivec3 at(const vk::Frame& f, glm::ivec2 p) {
 }
 
 glm::ivec2 pixel_of(glm::vec3 world) {
-  return project(paper::default_constants(width, height, 0.0f).camera, world, width, height);
+  return project(paper::default_frame(width, height, 0.0f).camera, world, width, height);
 }
 
 int luminance(glm::ivec3 c) { return c.r + c.g + c.b; }
@@ -286,24 +286,25 @@ TEST_CASE("paper scene generator --names prints what a shader can call, and refu
   CHECK(unknown.err.find("raygen raygen.rgen") != std::string::npos);
 }
 
-TEST_CASE("paper scene knobs a march cannot survive are refused when set, naming the member, before the device sees them") {
+TEST_CASE("paper scene knobs a march cannot survive are refused when set, naming the field, before the device sees them") {
   TestContext t;
   Paper p(t.ctx);
-  paper::SceneConstants c = paper::default_constants(width, height, 0.0f);
+  // The fractals' knobs are the library's (set_field_knobs, through paper::set_frame), not the uniform's.
+  paper::Frame c = paper::default_frame(width, height, 0.0f);
   c.knobs[paper::mandelbulb_id].max_steps = 0xFFFFFFFFu;  // 4 billion steps a ray: a hung device
   c.knobs[paper::mandelbulb_id].step_scale = 1e-30f;
-  CHECK_THROWS_WITH_AS(p.renderer.set(paper::constants_slot, c),
-                       "Renderer::set: uniform 'constants'.knobs[5]: max_steps 4294967295 is out of range; give 1 to 65536 "
-                       "(0 steps never hit; more would hold the device for minutes)",
+  CHECK_THROWS_WITH_AS(paper::set_frame(p.renderer, c),
+                       "march knobs of 'Renderer::set_field_knobs: field \"mandelbulb\"' (fractal field): max_steps "
+                       "4294967295 is out of range; give 1 to 65536 (0 steps never hit; more would hold the device for minutes)",
                        UsageError);
   c.knobs[paper::mandelbulb_id].max_steps = 256;
-  CHECK_THROWS_WITH_AS(p.renderer.set(paper::constants_slot, c),
-                       doctest::Contains("Renderer::set: uniform 'constants'.knobs[5]: step_scale 1e-30 must be in [1/1024, 1]"),
+  CHECK_THROWS_WITH_AS(paper::set_frame(p.renderer, c),
+                       doctest::Contains("Renderer::set_field_knobs: field \"mandelbulb\"' (fractal field): step_scale 1e-30 must be in [1/1024, 1]"),
                        UsageError);
   c.knobs[paper::mandelbulb_id].step_scale = 1.0f;
   c.knobs[paper::julia_id].iterations = 1u << 20;
-  CHECK_THROWS_WITH_AS(p.renderer.set(paper::constants_slot, c),
-                       doctest::Contains("'constants'.knobs[4]: iterations 1048576 is past 64"), UsageError);
+  CHECK_THROWS_WITH_AS(paper::set_frame(p.renderer, c),
+                       doctest::Contains("field \"julia\"' (fractal field): iterations 1048576 is past 64"), UsageError);
   // A refused value left the last good one in place: the frame is the default scene's.
   c.knobs[paper::julia_id].iterations = 10;
   paper::set_frame(p.renderer, c);

@@ -16,7 +16,7 @@ namespace julia_cut_test {
 using namespace proceduray::glsl_cpp;
 using julia = proceduray::glsl::julia<float>;
 /// julia.rint's constant, count and plane, as the GPU holds them (paper scene at time 0).
-inline const paper::SceneConstants constants = test_knobs::pinned(paper::default_constants(320, 240, 0.0f));
+inline const paper::Frame constants = test_knobs::pinned(paper::default_frame(320, 240, 0.0f));
 inline const glm::vec4 julia_c = julia::julia_animated_c(constants.time);
 inline const std::uint32_t julia_count = std::max(constants.knobs[paper::julia_id].iterations, 1u);
 inline const proceduray::MarchKnobs& knobs = constants.knobs[paper::julia_id];

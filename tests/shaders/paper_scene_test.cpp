@@ -87,15 +87,16 @@ TEST_CASE("every paper shader file is a stage of the pipeline") {
 TEST_CASE("paper types fit the pipeline limits") {
   static_assert(sizeof(proceduray::FieldHit) <= proceduray::max_hit_attribute_size);
   const proceduray::PipelinePlan& plan = paper_plan().pipeline();
-  CHECK(plan.max_attribute_size == 16);
+  CHECK(plan.max_attribute_size == 20);  // FieldHit: normal, steps, threshold
   CHECK(plan.max_payload_size == sizeof(paper::RadiancePayload));
   static_assert(sizeof(paper::RadiancePayload) == 88);  // colour, depth, object id, steps, weight; the iterative fields
   static_assert(sizeof(paper::ShadowPayload) == 4);
   CHECK(plan.max_root_arguments_size[2] == 48);  // a MaterialRecord per hit record
   static_assert(sizeof(proceduray::MarchKnobs) == 14 * 4);
   static_assert(sizeof(proceduray::CutPlanes) == 2 * 16 + 16);
-  // camera, light and sky, depth, flags, weight, knobs per id, the Julia set's cut planes, the mouth
-  static_assert(sizeof(paper::SceneConstants) == 80 + 4 * 11 + 4 * 3 + 6 * 14 * 4 + sizeof(proceduray::CutPlanes) + 4);
+  // camera, light and sky, depth, flags, weight, the Julia set's cut planes, the mouth (no knobs:
+  // the library owns the fields')
+  static_assert(sizeof(paper::SceneConstants) == 80 + 4 * 11 + 4 * 3 + sizeof(proceduray::CutPlanes) + 4);
   // Payload locations are ray indices: radiance 0, shadow 1 (the shaders' radiance_ray, shadow_ray).
   CHECK(paper_scene().ray_id<paper::RadiancePayload>("radiance").index() == 0);
   CHECK(paper_scene().ray_id<paper::ShadowPayload>("shadow").index() == 1);
@@ -124,7 +125,7 @@ TEST_CASE("generated declarations carry the uniform block and no hand copies") {
   }
 }
 
-TEST_CASE("default constants frame the scene with the default knobs") {
+TEST_CASE("default constants frame the scene") {
   const paper::SceneConstants c = paper::default_constants(1024, 768, 0.0f);
   CHECK(c.max_depth == 3);
   CHECK(c.max_depth <= paper::max_depth_limit);

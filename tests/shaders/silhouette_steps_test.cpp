@@ -17,7 +17,7 @@
 
 namespace silhouette_steps_test {
 using namespace proceduray::glsl_cpp;
-inline const paper::SceneConstants constants = paper::default_constants(320, 240, 0.0f);
+inline const paper::Frame constants = paper::default_frame(320, 240, 0.0f);
 inline const std::uint32_t bulb_count =
     proceduray::glsl::mandelbulb<float>::mandelbulb_animated_iterations(constants.knobs[paper::mandelbulb_id].iterations, constants.time);
 /// Evaluations of the current march, and how many of them returned a point inside (<= 0).

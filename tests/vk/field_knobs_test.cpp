@@ -246,3 +246,34 @@ TEST_CASE("a distance field honours the ray's cull flags as a triangle would, by
   CHECK(render(r, pr::march_base_knobs, 1.0f, 0x10u /* gl_RayFlagsCullBackFacingTrianglesEXT */) == plain);
   CHECK(covered(render(r, pr::march_base_knobs, 1.0f, 0x20u /* gl_RayFlagsCullFrontFacingTrianglesEXT */)) == 0);
 }
+
+TEST_CASE("a distance field's hit reports its threshold in world units, on a scaled instance, for either threshold mode") {
+  TestContext t;
+  Scene scene;
+  const auto primary = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
+  scene.set_global_signature(pr::default_global_signature({constants_slot}));
+  scene.add_raygen("field.rgen");
+  // Half size: object lengths are twice the world's, so a threshold left in object units reads 1.0, not 0.5.
+  const pr::InstanceTransform half = pr::instance_transform(glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
+  pr::add_distance_field(scene, "ball", {.glsl = "ball.glsl", .function = "ball_distance",
+                                         .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .exact = true,
+                                         .instances = {half}, .closest_hit = {{primary, "threshold.rchit"}}});
+  pr::vk::Renderer r(t.ctx, scene, options());
+  pr::MarchKnobs footprints = pr::march_base_knobs;
+  footprints.threshold = 4.0f;
+  pr::MarchKnobs absolute = pr::march_base_knobs;
+  absolute.threshold_mode = pr::MarchThreshold::absolute;
+  absolute.threshold = 0.01f;
+  for (const pr::MarchKnobs& k : {footprints, absolute}) {
+    const auto image = render(r, k);
+    std::size_t hits = 0, off = 0;
+    for (std::size_t i = 0; i < image.size(); i += 4) {
+      if (image[i + 2] == 0) continue;  // the sky
+      ++hits;
+      off += std::abs(int(image[i]) - 128) > 2;
+    }
+    CAPTURE(pr::describe(k));
+    CHECK(hits > width * height / 16);
+    CHECK(off == 0);
+  }
+}

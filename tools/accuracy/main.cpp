@@ -91,9 +91,9 @@ proceduray::vk::DevicePreference device_of(const std::string& name) {
 }
 
 /// Renders one frame of `constants` after a warm-up; the frame and its per-pixel samples.
-template <class Constants>
+template <class Slot, class Constants>
 std::pair<proceduray::vk::Frame, std::vector<acc::Sample>> render(proceduray::vk::Renderer& renderer,
-                                                                  proceduray::UniformSlot<Constants> slot,
+                                                                  proceduray::UniformSlot<Slot> slot,
                                                                   const Constants& constants, unsigned width,
                                                                   unsigned height) {
   examples::set_constants(renderer, slot, constants);
@@ -115,7 +115,7 @@ std::string format(const char* fmt, auto... values) {
 }
 
 /// The marched objects of each scene: their knobs are what --steps, --threshold ... change.
-std::vector<std::uint32_t> marched_ids(const paper::SceneConstants&) { return {paper::julia_id, paper::mandelbulb_id}; }
+std::vector<std::uint32_t> marched_ids(const paper::Frame&) { return {paper::julia_id, paper::mandelbulb_id}; }
 std::vector<std::uint32_t> marched_ids(const d3d12::SceneConstants&) {
   std::vector<std::uint32_t> ids;
   for (std::uint32_t k = d3d12::metaballs; k < d3d12::primitive_count; ++k) ids.push_back(d3d12::object_id(static_cast<d3d12::PrimitiveKind>(k)));
@@ -147,7 +147,7 @@ std::vector<acc::Label> knob_labels(const Constants& c) {
 Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
   const paper::PaperScene scene(paper::accuracy_outputs);
   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
-  paper::SceneConstants constants = paper::default_constants(width, height, k.time);
+  paper::Frame constants = paper::default_frame(width, height, k.time);
   apply(k, constants);
   const auto [frame, samples] = render(renderer, paper::constants_slot, constants, width, height);
   const auto start = std::chrono::steady_clock::now();

@@ -249,8 +249,8 @@ struct View {
   unsigned width, height;
 };
 
-template <class Constants>
-double time_frames(pr::vk::Renderer& r, pr::UniformSlot<Constants> slot, const Constants& c, const Options& o,
+template <class Slot, class Constants>
+double time_frames(pr::vk::Renderer& r, pr::UniformSlot<Slot> slot, const Constants& c, const Options& o,
                    unsigned w, unsigned h) {
   examples::set_constants(r, slot, c);
   for (unsigned i = 0; i < o.warmup; ++i) r.render(w, h, false);
@@ -260,8 +260,8 @@ double time_frames(pr::vk::Renderer& r, pr::UniformSlot<Constants> slot, const C
 }
 
 /// Renders `c` with outputs and measures `ids` against the truth.
-template <class Constants, class Truth, class Seen, class Measure>
-std::map<std::uint32_t, ObjectResult> measure(pr::vk::Renderer& r, pr::UniformSlot<Constants> slot, const Constants& c,
+template <class Slot, class Constants, class Truth, class Seen, class Measure>
+std::map<std::uint32_t, ObjectResult> measure(pr::vk::Renderer& r, pr::UniformSlot<Slot> slot, const Constants& c,
                                               const Truth& truth, unsigned w, unsigned h,
                                               const std::vector<std::uint32_t>& ids, Seen seen_of, Measure measure_of) {
   examples::set_constants(r, slot, c);
@@ -391,7 +391,7 @@ void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
   const paper::PaperScene measured_scene(paper::accuracy_outputs), timed_scene;
   pr::vk::Renderer measured(sw.ctx, measured_scene, measured_scene.renderer_options());
   pr::vk::Renderer timed(sw.ctx, timed_scene, timed_scene.renderer_options());
-  paper::SceneConstants base = paper::default_constants(sw.width, sw.height, sw.o.time);
+  paper::Frame base = paper::default_frame(sw.width, sw.height, sw.o.time);
   base.flags = 0;
   std::fprintf(stderr, "sweep: reference of the paper scene (spacing %g footprints) ...\n", sw.o.spacing);
   const paper::ReferenceImage truth =
@@ -399,7 +399,7 @@ void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
                       : paper::reference_image(base, sw.width, sw.height, {.spacing = sw.o.spacing});
   sw.progress.total = sw.points.size();
   for (const auto& [index, p] : sw.points) {
-    paper::SceneConstants c = base;
+    paper::Frame c = base;
     std::vector<std::uint32_t> ids;
     const auto taken = sw.apply(c, objects, p, ids);
     const double ms = time_frames(timed, paper::constants_slot, c, sw.o, sw.width, sw.height);

@@ -50,7 +50,9 @@ namespace proceduray {
 /// scene interface's Attributes<...> to declare distance fields.
 PROCEDURAY_DEFINE_STRUCT(FieldHit, scalar,
     (glm::vec3, normal),   ///< object space, unit, outward (the field's gradient)
-    (float, steps));       ///< distance evaluations the march took (the normal's not included)
+    (float, steps),        ///< distance evaluations the march took (the normal's not included)
+    (float, threshold));   ///< world units: the hit lies within this of the surface (the knobs'
+                           ///< threshold at its t); start secondary rays twice as far out
 
 /// One field's run-time settings (the `proceduray_fields` storage buffer, one per field).
 PROCEDURAY_DEFINE_STRUCT(FieldSettings, scalar,
