@@ -16,6 +16,11 @@ struct ball {
 #include "vk/shaders/fields/ball.glsl"
 };
 template <class T>
+struct sized_ball {
+  PROCEDURAY_GLSL_CPP_SCALAR(T)
+#include "vk/shaders/fields/sized_ball.glsl"
+};
+template <class T>
 struct gyroid {
   PROCEDURAY_GLSL_CPP_SCALAR(T)
 #include "06_your_field/shaders/gyroid.glsl"

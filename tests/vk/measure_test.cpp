@@ -175,3 +175,61 @@ TEST_CASE("measure: bad views, a bound the field exceeds and a missing file are 
   CHECK_THROWS_WITH_AS(pr::vk::FieldMeter(t.ctx, missing, options()), doctest::Contains("nowhere.glsl"),
                        pr::UsageError);
 }
+
+namespace {
+/// The uniform an animated field reads its radius from (sized_ball.glsl), as a user's scene declares it.
+struct Animation {
+  float radius = 1.0f;
+  float time = 0.0f;
+};
+PROCEDURAY_STRUCT(Animation, scalar, radius, time);
+constexpr pr::UniformSlot<Animation> animation_slot{.binding = 2, .name = "constants"};
+struct Other {
+  float radius = 1.0f;
+};
+PROCEDURAY_STRUCT(Other, scalar, radius);
+
+pr::DistanceField sized_field() {
+  return {.id = "sized", .glsl = "sized_ball.glsl", .function = "sized_ball_distance",
+          .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .exact = true,
+          .parameters = {pr::field_parameter(animation_slot, &Animation::radius)}};
+}
+}  // namespace
+
+TEST_CASE("measure: a field reading a uniform is measured at the values set, and its truth kept per value") {
+  TestContext t;
+  pr::vk::FieldMeter meter(t.ctx, sized_field(), options());
+  const pr::vk::MeasureView v = view();
+  const auto at = [](double radius) {
+    return [radius](glm::dvec3 p) { return test_fields::sized_ball<double>::sized_ball_distance(p, radius); };
+  };
+  // No value yet: the render would read garbage, so measure refuses and names set().
+  CHECK_THROWS_WITH_AS(meter.measure(at(0.6), pr::march_base_knobs, v),
+                       doctest::Contains("reads the uniform \"constants\" (its parameters), which has no value; call "
+                                         "FieldMeter::set(slot, value)"),
+                       pr::UsageError);
+  meter.set(animation_slot, Animation{0.6f, 0.0f});
+  const pr::vk::Measurement same = meter.measure(at(0.6), pr::march_base_knobs, v);
+  CHECK_FALSE(same.truth_cached);
+  CHECK(same.metrics.all.both_hit > 200);
+  CHECK(errors(same) <= 4);
+  CHECK(same.metrics.all.depth.median < 0.05);
+  // The device reads the value set: at 0.5 against a truth at 0.6 (the key is the value set, not
+  // the callable, so this truth is new), every rim pixel disagrees.
+  meter.set(animation_slot, Animation{0.5f, 0.0f});
+  const pr::vk::Measurement wrong = meter.measure(at(0.6), pr::march_base_knobs, v);
+  CHECK_FALSE(wrong.truth_cached);
+  CHECK(errors(wrong) > 40);
+  // Back at 0.6, the truth comes from memory and agrees again.
+  meter.set(animation_slot, Animation{0.6f, 0.0f});
+  const pr::vk::Measurement again = meter.measure(at(0.6), pr::march_base_knobs, v);
+  CHECK(again.truth_cached);
+  CHECK(errors(again) == errors(same));
+  // Another uniform, or another type under the field's uniform name, is refused.
+  CHECK_THROWS_WITH_AS(meter.set(pr::UniformSlot<Animation>{.binding = 2, .name = "scene"}, Animation{}),
+                       "FieldMeter::set: distance field \"sized\" reads no uniform \"scene\"; it reads \"constants\": set those",
+                       pr::UsageError);
+  CHECK_THROWS_WITH_AS(meter.set(pr::UniformSlot<Other>{.binding = 2, .name = "constants"}, Other{}),
+                       doctest::Contains("uniform \"constants\" holds Animation"), pr::UsageError);
+  CHECK(t.ctx.validation_messages().empty());
+}

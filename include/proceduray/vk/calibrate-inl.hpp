@@ -53,8 +53,8 @@ PROCEDURAY_DECL std::string view_size(const MeasureView& view) {
 
 PROCEDURAY_DECL std::filesystem::path calibration_file(const FieldMeter& meter, const CalibrateOptions& o,
                                                        const std::vector<MarchKnobs>& settings) {
-  // GLSL, declaration, view, sample, version; the table's format (a unit changed in format 3).
-  std::uint64_t h = truth_key(meter.field(), meter.glsl_text(), o.view, meter.options());
+  // GLSL, declaration, parameter values, view, sample, version; the table's format (a unit changed in format 3).
+  std::uint64_t h = truth_key(meter.field(), meter.glsl_text(), o.view, meter.options(), meter.parameter_values());
   h = fnv1a(calibration_format, h);
   h = fnv1a(meter.device(), h);
   for (const MarchKnobs& k : settings) h = fnv1a(describe(k), h);

@@ -19,10 +19,28 @@
 #include "proceduray/vk/shader_compiler.hpp"
 #include "proceduray/vk/spirv_cache.hpp"
 
+namespace proceduray::vk {
+
+template <class T>
+void FieldMeter::upload(UniformSlot<T> slot, const T& value) {
+  m_renderer->set(slot, value);
+}
+
+}  // namespace proceduray::vk
+
 #if PROCEDURAY_BODIES
 namespace proceduray::vk {
 
 namespace detail {
+
+/// The measuring scene, whose vocabulary adds the uniforms a field's parameters read to its own.
+class MeasureScene : public Scene<MeasureInterface> {
+ public:
+  explicit MeasureScene(std::vector<const TypeOps*> types) : m_types(std::move(types)) { set_vocabulary(m_types); }
+
+ private:
+  std::vector<const TypeOps*> m_types;
+};
 
 PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, std::uint32_t y, std::uint32_t width,
                                              std::uint32_t height) {
@@ -31,8 +49,9 @@ PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, s
 }
 
 PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view,
-                                        const MeasureOptions& options) {
+                                        const MeasureOptions& options, std::string_view parameters) {
   std::uint64_t h = fnv1a(proceduray::version);
+  if (!parameters.empty()) h = fnv1a(parameters, h);  // the values the field was measured at
   h = fnv1a(glsl_text, h);
   h = fnv1a(field.id + "\n" + field_function(field) + "\n", h);
   const float numbers[] = {field.aabb.min.x, field.aabb.min.y, field.aabb.min.z, field.aabb.max.x,
@@ -121,11 +140,24 @@ PROCEDURAY_DECL void check_view(const MeasureView& view, std::string_view op) {
 PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, MeasureOptions options)
     : m_field(std::move(field)), m_options(std::move(options)) {
   validate(m_field, "FieldMeter");
-  if (!m_field.parameters.empty()) {
-    const FieldParameter& p = m_field.parameters[0];
-    throw UsageError("FieldMeter: distance field \"" + m_field.id + "\" takes parameters (" + p.block + "." + p.member +
-                     "...) from its scene's uniforms, which the measuring scene does not have; measure a function "
-                     "with the parameters' values fixed (a wrapper in the GLSL file)");
+  std::vector<const TypeOps*> types(detail::MeasureInterface::types.begin(), detail::MeasureInterface::types.end());
+  std::vector<proceduray::Binding> bindings{detail::measure_constants};
+  for (const FieldParameter& p : m_field.parameters) {
+    if (p.record) {
+      throw UsageError("FieldMeter: distance field \"" + m_field.id + "\" takes " + p.block + "." + p.member +
+                       " from its hit records, which the measuring scene does not have; measure a function with that "
+                       "value fixed (a wrapper in the GLSL file), or pass it from a uniform");
+    }
+    if (p.block == detail::measure_constants.name) {
+      throw UsageError("FieldMeter: distance field \"" + m_field.id + "\" reads the uniform \"" + p.block +
+                       "\", the measuring scene's own name; rename the uniform");
+    }
+    const auto same = [&](const detail::ParameterBlock& b) { return b.name == p.block; };
+    if (std::find_if(m_blocks.begin(), m_blocks.end(), same) != m_blocks.end()) continue;
+    const auto binding = detail::measure_parameter_binding + static_cast<std::uint32_t>(m_blocks.size());
+    m_blocks.push_back({p.block, p.block_type, binding, {}});
+    bindings.push_back({BindingKind::uniform_buffer, binding, 0, 1, p.block, p.block_type});
+    types.push_back(p.block_type);
   }
   m_caps = field_capabilities(m_field);
   if (m_options.repeats == 0) {
@@ -137,15 +169,16 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
   }
   std::vector<std::filesystem::path> dirs = m_options.shader_dirs;
   m_glsl_text = read_text_file(find_shader(dirs, m_field.glsl));
-  Scene<detail::MeasureInterface> scene;
+  detail::MeasureScene scene(std::move(types));
   const auto ray = scene.add_ray<detail::MeasurePayload>("measure", {.miss = "measure/measure.rmiss"});
-  scene.set_global_signature(default_global_signature({detail::measure_constants}));
+  scene.set_global_signature(default_global_signature(std::move(bindings)));
   scene.add_raygen("measure/measure.rgen");
   scene.set_outputs({Output::t, Output::normal, Output::steps, Output::flags});
   m_geometry = add_distance_field(scene, m_field.id,
                                   {.glsl = m_field.glsl, .function = m_field.function, .aabb = m_field.aabb,
                                    .lipschitz = m_field.exact ? 0.0f : m_field.lipschitz, .exact = m_field.exact,
-                                   .iterations = m_field.iterations, .normal = m_field.normal,
+                                   .iterations = m_field.iterations, .parameters = m_field.parameters,
+                                   .normal = m_field.normal,
                                    .closest_hit = {{ray, "measure/measure.rchit"}}});
   if (const auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
   m_renderer = std::make_unique<Renderer>(ctx, scene, RendererOptions{.shader_dirs = dirs});
@@ -153,6 +186,38 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
 }
 
 PROCEDURAY_DECL FieldMeter::~FieldMeter() = default;
+
+PROCEDURAY_DECL detail::ParameterBlock& FieldMeter::parameter_block(std::string_view name, const TypeOps* type) {
+  for (detail::ParameterBlock& b : m_blocks) {
+    if (b.name != name) continue;
+    if (b.type != type && std::string_view(b.type->glsl_name) != std::string_view(type->glsl_name)) {
+      throw UsageError("FieldMeter::set: uniform \"" + b.name + "\" holds " + std::string(b.type->glsl_name) +
+                       " in field \"" + m_field.id + "\"'s parameters, not " + std::string(type->glsl_name) +
+                       "; pass the slot they were declared with");
+    }
+    return b;
+  }
+  std::string read;
+  for (const detail::ParameterBlock& b : m_blocks) read += (read.empty() ? "\"" : ", \"") + b.name + "\"";
+  throw UsageError("FieldMeter::set: distance field \"" + m_field.id + "\" reads no uniform \"" + std::string(name) +
+                   "\"; " + (read.empty() ? std::string("it takes no parameters") : "it reads " + read) +
+                   ": set those");
+}
+
+PROCEDURAY_DECL std::string FieldMeter::parameter_values() const {
+  std::string out;
+  for (const detail::ParameterBlock& b : m_blocks) out += b.name + "=" + b.bytes + "\n";
+  return out;
+}
+
+PROCEDURAY_DECL void FieldMeter::check_parameters_set(std::string_view op) const {
+  for (const detail::ParameterBlock& b : m_blocks) {
+    if (!b.bytes.empty()) continue;
+    throw UsageError(std::string(op) + ": distance field \"" + m_field.id + "\" reads the uniform \"" + b.name +
+                     "\" (its parameters), which has no value; call FieldMeter::set(slot, value) with the values to "
+                     "measure at first");
+  }
+}
 
 PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const MeasureView& view,
                                           const accuracy::StratifiedTruth& truth, Measurement& m) {

@@ -18,6 +18,14 @@
 // alone at the identity, the outputs t, normal, steps and flags. So the numbers are the
 // field's, not a scene's: shading, reflections and other objects add nothing to them.
 //
+// A field that reads members of a scene uniform (field_parameter(slot, &T::member): a time, a
+// size) is measured at the values set(slot, value) gives, before the first measure; `distance`
+// must read the same values. The truth is kept per value, so each frame of an animation is
+// measured against its own. A field with record parameters is refused (wrap it with fixed values).
+//
+//   meter.set(constants_slot, constants);                  // the uniform the field reads, as a frame sets it
+//   auto cpu = [&](glm::dvec3 p) { return mine::wave<double>::wave_distance(p, constants.time); };
+//
 // The truth: the camera ray of each pixel in double (common/camera.glsl's formula), the field's
 // box and bound checked first (scan_field: a bound the field exceeds is refused, naming the
 // point and the slope), then field_hit per pixel on every core; normals are central
@@ -98,12 +106,23 @@ struct ViewTruth {
 
 namespace detail {
 
-/// The measuring scene's payload and constants (shaders/measure/).
+/// The measuring scene's payload and constants (shaders/measure/). The view's uniform has a
+/// reserved name, so a field's own uniform (often "constants") can sit beside it.
 PROCEDURAY_DEFINE_STRUCT(MeasurePayload, scalar, (std::uint32_t, hit));
 PROCEDURAY_DEFINE_STRUCT(MeasureConstants, scalar, (Camera, camera));
 using MeasureInterface = ShaderInterface<Payload<MeasurePayload>, RootComponent<MeasureConstants>, RootArguments<>,
                                          Attributes<FieldHit>>;
-inline constexpr UniformSlot<MeasureConstants> measure_constants{.binding = 2, .name = "constants"};
+inline constexpr UniformSlot<MeasureConstants> measure_constants{.binding = 2, .name = "proceduray_view"};
+/// The first binding of the uniforms a field's parameters read (one each, in order of first use).
+inline constexpr std::uint32_t measure_parameter_binding = 3;
+
+/// A uniform a field's parameters read, in the measuring scene: its binding, and the bytes last set.
+struct ParameterBlock {
+  std::string name;              ///< the uniform's GLSL name (UniformSlot::name)
+  const TypeOps* type = nullptr;
+  std::uint32_t binding = 0;     ///< in the measuring scene
+  std::string bytes;             ///< the value set; empty until set
+};
 
 /// Unit direction of pixel (x, y): camera.glsl's camera_ray in double.
 PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, std::uint32_t y, std::uint32_t width,
@@ -111,7 +130,7 @@ PROCEDURAY_DECL glm::dvec3 measure_direction(const Camera& c, std::uint32_t x, s
 /// The cache key of a view's truth: the field's GLSL text, its declaration, the view, the sample
 /// (stride and seed), the version.
 PROCEDURAY_DECL std::uint64_t truth_key(const DistanceField& field, const std::string& glsl_text, const MeasureView& view,
-                                        const MeasureOptions& options);
+                                        const MeasureOptions& options, std::string_view parameters = {});
 /// Reads a cached truth (false when absent or not this key's); writes one (best effort).
 PROCEDURAY_DECL bool read_truth(const std::filesystem::path& file, std::uint64_t key, std::size_t pixels,
                                 accuracy::StratifiedTruth& out);
@@ -132,11 +151,25 @@ class FieldMeter {
   FieldMeter& operator=(const FieldMeter&) = delete;
   ~FieldMeter();
 
+  /// The value of a uniform the field's parameters read, for the render and the truth's key:
+  /// throws UsageError when the field reads no uniform of that name, TypeMismatchError for another
+  /// type than the field's parameters were declared with.
+  template <RegisteredStruct T>
+  void set(UniformSlot<T> slot, const std::type_identity_t<T>& value) {
+    detail::ParameterBlock& b = parameter_block(slot.name, &type_ops<T>);
+    std::string bytes(reinterpret_cast<const char*>(&value), sizeof value);
+    if (bytes == b.bytes) return;
+    upload(UniformSlot<T>{.binding = b.binding, .name = b.name.c_str()}, value);
+    b.bytes = std::move(bytes);
+    m_scanned = false;  // the bound holds for these values: checked again
+  }
+
   /// Renders `view` with `knobs` (checked against the field's capabilities) and measures it
   /// against the truth of `distance` (double(glm::dvec3), the field's GLSL in C++).
   template <class Distance>
   Measurement measure(const Distance& distance, const MarchKnobs& knobs, const MeasureView& view) {
     detail::check_view(view, "FieldMeter::measure");
+    check_parameters_set("FieldMeter::measure");
     Measurement m;
     const ViewTruth& truth = truth_of(distance, view, m.truth_cached);
     m.truth_ms = m.truth_cached ? 0.0 : truth.ms;
@@ -148,7 +181,7 @@ class FieldMeter {
   /// The truth of `view` (cached as measure() does).
   template <class Distance>
   const ViewTruth& truth_of(const Distance& distance, const MeasureView& view, bool& cached) {
-    const std::uint64_t key = detail::truth_key(m_field, m_glsl_text, view, m_options);
+    const std::uint64_t key = detail::truth_key(m_field, m_glsl_text, view, m_options, parameter_values());
     cached = true;
     if (auto it = m_truths.find(key); it != m_truths.end()) return it->second;
     ViewTruth t;
@@ -175,6 +208,10 @@ class FieldMeter {
   const std::string& device() const noexcept { return m_device; }
   /// What the field accepts (field_capabilities).
   const MarchCapabilities& capabilities() const noexcept { return m_caps; }
+  /// The bytes of every uniform the field reads, as set (empty for a field without parameters).
+  std::string parameter_values() const;
+  /// Throws UsageError naming `op`, the uniform and set() when a uniform the field reads has no value.
+  void check_parameters_set(std::string_view op) const;
 
  private:
   template <class Distance>
@@ -198,6 +235,9 @@ class FieldMeter {
       return ref;
     });
   }
+  detail::ParameterBlock& parameter_block(std::string_view name, const TypeOps* type);
+  template <class T>
+  void upload(UniformSlot<T> slot, const T& value);  // measure-inl.hpp: where Renderer is complete
   /// Renders and fills m from the frames against `truth`.
   void rendered(const MarchKnobs& knobs, const MeasureView& view, const accuracy::StratifiedTruth& truth,
                 Measurement& m);
@@ -209,6 +249,7 @@ class FieldMeter {
   std::string m_device;
   std::unique_ptr<Renderer> m_renderer;
   GeometryId m_geometry;
+  std::vector<detail::ParameterBlock> m_blocks;  // fixed after construction: slots point at the names
   std::map<std::uint64_t, ViewTruth> m_truths;
   bool m_scanned = false;
 };
