@@ -112,3 +112,38 @@ TEST_CASE("calibrate: measured once, reused from the cache, redone after the GLS
   CHECK(pr::describe(r.field_knobs(g)) == pr::describe(expected.knobs));
   CHECK(r.plan().fields()[0].pick->evals == expected.evals);
 }
+
+namespace {
+struct Animation {
+  float radius = 1.0f;
+};
+PROCEDURAY_STRUCT(Animation, scalar, radius);
+constexpr pr::UniformSlot<Animation> animation_slot{.binding = 2, .name = "constants"};
+}  // namespace
+
+TEST_CASE("calibrate: a field reading a uniform is calibrated at the values set, and its table kept per value") {
+  TestContext t;
+  const std::filesystem::path dir = test_output_dir("calibrate_parameters");
+  std::filesystem::remove_all(dir);
+  const pr::DistanceField sized{.id = "sized", .glsl = "sized_ball.glsl", .function = "sized_ball_distance",
+                                .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .exact = true,
+                                .parameters = {pr::field_parameter(animation_slot, &Animation::radius)}};
+  pr::vk::FieldMeter meter(t.ctx, sized, {.shader_dirs = {test_source_dir() / "vk" / "shaders" / "fields"}, .repeats = 1});
+  float radius = 0.6f;
+  const auto cpu = [&](glm::dvec3 p) { return test_fields::sized_ball<double>::sized_ball_distance(p, radius); };
+  const pr::vk::CalibrateOptions o{.view = view(), .settings = {pr::march_base_knobs}, .cache_dir = dir};
+  CHECK_THROWS_WITH_AS(pr::vk::calibrate(meter, cpu, o), doctest::Contains("call FieldMeter::set(slot, value)"),
+                       pr::UsageError);
+  meter.set(animation_slot, {radius});
+  const pr::vk::Calibrated first = pr::vk::calibrate(meter, cpu, o);
+  CHECK_FALSE(first.cached);
+  REQUIRE(first.table.rows().size() == 1);
+  CHECK(first.table.rows()[0].false_misses <= 0.01);
+  CHECK(pr::vk::calibrate(meter, cpu, o).cached);
+  radius = 0.4f;  // the next frame of the animation: another table
+  meter.set(animation_slot, {radius});
+  const pr::vk::Calibrated second = pr::vk::calibrate(meter, cpu, o);
+  CHECK_FALSE(second.cached);
+  CHECK(second.file != first.file);
+  CHECK(t.ctx.validation_messages().empty());
+}
