@@ -15,8 +15,9 @@
 // does not depend on the machine. Time: the median of --frames traces after --warmup, by a
 // renderer without per-pixel outputs (the outputs are read from a second one), so it is the
 // frame as a user renders it. --alone (d3d12) renders each object by itself with its own
-// camera: a time per primitive. --shard i/n keeps the points whose index is i mod n, so a
-// batch system can split a sweep over machines; the CSVs concatenate (one header each).
+// camera: a time per primitive. --shard i/n keeps the i-th of n contiguous blocks of points
+// (1 <= i <= n, as proceduray-field and --sdf), so a batch system can split a sweep over
+// machines; the CSVs concatenate in shard order into the unsharded one (one header each).
 // The reference uses each object's default iterations: fewer iterations show as error.
 #include "02_paper_scene/accuracy.hpp"
 #include "common/run.hpp"
@@ -60,7 +61,7 @@ struct Options {
   std::vector<std::string> vary;
   std::vector<std::string> set;
   std::string preset;
-  std::string shard = "0/1";
+  std::string shard = "1/1";
   bool alone = false;
   bool validation = false;
   float time = 0.0f;
@@ -337,8 +338,8 @@ std::vector<std::pair<std::size_t, Point>> shard_points(const Options& o, const 
     pr::set_knob(scratch, name, value);
   }
   std::vector<std::pair<std::size_t, Point>> kept;
-  for (std::size_t index = 0; index < all.size(); ++index) {
-    if (index % shards != shard) continue;
+  const std::size_t begin = all.size() * (shard - 1) / shards, end = all.size() * shard / shards;  // contiguous blocks
+  for (std::size_t index = begin; index < end; ++index) {
     const Point& p = all[index];
     std::string first_error;
     bool any = false;
@@ -464,8 +465,10 @@ int run(const Options& o) {
   const auto size = parse_pair(o.size, 'x', "--size", "WxH with positive numbers, e.g. 256x256");
   const auto width = size.first, height = size.second;
   if (width == 0 || height == 0) throw BadInput("--size '" + o.size + "' is not WxH with positive numbers, e.g. 256x256");
-  const auto [shard, shards] = parse_pair(o.shard, '/', "--shard", "i/n with 0 <= i < n, e.g. 0/4");
-  if (shards == 0 || shard >= shards) throw BadInput("--shard '" + o.shard + "' is not i/n with 0 <= i < n, e.g. 0/4");
+  const auto [shard, shards] = parse_pair(o.shard, '/', "--shard", "i/n with 1 <= i <= n, e.g. 1/4");
+  if (shards == 0 || shard == 0 || shard > shards) {
+    throw BadInput("--shard '" + o.shard + "' is not i/n with 1 <= i <= n, e.g. 1/4");
+  }
   if (o.alone && o.scene != "d3d12") throw BadInput("--alone renders the D3D12 primitives one by one; use --scene d3d12");
   if (!o.preset.empty() && !o.vary.empty()) throw BadInput("give --preset or --vary, not both");
   const std::vector<Object> objects = selected(scene_objects(o.scene), o.objects);
@@ -535,7 +538,7 @@ int main(int argc, char** argv) {
   app.add_option("--vary", o.vary, "an axis of the grid: knob=value,value,... (repeatable; the grid is their product)");
   app.add_option("--set", o.set, "a knob for every point: knob=value (repeatable)");
   app.add_option("--preset", o.preset, "a shipped grid instead of --vary: methods")->check(CLI::IsMember({"methods"}));
-  app.add_option("--shard", o.shard, "i/n: only the points whose index is i mod n")->capture_default_str();
+  app.add_option("--shard", o.shard, "i/n: the i-th of n contiguous blocks of points (1 <= i <= n)")->capture_default_str();
   app.add_option("--csv", o.csv, "CSV to write: a header, then per point and object a row per pixel class");
   app.add_option("--calibration", o.calibration, "calibration table to write: per object and point its knobs, "
                  "evaluations and errors (march/calibration.hpp)");
