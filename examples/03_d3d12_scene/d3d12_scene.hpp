@@ -1,14 +1,15 @@
 // The D3D12 procedural-geometry sample's scene, host side: a triangle ground plane and one AABB
-// geometry per primitive, three procedural hit groups, radiance and shadow rays.
+// geometry per primitive, the sample's analytic and volumetric hit groups, each SDF a distance
+// field (its own hit groups, its intersection written by the library), radiance and shadow rays.
 //
 //   d3d12::D3d12Scene scene;                                  // the sample's grid on the ground
 //   proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options());
-//   renderer.set(d3d12::constants_slot, d3d12::default_constants(d3d12::sample_camera(w, h), time));
+//   d3d12::set_frame(renderer, d3d12::default_constants(d3d12::sample_camera(w, h), time));
 //
 // Hit-group table: 2 ray types, so 2 records per geometry (11 geometries: 22 records, the
 // sample's count). Geometry g's records are at 2g (radiance) and 2g + 1 (shadow):
 //
-//   hit region  | plane | plane_shadow | analytic | analytic_shadow | ... | signed_distance | signed_distance_shadow |
+//   hit region  | plane | plane_shadow | analytic | analytic_shadow | ... | fractal_pyramid | fractal_pyramid_shadow |
 //   geometry    |   ground (0)         |  box (1)                   | ... |  fractal_pyramid (10)                    |
 //
 // Animation needs no acceleration-structure work: primitives spin and the metaballs move in
@@ -65,17 +66,20 @@ class D3d12Scene : public pr::Scene<Interface> {
       const pr::TriangleMesh quad{{{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}}, {0, 2, 1, 0, 3, 2}};
       bind("plane", add_geometry("ground", pr::GeometryDesc::triangles(quad)), plane_record);
     }
-    for (const std::string group : {"analytic", "volumetric", "signed_distance"}) {
-      add_hit_group<ProceduralHit>(group, {.kind = pr::HitGroupKind::procedural, .closest_hit = "shade.rchit",
-                                           .intersection = group + ".rint"});
-      add_hit_group<ProceduralHit>(group + "_shadow", {.kind = pr::HitGroupKind::procedural, .intersection = group + ".rint"});
+    for (const std::string group : {"analytic", "volumetric"}) {
+      add_hit_group<pr::FieldHit>(group, {.kind = pr::HitGroupKind::procedural, .closest_hit = "shade.rchit",
+                                          .intersection = group + ".rint"});
+      add_hit_group<pr::FieldHit>(group + "_shadow", {.kind = pr::HitGroupKind::procedural, .intersection = group + ".rint"});
     }
     const pr::Aabb local{glm::vec3(-1.0f), glm::vec3(1.0f)};
     for (const Primitive& p : m_primitives) {
-      const glm::mat4 m = glm::translate(glm::mat4(1.0f), placement(p.kind, layout));
-      const pr::GeometryId g = add_geometry(std::string(primitive_names[p.kind]),
-                                            pr::GeometryDesc::procedural({local}, {pr::instance_transform(m)}));
-      bind(std::string(hit_group_of(p.kind)), g, record_of(p));
+      const pr::InstanceTransform at = pr::instance_transform(glm::translate(glm::mat4(1.0f), placement(p.kind, layout)));
+      const std::string name(primitive_names[p.kind]);
+      if (p.kind > metaballs) {
+        add_sdf(p, name, at);
+        continue;
+      }
+      bind(std::string(hit_group_of(p.kind)), add_geometry(name, pr::GeometryDesc::procedural({local}, {at})), record_of(p));
     }
   }
   D3d12Scene() : D3d12Scene(default_primitives()) {}
@@ -91,6 +95,19 @@ class D3d12Scene : public pr::Scene<Interface> {
   }
 
  private:
+  /// An SDF as a distance field of sdf_fields.glsl: its record's params and spin and the frame's
+  /// time are its parameters, its bound its params' (d3d12::lipschitz), its starting knobs its kind's.
+  void add_sdf(const Primitive& p, const std::string& name, pr::InstanceTransform at) {
+    const std::vector<pr::FieldParameter> parameters{pr::field_parameter(m_record, &PrimitiveRecord::params),
+                                                     pr::field_parameter(m_record, &PrimitiveRecord::spin),
+                                                     pr::field_parameter(constants_slot, &SceneConstants::time)};
+    pr::add_distance_field(*this, name, {.glsl = "sdf_fields.glsl", .function = name + "_field",
+                                         .aabb = {glm::vec3(-1.0f), glm::vec3(1.0f)}, .lipschitz = lipschitz(p),
+                                         .parameters = parameters, .knobs = capabilities(p.kind).defaults,
+                                         .instances = {at}, .closest_hit = {{m_radiance, "shade.rchit"}}},
+                           m_record, {record_of(p)});
+  }
+
   /// Both rays' records for geometry `g`: group `group` for radiance, `<group>_shadow` for shadow.
   void bind(const std::string& group, pr::GeometryId g, const PrimitiveRecord& r) {
     add_hit(m_radiance, hit_group_id(group), m_record, r, g);
@@ -104,5 +121,18 @@ class D3d12Scene : public pr::Scene<Interface> {
   pr::LocalSignatureId<PrimitiveRecord> m_record;
 };
 
+/// Sets a frame's constants on `renderer` (a D3d12Scene's), the view's pixel angle, and hands
+/// each SDF's knobs (SceneConstants::knobs, what a sweep rewrites) to its field: the library
+/// marches the SDFs, the volumetric shader reads the metaballs' from the uniform. Throws
+/// UsageError for knobs a field does not accept (naming it).
+inline void set_frame(pr::vk::Renderer& renderer, const SceneConstants& c) {
+  renderer.set(constants_slot, c);
+  renderer.set_pixel_angle(c.camera.pixel_angle);
+  for (const pr::PlannedField& f : renderer.plan().fields()) {
+    for (std::uint32_t k = metaballs + 1; k < primitive_count; ++k) {
+      if (f.field.id == primitive_names[k]) renderer.set_field_knobs(f.geometry, c.knobs[object_id(static_cast<PrimitiveKind>(k))]);
+    }
+  }
+}
 
 }  // namespace d3d12

@@ -9,20 +9,23 @@
 //   Rays:  radiance = 0 (miss radiance.rmiss), shadow = 1 (miss shadow.rmiss); shaders trace with
 //          the generated trace_radiance / trace_shadow: the declared flags, sbtRecordOffset =
 //          missIndex = ray index and sbtRecordStride = ray_count = 2.
-//   Hit groups, as in the sample (radiance | shadow):
+//   Hit groups (radiance | shadow): the sample's for the plane, the analytic and the volumetric
+//   primitives; each SDF is a distance field with its own (the library writes its intersection):
 //          plane            triangles   plane.rchit                     | no shaders
 //          analytic         procedural  shade.rchit + analytic.rint     | analytic.rint
 //          volumetric       procedural  shade.rchit + volumetric.rint   | volumetric.rint
-//          signed_distance  procedural  shade.rchit + signed_distance.rint | signed_distance.rint
-//   Every hit record carries a PrimitiveRecord: the primitive's kind and parameters select the
-//   intersection function (shaders/primitives/d3d12_primitives.glsl) and its material.
-//   Each primitive is one AABB geometry [-1, 1]^3 with one instance; local space = object space.
+//          <sdf name>       distance field (sdf_fields.glsl <name>_field): shade.rchit | the generated intersection
+//   Every hit record carries a PrimitiveRecord: the analytic and volumetric kinds' parameters
+//   select the intersection function (shaders/primitives/d3d12_primitives.glsl); an SDF's
+//   params and spin are its field's parameters. Each primitive is one AABB geometry [-1, 1]^3
+//   with one instance; local space = object space.
 #pragma once
 
 #include "../common/tracing.hpp"
 
 #include <proceduray/march/primitives.hpp>
 #include <proceduray/scene/constants.hpp>
+#include <proceduray/scene/field.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/shader/shader.hpp>
 
@@ -43,14 +46,9 @@ namespace pr = proceduray;
 
 /// SceneConstants::flags bits: shadows, reflections, and the debug view (r = object id,
 /// g and b = marching steps of the primary hit (low and high byte), a = 0 where any value was
-/// NaN or infinite, else 255). flag_count_misses, with flag_debug alone (no shadows or
-/// reflections): a radiance ray whose intersection function marched and missed still reports,
-/// at t = gl_RayTmaxEXT with hit kind counted_miss_kind, so that its steps reach the debug view
-/// (g, b) while r stays sky_id. Nothing behind t_max is hidden, but a later miss replaces an
-/// earlier one: meant for one primitive alone (Layout::isolated, the benchmark).
-inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_debug = 4u, flag_count_misses = 8u;
-/// gl_HitKindEXT of the reports flag_count_misses adds (real hits report 0).
-inline constexpr std::uint32_t counted_miss_kind = 1u;
+/// NaN or infinite, else 255). The evaluations of rays that miss are the steps output's
+/// (pr::Output::steps), which counts every ray.
+inline constexpr std::uint32_t flag_shadows = 1u, flag_reflections = 2u, flag_debug = 4u;
 /// Radiance segments at most (primary + one reflection), and the recursion that allows (+ shadow).
 inline constexpr std::uint32_t max_depth_limit = 2, max_recursion_depth = max_depth_limit + 1;
 
@@ -62,9 +60,9 @@ enum PrimitiveKind : std::uint32_t {
 inline constexpr std::array<std::string_view, primitive_count> primitive_names{
     "box", "spheres", "metaballs", "mini_spheres", "round_cube", "square_torus", "twisted_torus", "cog", "cylinder",
     "fractal_pyramid"};
-/// The sample's three intersection shaders: analytic, volumetric, signed distance.
+/// A primitive's hit group: the sample's analytic or volumetric one; an SDF's is its field's, by its name.
 inline std::string_view hit_group_of(PrimitiveKind k) {
-  return k <= spheres ? "analytic" : (k == metaballs ? "volumetric" : "signed_distance");
+  return k <= spheres ? "analytic" : (k == metaballs ? "volumetric" : primitive_names[k]);
 }
 /// Object ids of the debug view: 0 sky, 1 plane, 2 + kind for primitives.
 inline constexpr std::uint32_t sky_id = 0, plane_id = 1;
@@ -116,13 +114,6 @@ struct ShadowPayload {
 };
 PROCEDURAY_STRUCT(ShadowPayload, scalar, occluded);
 
-/// What every intersection shader reports (16 bytes).
-struct ProceduralHit {
-  glm::vec3 normal;  ///< local (= object) space, outward, unit
-  float steps;       ///< distance or field evaluations (0 for analytic primitives)
-};
-PROCEDURAY_STRUCT(ProceduralHit, scalar, normal, steps);
-
 /// Hit root arguments (the sample's local root arguments): which primitive, its parameters, its material.
 struct PrimitiveRecord {
   glm::vec3 albedo;         ///< base colour
@@ -136,7 +127,7 @@ struct PrimitiveRecord {
 PROCEDURAY_STRUCT(PrimitiveRecord, scalar, albedo, reflectance, params, kind, object_id, spin, checker);
 
 using Interface = pr::ShaderInterface<pr::Payload<RadiancePayload, ShadowPayload>, pr::RootComponent<SceneConstants>,
-                                      pr::RootArguments<PrimitiveRecord>, pr::Attributes<ProceduralHit>>;
+                                      pr::RootArguments<PrimitiveRecord>, pr::Attributes<pr::FieldHit>>;
 
 /// A primitive the host asks for: kind, parameters, material, spin.
 struct Primitive {
@@ -294,6 +285,9 @@ inline const pr::MarchCapabilities& capabilities(PrimitiveKind k) {
     c[square_torus] = lipschitz(0.5f, false, pr::MarchNormal::central);              // 19.7
     c[twisted_torus] = pr::sdf_capabilities();                                       // relaxed 1.5, 2 footprints: 34.2
     c[twisted_torus].defaults.threshold = 2.0f;
+    // Its bound is above 1 (1 + |twist| sqrt(2): 5.2 at the default twist): its field refuses
+    // plain sphere steps, which would overshoot (conservative at twist 0).
+    std::erase(c[twisted_torus].methods, pr::MarchMethod::sphere);
     c[cog] = lipschitz(0.5f, false, pr::MarchNormal::central);                       // 20.2
     c[cylinder] = lipschitz(2.0f, true, pr::MarchNormal::central);                   // 19.0
     c[fractal_pyramid] = lipschitz(0.25f, true, pr::MarchNormal::central);           // 27.3
@@ -302,7 +296,14 @@ inline const pr::MarchCapabilities& capabilities(PrimitiveKind k) {
   return k <= spheres ? analytic : marched[k];
 }
 
-/// The SceneConstants::knobs entry of kind k.
+/// An SDF primitive's Lipschitz bound at its params: its field's. sdf.glsl's sdf_lipschitz,
+/// here so the scene needs no GLSL compiled as C++ (d3d12_scene_test checks the two agree).
+inline float lipschitz(const Primitive& p) {
+  return p.kind == twisted_torus ? 1.0f + std::abs(p.params.y) * 1.4142136f : 1.0f;
+}
+
+/// The SceneConstants::knobs entry of kind k: the metaballs' are read from the uniform, an SDF's
+/// are handed to its field by set_frame (d3d12_scene.hpp).
 inline pr::MarchKnobs& knobs(SceneConstants& c, PrimitiveKind k) { return c.knobs[object_id(k)]; }
 
 /// Throws UsageError unless every marched kind's knobs are valid (march/knobs.hpp's validate).
@@ -328,7 +329,7 @@ inline SceneConstants default_constants(const pr::Camera& camera, float time) {
 /// Declares on `scene` the C++ constants above that the shaders read.
 template <class AnyScene>
 void add_constants(AnyScene& scene) {
-  PROCEDURAY_SCENE_CONSTANTS(scene, flag_shadows, flag_reflections, flag_debug, flag_count_misses, counted_miss_kind,
+  PROCEDURAY_SCENE_CONSTANTS(scene, flag_shadows, flag_reflections, flag_debug,
                              max_depth_limit);
 }
 

@@ -3,7 +3,7 @@
 // rays, animated over --frames with no acceleration-structure work. Prints timings and the SBT.
 //   --gallery PATH  also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)
 //   --bench         per primitive alone at --size: trace ms (median of 5), coverage, and mean
-//                   marching steps (distance or field evaluations) over the rays that hit, over
+//                   marching steps (distance or field evaluations, the normal's included) over the rays that hit, over
 //                   all rays that entered the primitive's AABB (hits and misses), and per pixel
 //   --relax W       sphere tracing's over-relaxation w in [1, 2) (default 1: plain)
 #include "../common/run.hpp"
@@ -17,6 +17,7 @@
 #include <cstring>
 #include <string>
 #include <exception>
+#include <memory>
 #include <vector>
 
 namespace {
@@ -33,22 +34,23 @@ void relax_sdfs(d3d12::SceneConstants& c, float w) {
   }
 }
 
-/// One benchmark row: median trace ms of 5 frames, then a debug frame that counts misses too
-/// (flag_count_misses) for coverage and steps. A ray entered the AABB when it hit or marched:
-/// every marching intersection takes at least one evaluation (analytic ones take none, so
-/// their AABB column is empty).
-void bench_row(proceduray::vk::Renderer& renderer, const std::string& name, d3d12::SceneConstants c, std::uint32_t w,
-               std::uint32_t h, std::uint32_t id) {
-  renderer.set(d3d12::constants_slot, c);
+/// One benchmark row: median trace ms of 5 frames on `timed` (no outputs: the frame a user
+/// renders), then a debug frame on `counted`, whose steps output counts every ray's evaluations
+/// (hits and misses, normals included), for coverage and steps. A ray entered the AABB when it
+/// hit or evaluated: every marching intersection takes at least one evaluation (analytic ones
+/// take none, so their AABB column is empty).
+void bench_row(proceduray::vk::Renderer& timed, proceduray::vk::Renderer& counted, const std::string& name,
+               d3d12::SceneConstants c, std::uint32_t w, std::uint32_t h, std::uint32_t id) {
+  d3d12::set_frame(timed, c);
   std::vector<double> ms;
-  for (int f = 0; f < 5; ++f) ms.push_back(renderer.render(w, h, false).trace_ms);
-  c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
-  renderer.set(d3d12::constants_slot, c);
-  const proceduray::vk::Frame debug = renderer.render(w, h);
+  for (int f = 0; f < 5; ++f) ms.push_back(timed.render(w, h, false).trace_ms);
+  c.flags = d3d12::flag_debug;
+  d3d12::set_frame(counted, c);
+  const proceduray::vk::Frame debug = counted.render(w, h);
   std::size_t hits = 0, entered = 0;
   double hit_steps = 0, all_steps = 0;
   for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
-    const double steps = debug.rgba[i * 4 + 1] + 256.0 * debug.rgba[i * 4 + 2];
+    const double steps = debug.outputs.steps[i];
     const bool hit = debug.rgba[i * 4] == id;
     hits += hit;
     entered += hit || steps > 0;
@@ -71,6 +73,10 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
               float relax) {
   d3d12::D3d12Scene scene(d3d12::default_primitives(), d3d12::Layout::isolated);
   proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options(o.cache));
+  // The benchmark's evaluation counts come from a second renderer with the steps output.
+  const d3d12::D3d12Scene counted_scene(d3d12::default_primitives(), d3d12::Layout::isolated, {proceduray::Output::steps});
+  std::unique_ptr<proceduray::vk::Renderer> counted;
+  if (bench) counted = std::make_unique<proceduray::vk::Renderer>(ctx, counted_scene, d3d12::renderer_options(o.cache));
   const std::uint32_t w = o.width, h = o.height, columns = 5, rows = 2;
   std::vector<std::uint8_t> tiles(std::size_t(w) * columns * h * rows * 4);
   if (bench) {
@@ -82,7 +88,7 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
     d3d12::SceneConstants c = d3d12::default_constants(d3d12::isolated_camera(kind, w, h), 0.0f);
     relax_sdfs(c, relax);
-    renderer.set(d3d12::constants_slot, c);
+    d3d12::set_frame(renderer, c);
     if (k == 0) renderer.warm_up();
     const proceduray::vk::Frame frame = renderer.render(w, h);
     const std::uint32_t tx = k % columns, ty = k / columns;
@@ -91,12 +97,12 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
                   std::size_t(w) * 4);
     }
     if (!bench) continue;
-    bench_row(renderer, std::string(d3d12::primitive_names[k]), c, w, h, d3d12::object_id(kind));
+    bench_row(renderer, *counted, std::string(d3d12::primitive_names[k]), c, w, h, d3d12::object_id(kind));
     if (kind == d3d12::metaballs) {
       d3d12::knobs(c, d3d12::metaballs).method = proceduray::MarchMethod::lipschitz;
-      bench_row(renderer, "  (Lipschitz)", c, w, h, d3d12::object_id(kind));
+      bench_row(renderer, *counted, "  (Lipschitz)", c, w, h, d3d12::object_id(kind));
       d3d12::knobs(c, d3d12::metaballs).method = proceduray::MarchMethod::segment;
-      bench_row(renderer, "  (segment)", c, w, h, d3d12::object_id(kind));
+      bench_row(renderer, *counted, "  (segment)", c, w, h, d3d12::object_id(kind));
     }
   }
   if (gallery) {
@@ -138,11 +144,11 @@ int main(int argc, char** argv) {
       relax_sdfs(c, relax);
       return c;
     };
-    renderer.set(d3d12::constants_slot, constants(0.0f));
+    d3d12::set_frame(renderer, constants(0.0f));
     examples::print_build(ctx, renderer);
     // Only the uniform time changes: no TLAS refit, no BLAS work (the run reports "TLAS refit: no").
     const examples::Run run = examples::run_frames(renderer, o, [&](std::uint32_t f) {
-      renderer.set(d3d12::constants_slot, constants(0.1f * static_cast<float>(f)));
+      d3d12::set_frame(renderer, constants(0.1f * static_cast<float>(f)));
     });
     examples::print_run(run, o);
     std::printf("%s", proceduray::format_sbt(renderer.plan(), renderer.sbt().layout()).c_str());

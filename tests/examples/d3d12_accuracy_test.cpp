@@ -31,7 +31,7 @@ struct Measured {
 Measured measure_d3d12(const vk::Context& ctx, const d3d12::SceneConstants& constants) {
   const d3d12::D3d12Scene scene(d3d12::accuracy_outputs);
   vk::Renderer renderer(ctx, scene, d3d12::renderer_options());
-  renderer.set(d3d12::constants_slot, constants);
+  d3d12::set_frame(renderer, constants);
   const vk::Frame f = renderer.render(width, height);
   Measured m;
   m.samples = accuracy::samples_from(std::size_t{width} * height, f.outputs.t, f.outputs.normal, f.outputs.steps, f.outputs.flags);
@@ -113,7 +113,7 @@ TEST_CASE("d3d12 accuracy: outputs do not change the colour image") {
   const Measured with = measure_d3d12(t.ctx, c);
   const d3d12::D3d12Scene plain;
   vk::Renderer renderer(t.ctx, plain, d3d12::renderer_options());
-  renderer.set(d3d12::constants_slot, c);
+  d3d12::set_frame(renderer, c);
   const vk::Frame without = renderer.render(width, height);
   CHECK(without.outputs.t.empty());
   CHECK(with.rgba == without.rgba);

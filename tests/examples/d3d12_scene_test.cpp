@@ -24,9 +24,11 @@ constexpr std::uint32_t size = 64;
 
 /// The isolated layout's renderer: one camera per primitive, nothing else in view.
 struct Alone {
-  d3d12::D3d12Scene scene{d3d12::default_primitives(), d3d12::Layout::isolated};
+  d3d12::D3d12Scene scene;
   vk::Renderer renderer;
-  explicit Alone(const vk::Context& ctx) : renderer(ctx, scene, d3d12::renderer_options()) {}
+  explicit Alone(const vk::Context& ctx, OutputSet outputs = {})
+      : scene(d3d12::default_primitives(), d3d12::Layout::isolated, outputs),
+        renderer(ctx, scene, d3d12::renderer_options()) {}
 };
 
 d3d12::SceneConstants debug_constants(const Camera& camera, float time, MarchMethod metaball_method = MarchMethod::fixed) {
@@ -81,6 +83,15 @@ TEST_CASE("d3d12 primitive kinds equal the GLSL consts") {
   CHECK(static_cast<std::uint32_t>(MarchThreshold::absolute) == d3d12_cpu::march_threshold_absolute);
   CHECK(static_cast<std::uint32_t>(MarchNormal::tetrahedral) == d3d12_cpu::march_normal_tetrahedral);
   CHECK(static_cast<std::uint32_t>(MarchIterations::by_distance) == d3d12_cpu::march_iterations_by_distance);
+  // The fields' bounds the host declares are sdf.glsl's, at the default params and at other twists.
+  for (d3d12::Primitive p : d3d12::default_primitives()) {
+    if (p.kind <= d3d12::metaballs) continue;
+    for (float twist : {0.0f, 3.0f, -8.0f}) {
+      if (p.kind == d3d12::twisted_torus) p.params.y = twist;
+      CAPTURE(d3d12::primitive_names[p.kind]);
+      CHECK(d3d12::lipschitz(p) == d3d12_cpu::sdf_lipschitz(p.kind, p.params));
+    }
+  }
 }
 
 TEST_CASE("d3d12 hit table has the sample's 22 records in geometry order") {
@@ -95,7 +106,9 @@ TEST_CASE("d3d12 hit table has the sample's 22 records in geometry order") {
     CHECK(sbt.pipeline().groups[hits[2 + 2 * k].group].name == std::string(d3d12::hit_group_of(kind)));
     CHECK(sbt.pipeline().groups[hits[3 + 2 * k].group].name == std::string(d3d12::hit_group_of(kind)) + "_shadow");
   }
-  CHECK(format_sbt(sbt, sbt.layout(DeviceLimits{})).find("signed_distance_shadow") != std::string::npos);
+  CHECK(format_sbt(sbt, sbt.layout(DeviceLimits{})).find("fractal_pyramid_shadow") != std::string::npos);
+  // The seven SDFs are distance fields, each with its generated intersection; the rest keep the sample's.
+  CHECK(sbt.fields().size() == d3d12::primitive_count - d3d12::mini_spheres);
 }
 
 TEST_CASE("d3d12 host rejects degenerate primitive parameters") {
@@ -132,7 +145,7 @@ TEST_CASE("d3d12 each primitive alone matches the CPU coverage with no NaN") {
       for (const d3d12::Primitive& p : alone.scene.primitives()) {
         if (method != MarchMethod::fixed && p.kind != d3d12::metaballs) continue;
         const d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), time, method);
-        alone.renderer.set(d3d12::constants_slot, c);
+        d3d12::set_frame(alone.renderer, c);
         const vk::Frame f = alone.renderer.render(size, size);
         // The CPU's answer at the GPU's hit threshold (0.5 pixel footprints), at 0.25 and 1, and
         // for rays moved by +-0.02 pixel: a pixel is certain where all five agree. Elsewhere
@@ -193,7 +206,7 @@ TEST_CASE("d3d12 rays through the AABB beside the primitive report no hit") {
   Alone alone(t.ctx);
   for (const d3d12::Primitive& p : alone.scene.primitives()) {
     const d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
-    alone.renderer.set(d3d12::constants_slot, c);
+    d3d12::set_frame(alone.renderer, c);
     const vk::Frame f = alone.renderer.render(size, size);
     std::size_t box_only = 0, reported = 0;
     for (std::uint32_t y = 0; y < size; ++y) {
@@ -226,7 +239,7 @@ TEST_CASE("d3d12 scene shows every primitive and animates without a TLAS refit")
   auto render = [&](float time) {
     d3d12::SceneConstants c = d3d12::default_constants(camera, time);
     c.flags = d3d12::flag_debug;
-    renderer.set(d3d12::constants_slot, c);
+    d3d12::set_frame(renderer, c);
     return renderer.render(w, h);
   };
   const vk::Frame first = render(0.0f);
@@ -260,48 +273,47 @@ TEST_CASE("d3d12 scene shows every primitive and animates without a TLAS refit")
 
 namespace {
 double steps_at(const vk::Frame& f, std::size_t pixel) { return f.rgba[pixel * 4 + 1] + 256.0 * f.rgba[pixel * 4 + 2]; }
+/// A pixel's march: the debug view's steps where it hit `id` (the march's, normals left out),
+/// the steps output elsewhere (a miss evaluates no normal).
+double march_steps(const vk::Frame& f, std::size_t pixel, std::uint32_t id) {
+  return f.rgba[pixel * 4] == id ? steps_at(f, pixel) : f.outputs.steps[pixel];
+}
 }  // namespace
 
-TEST_CASE("d3d12 counting misses keeps every hit and gives marched misses their steps") {
-  // flag_count_misses (the benchmark's debug frame) against the plain debug view and the CPU:
-  // object ids and hit steps unchanged; rays that enter the AABB and miss now carry their
-  // steps, the CPU's count for the same ray; rays outside the AABB take none.
+TEST_CASE("d3d12 the steps output gives marched misses their evaluations, the CPU's count") {
+  // The benchmark counts misses with the steps output: rays that enter the AABB and miss carry
+  // the CPU's count for the same ray; rays outside the AABB take none. The SDFs are distance
+  // fields (the library's intersection), the metaballs the example's shader: both count alike.
   TestContext t;
-  Alone alone(t.ctx);
+  Alone alone(t.ctx, {Output::steps});
   for (const d3d12::Primitive& p : alone.scene.primitives()) {
     if (p.kind < d3d12::metaballs) continue;  // analytic: no steps to count
     d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
-    alone.renderer.set(d3d12::constants_slot, c);
-    const vk::Frame plain = alone.renderer.render(size, size);
-    c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
-    alone.renderer.set(d3d12::constants_slot, c);
-    const vk::Frame counted = alone.renderer.render(size, size);
-    std::size_t ids_changed = 0, hit_steps_changed = 0, misses = 0, uncounted = 0, outside_counted = 0;
+    d3d12::set_frame(alone.renderer, c);
+    const vk::Frame f = alone.renderer.render(size, size);
+    REQUIRE(f.outputs.steps.size() == std::size_t(size) * size);
+    std::size_t misses = 0, uncounted = 0, outside_counted = 0;
     double gpu_miss_steps = 0, cpu_miss_steps = 0;
     for (std::uint32_t y = 0; y < size; ++y) {
       for (std::uint32_t x = 0; x < size; ++x) {
         const std::size_t i = std::size_t(y) * size + x;
-        const bool hit = plain.rgba[i * 4] == d3d12::object_id(p.kind);
-        ids_changed += plain.rgba[i * 4] != counted.rgba[i * 4];
-        hit_steps_changed += hit && steps_at(plain, i) != steps_at(counted, i);
+        const bool hit = f.rgba[i * 4] == d3d12::object_id(p.kind);
         const CpuPixel cpu = cpu_pixel(p, c, x, y);
-        outside_counted += !cpu.in_aabb && steps_at(counted, i) != 0;
+        outside_counted += !cpu.in_aabb && f.outputs.steps[i] != 0;
         if (hit || cpu.hit || !cpu.in_aabb) continue;
         ++misses;
-        uncounted += steps_at(counted, i) == 0;
-        gpu_miss_steps += steps_at(counted, i);
+        uncounted += f.outputs.steps[i] == 0;
+        gpu_miss_steps += f.outputs.steps[i];
         cpu_miss_steps += cpu.steps;
       }
     }
     CAPTURE(d3d12::primitive_names[p.kind]);
     CAPTURE(gpu_miss_steps);
     CAPTURE(cpu_miss_steps);
-    CHECK(ids_changed == 0);
-    CHECK(hit_steps_changed == 0);
     CHECK(misses > 100);      // the view has rays through the AABB beside the primitive
     CHECK(uncounted == 0);    // each of them marched at least once and says so
     CHECK(outside_counted == 0);
-    // Same GLSL, float on both sides: step totals agree closely (rounding may move a step).
+    // Same GLSL marcher, float on both sides: step totals agree closely (rounding may move a step).
     CHECK(std::abs(gpu_miss_steps - cpu_miss_steps) <= 0.02 * cpu_miss_steps);
   }
 }
@@ -310,20 +322,19 @@ TEST_CASE("d3d12 over-relaxation is a run-time knob that keeps the image and sav
   // The twisted torus (steps divided by its Lipschitz bound 5.2): w = 1.6 from the uniform,
   // same hits as w = 1, fewer steps over all rays (the CPU test of the GLSL sees 0.65).
   TestContext t;
-  Alone alone(t.ctx);
+  Alone alone(t.ctx, {Output::steps});
   const d3d12::Primitive& p = alone.scene.primitives()[d3d12::twisted_torus];
   REQUIRE(p.kind == d3d12::twisted_torus);
   std::array<double, 2> steps{};
   std::array<vk::Frame, 2> frames;
   for (int k = 0; k < 2; ++k) {
     d3d12::SceneConstants c = debug_constants(d3d12::isolated_camera(p.kind, size, size), 0.0f);
-    c.flags = d3d12::flag_debug | d3d12::flag_count_misses;
     MarchKnobs& torus = d3d12::knobs(c, d3d12::twisted_torus);
     torus.method = k == 0 ? MarchMethod::lipschitz : MarchMethod::relaxed;
     torus.relaxation = 1.6f;
-    alone.renderer.set(d3d12::constants_slot, c);
+    d3d12::set_frame(alone.renderer, c);
     frames[k] = alone.renderer.render(size, size);
-    for (std::size_t i = 0; i < std::size_t(size) * size; ++i) steps[k] += steps_at(frames[k], i);
+    for (std::size_t i = 0; i < std::size_t(size) * size; ++i) steps[k] += march_steps(frames[k], i, d3d12::object_id(p.kind));
   }
   std::size_t differ = 0;
   for (std::size_t i = 0; i < std::size_t(size) * size; ++i) differ += frames[0].rgba[i * 4] != frames[1].rgba[i * 4];

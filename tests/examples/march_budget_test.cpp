@@ -34,7 +34,7 @@ Measured render_alone(const vk::Context& ctx, d3d12::PrimitiveKind kind, const M
   d3d12::SceneConstants c = d3d12::default_constants(d3d12::isolated_camera(kind, width, height), 0.0f);
   c.flags = 0;
   d3d12::knobs(c, kind) = knobs;
-  renderer.set(d3d12::constants_slot, c);
+  d3d12::set_frame(renderer, c);
   const vk::Frame f = renderer.render(width, height);
   const std::vector<accuracy::Sample> samples =
       accuracy::samples_from(std::size_t{width} * height, f.outputs.t, f.outputs.normal, f.outputs.steps, f.outputs.flags);

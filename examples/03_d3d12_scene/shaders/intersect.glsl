@@ -1,11 +1,12 @@
-// The body of the three intersection shaders: the record's primitive, intersected in local
+// The body of the analytic and volumetric intersection shaders (the SDFs are distance fields,
+// whose intersection the library writes): the record's primitive, intersected in local
 // (= object) space with the knobs from `constants`, reported when valid for this ray
 // (t in [gl_RayTminEXT, gl_RayTmaxEXT], cull flags honoured: the sample's IsAValidHit).
 // The march follows the primitive's own knobs, constants.knobs[arguments.object_id].
 // Marching runs along the unit object-space direction: world lengths in the knobs are divided
-// by the instance's scale; the footprint term is an angle and needs none. With flag_count_misses a radiance ray that marched and
-// missed reports at t_max with counted_miss_kind, carrying its steps (see d3d12_types.hpp).
-// With per-pixel outputs it adds its evaluations and sets the exhausted and NaN flags.
+// by the instance's scale; the footprint term is an angle and needs none. It reports FieldHit,
+// as the fields do (threshold: the knobs' at the hit, 0 for analytic hits). With per-pixel
+// outputs it adds its evaluations and sets the exhausted and NaN flags.
 #ifndef D3D12_INTERSECT_GLSL
 #define D3D12_INTERSECT_GLSL
 
@@ -32,18 +33,10 @@ void intersect_record_primitive() {
   if (!found && arguments.kind >= primitive_metaballs && steps >= float(k.max_steps)) output_flags(output_flag_exhausted);
   if (found && (isnan(t) || any(isnan(n)))) output_flags(output_flag_nan);
 #endif
-  if (!found) {
-    // Shadow rays skip closest-hit shaders and must not be occluded: they never report.
-    if ((constants.flags & flag_count_misses) != 0u && steps > 0.0 &&
-        (gl_IncomingRayFlagsEXT & gl_RayFlagsSkipClosestHitShaderEXT) == 0u) {
-      hit.normal = vec3(0.0, 1.0, 0.0);
-      hit.steps = steps;
-      reportIntersectionEXT(gl_RayTmaxEXT, counted_miss_kind);
-    }
-    return;
-  }
+  if (!found) return;
   hit.normal = n;
   hit.steps = steps;
+  hit.threshold = steps > 0.0 ? march_knobs_threshold(k, constants.camera.pixel_angle, t) : 0.0;
   reportIntersectionEXT(t, 0u);
 }
 
