@@ -174,19 +174,13 @@ inline double footprint(const ReferenceScene& s, const Placed& p, double t_lo) {
 }  // namespace detail
 
 /// Inside the power-8 Mandelbulb truncated after n steps (object space): |z| <= 2 throughout.
+/// The map is mandelbulb.glsl's trigonometry-free z^8, in double (tests/shaders/mandelbulb_test
+/// checks it against the angle form).
 inline bool mandelbulb_inside(glm::dvec3 p, std::uint32_t n) {
   glm::dvec3 z = p;
   for (std::uint32_t i = 0; i < n; ++i) {
-    const double r = glm::length(z);
-    if (r > 2.0) return false;
-    if (r == 0.0) {  // 0^8 = 0, without angles
-      z = p;
-      continue;
-    }
-    const double theta = 8.0 * std::acos(std::clamp(z.y / r, -1.0, 1.0));  // from +y, as mandelbulb.glsl
-    const double phi = 8.0 * std::atan2(z.x, z.z);
-    const double r8 = std::pow(r, 8.0);
-    z = r8 * glm::dvec3(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)) + p;
+    if (glm::length(z) > 2.0) return false;
+    z = proceduray::glsl::mandelbulb<double>::mandelbulb_power8(z) + p;
   }
   return glm::length(z) <= 2.0;
 }
