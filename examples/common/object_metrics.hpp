@@ -19,6 +19,7 @@
 // hit of one object in front of another counts against the one in front.
 #pragma once
 
+#include <proceduray/accuracy/evaluation_split.hpp>
 #include <proceduray/accuracy/metrics.hpp>
 #include <proceduray/accuracy/stratified.hpp>
 #include <proceduray/error.hpp>
@@ -45,6 +46,36 @@ inline proceduray::accuracy::Metrics measure_frame(const proceduray::accuracy::F
   return acc::measure_stratified(frame, samples, truth);  // throws for sizes that differ
 }
 
+/// The reference seen by one object: its hits where it sees `object`, misses elsewhere.
+template <class Id>
+std::vector<proceduray::accuracy::Reference> object_reference(std::span<const proceduray::accuracy::Reference> reference,
+                                                              std::span<const Id> reference_objects, Id object) {
+  namespace acc = proceduray::accuracy;
+  std::vector<acc::Reference> refs(reference.begin(), reference.end());
+  for (std::size_t i = 0; i < refs.size() && i < reference_objects.size(); ++i) {
+    if (refs[i].outcome == acc::Outcome::hit && reference_objects[i] != object) refs[i] = {.outcome = acc::Outcome::miss};
+  }
+  return refs;
+}
+
+/// Where the frame's evaluations go, by the object's view of the reference: the rays that hit it,
+/// those that miss it within 2 pixels of its silhouette, the rest (accuracy/evaluation_split.hpp).
+/// A pixel's evaluations are all its ray's, so a near miss in front of another object counts that one's too.
+template <class Id>
+proceduray::accuracy::EvaluationSplit split_object(const proceduray::accuracy::Frame& frame,
+                                                   std::span<const proceduray::accuracy::Reference> reference,
+                                                   std::span<const Id> reference_objects,
+                                                   std::span<const proceduray::accuracy::Sample> samples, Id object,
+                                                   std::span<const std::uint32_t> weights = {}) {
+  if (reference_objects.size() != reference.size()) {
+    throw proceduray::UsageError("examples::split_object: " + std::to_string(reference_objects.size()) +
+                                 " reference object ids for " + std::to_string(reference.size()) +
+                                 " pixels; pass one id per pixel of the same frame");
+  }
+  const std::vector<proceduray::accuracy::Reference> refs = object_reference(reference, reference_objects, object);
+  return proceduray::accuracy::split_evaluations(frame, refs, samples, weights);
+}
+
 template <class Id>
 proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& frame,
                                              std::span<const proceduray::accuracy::Reference> reference,
@@ -59,11 +90,8 @@ proceduray::accuracy::Metrics measure_object(const proceduray::accuracy::Frame& 
                                  std::to_string(seen.size()) + " rendered ids for " + std::to_string(samples.size()) +
                                  " samples; pass one id per pixel of the same frame");
   }
-  std::vector<acc::Reference> refs(reference.begin(), reference.end());
+  std::vector<acc::Reference> refs = object_reference(reference, reference_objects, object);
   std::vector<acc::Sample> mine(samples.begin(), samples.end());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    if (refs[i].outcome == acc::Outcome::hit && reference_objects[i] != object) refs[i] = {.outcome = acc::Outcome::miss};
-  }
   for (std::size_t i = 0; i < mine.size(); ++i) {
     if (mine[i].hit && seen[i] != object) mine[i].hit = false;
   }

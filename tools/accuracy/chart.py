@@ -24,7 +24,7 @@ import math
 import sys
 
 KNOBS = ('max_steps', 'threshold_px', 'epsilon', 'step_scale')
-COSTS = ('object_evals', 'trace_ms', 'steps_mean')
+COSTS = ('object_evals', 'trace_ms', 'steps_mean', 'evals_per_hit', 'evals_per_near_miss')
 
 
 def fail(message):

@@ -57,6 +57,7 @@ struct ObjectRow {
   std::string label;
   acc::Metrics metrics;
   double steps = 0.0;  // mean evaluations per ray that sees the object (reference or render)
+  acc::EvaluationSplit split;  // by the object's reference: its hits, its near misses, the rest
 };
 
 /// What a scene's run gives the report.
@@ -65,6 +66,7 @@ struct Measurement {
   std::string reference;        // the reference line of the report
   double trace_ms = 0.0;
   acc::Metrics all;
+  acc::EvaluationSplit split;  // the whole frame's, by the reference
   std::vector<ObjectRow> objects;
   std::vector<acc::Label> labels;  // the CSV's knob columns
   std::vector<std::uint32_t> steps;  // per pixel: the camera ray's evaluations (heat map)
@@ -72,15 +74,16 @@ struct Measurement {
 
 /// One line per object: what a reader compares first.
 void print_objects(const std::vector<ObjectRow>& rows) {
-  std::printf("\n%-15s %6s %8s %9s %9s %9s %9s %9s %9s %9s\n", "object", "hits", "sil1 fh%", "sil2 fh%", "miss%",
-              "depth med", "depth p99", "depth max", "normal med", "steps");
+  std::printf("\n%-15s %6s %8s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "object", "hits", "sil1 fh%", "sil2 fh%", "miss%",
+              "depth med", "depth p99", "depth max", "normal med", "steps", "ev/hit", "ev/near");
   for (const ObjectRow& row : rows) {
     const acc::Metrics& m = row.metrics;
     const acc::ClassStats& a = m.all;
-    std::printf("%-15s %6llu %8.2f %9.2f %9.2f %9.3g %9.3g %9.3g %9.3g %9.3g\n", row.label.c_str(),
+    std::printf("%-15s %6llu %8.2f %9.2f %9.2f %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g\n", row.label.c_str(),
                 static_cast<unsigned long long>(a.both_hit), 100.0 * m[acc::PixelClass::silhouette_1px].false_hit_rate(),
                 100.0 * m[acc::PixelClass::silhouette_2px].false_hit_rate(), 100.0 * a.false_miss_rate(),
-                a.depth.median, a.depth.p99, a.depth.max, a.normal_degrees.median, row.steps);
+                a.depth.median, a.depth.p99, a.depth.max, a.normal_degrees.median, row.steps, row.split.hit.per_ray(),
+                row.split.near_miss.per_ray());
   }
 }
 
@@ -167,13 +170,18 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   out.trace_ms = frame.trace_ms;
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = examples::measure_frame(truth.frame(), samples, truth.pixels, truth.weights, truth.stride);
+  out.split = acc::split_evaluations(truth.frame(), truth.pixels, samples, truth.weights);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
     out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),
                            examples::mean_steps(std::span<const paper::ObjectId>(truth.objects),
                                                 std::span<const acc::Sample>(samples),
                                                 std::span<const paper::ObjectId>(seen), id,
-                                                std::span<const std::uint32_t>(truth.weights))});
+                                                std::span<const std::uint32_t>(truth.weights)),
+                           examples::split_object(truth.frame(), std::span<const acc::Reference>(truth.pixels),
+                                                  std::span<const paper::ObjectId>(truth.objects),
+                                                  std::span<const acc::Sample>(samples), id,
+                                                  std::span<const std::uint32_t>(truth.weights))});
   }
   out.labels = knob_labels(constants);
   return out;
@@ -196,12 +204,16 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   out.trace_ms = frame.trace_ms;
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
+  out.split = acc::split_evaluations(truth.frame(), truth.pixels, samples);
   const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);
   for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) {
     out.objects.push_back({d3d12::object_name(id), d3d12::measure_object(truth, samples, seen, id),
                            examples::mean_steps(std::span<const std::uint32_t>(truth.objects),
                                                 std::span<const acc::Sample>(samples),
-                                                std::span<const std::uint32_t>(seen), id)});
+                                                std::span<const std::uint32_t>(seen), id),
+                           examples::split_object(truth.frame(), std::span<const acc::Reference>(truth.pixels),
+                                                  std::span<const std::uint32_t>(truth.objects),
+                                                  std::span<const acc::Sample>(samples), id)});
   }
   out.labels = knob_labels(constants);
   return out;
@@ -221,7 +233,12 @@ int run(const Knobs& k) {
   acc::write_table(std::cout, m.all);
   std::fflush(stdout);
   print_objects(m.objects);
-  std::printf("(depth in pixel footprints; fh%%: false hits among the silhouette band's rays; steps: mean per ray that sees the object)\n");
+  std::printf("(depth in pixel footprints; fh%%: false hits among the silhouette band's rays; steps: mean per ray that sees the object;\n"
+              " ev/hit, ev/near: mean evaluations of the rays that hit it, and of those that miss it within 2 pixels of its silhouette)\n");
+  const acc::EvaluationSplit& e = m.split;
+  std::printf("evaluations per ray, whole frame: hits %.2f (%.0f%%), near misses %.2f (%.0f%%), far misses %.2f (%.0f%%)\n",
+              e.hit.per_ray(), 100.0 * e.share(e.hit), e.near_miss.per_ray(), 100.0 * e.share(e.near_miss),
+              e.far_miss.per_ray(), 100.0 * e.share(e.far_miss));
   if (!k.steps_csv.empty()) {
     // A row per image row, a column per pixel: tools/accuracy/heatmap.py draws it.
     std::ofstream out(k.steps_csv, std::ios::trunc);
@@ -247,11 +264,16 @@ int run(const Knobs& k) {
     labels.push_back({"trace_ms", std::to_string(m.trace_ms)});
     labels.push_back({"object", "all"});
     labels.push_back({"object_evals", std::to_string(m.all.all.steps.mean)});  // per ray that sees the object
+    // Evaluations per ray that hits, and per near miss (evaluation_split.hpp), by the object's reference.
+    labels.push_back({"evals_per_hit", std::to_string(m.split.hit.per_ray())});
+    labels.push_back({"evals_per_near_miss", std::to_string(m.split.near_miss.per_ray())});
     if (!k.append || out.tellp() == 0) acc::write_csv_header(out, labels);
     acc::write_csv_rows(out, m.all, labels);
     for (const ObjectRow& row : m.objects) {
-      labels[labels.size() - 2].value = row.label;
-      labels.back().value = std::to_string(row.steps);
+      labels[labels.size() - 4].value = row.label;
+      labels[labels.size() - 3].value = std::to_string(row.steps);
+      labels[labels.size() - 2].value = std::to_string(row.split.hit.per_ray());
+      labels.back().value = std::to_string(row.split.near_miss.per_ray());
       acc::write_csv_rows(out, row.metrics, labels);
     }
     std::printf("\nwrote %s\n", k.csv.c_str());

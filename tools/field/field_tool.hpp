@@ -215,6 +215,10 @@ inline int measure(const FieldOptions& o, const std::vector<std::string>& knobs,
               "gpu %.3f ms, truth %.0f ms%s\n", static_cast<unsigned long long>(m.wrong_surface),
               100.0 * m.wrong_surface_rate, m.evaluations_per_ray, m.evaluations_per_box_ray, m.gpu_ms, m.truth_ms,
               m.truth_cached ? " (cached)" : "");
+  const pr::accuracy::EvaluationSplit& e = m.evaluation_split;
+  std::printf("evaluations per ray by class: hits %.2f (%.0f%% of all), near misses %.2f (%.0f%%), far misses %.2f "
+              "(%.0f%%)\n", e.hit.per_ray(), 100.0 * e.share(e.hit), e.near_miss.per_ray(), 100.0 * e.share(e.near_miss),
+              e.far_miss.per_ray(), 100.0 * e.share(e.far_miss));
   if (o.stride > 1) {
     std::printf("stratified truth (stride %u): false misses %.4g%% (95%% bound %.4g%%), wrong surface %.4g%% "
                 "(95%% bound %.4g%%)\n", o.stride, 100.0 * m.confidence.false_miss_rate,
@@ -226,6 +230,9 @@ inline int measure(const FieldOptions& o, const std::vector<std::string>& knobs,
     std::vector<pr::accuracy::Label> labels{{"field", s.field.id}, {"size", o.size}};
     for (const auto& [name, value] : pr::knob_values(k)) labels.push_back({name, value});
     labels.push_back({"evals_per_box_ray", std::to_string(m.evaluations_per_box_ray)});
+    labels.push_back({"evals_per_hit", std::to_string(m.evaluation_split.hit.per_ray())});
+    labels.push_back({"evals_per_near_miss", std::to_string(m.evaluation_split.near_miss.per_ray())});
+    labels.push_back({"evals_per_far_miss", std::to_string(m.evaluation_split.far_miss.per_ray())});
     labels.push_back({"gpu_ms", std::to_string(m.gpu_ms)});
     pr::accuracy::write_csv(out, m.metrics, labels);
     std::printf("wrote %s\n", csv.c_str());

@@ -237,6 +237,7 @@ PROCEDURAY_DECL void FieldMeter::rendered(const MarchKnobs& knobs, const Measure
       pixels, frame.outputs.t, frame.outputs.normal, frame.outputs.steps, frame.outputs.flags);
   const accuracy::Frame grid{.width = view.width, .height = view.height, .pixel_angle = view.camera.pixel_angle};
   m.metrics = accuracy::measure_stratified(grid, samples, truth);
+  m.evaluation_split = accuracy::split_evaluations(grid, truth.pixels, samples, truth.weight);
   m.confidence = accuracy::confidence(grid, samples, truth);
   m.wrong_surface = m.metrics.all.wrong_surface;
   std::uint64_t evaluations = 0, box_rays = 0;

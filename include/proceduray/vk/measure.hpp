@@ -39,6 +39,7 @@
 
 #include <proceduray/config.hpp>
 
+#include <proceduray/accuracy/evaluation_split.hpp>
 #include <proceduray/accuracy/field_truth.hpp>
 #include <proceduray/accuracy/metrics.hpp>
 #include <proceduray/accuracy/parallel.hpp>
@@ -90,6 +91,9 @@ struct Measurement {
   double wrong_surface_rate = 0.0;    ///< wrong_surface / the truth's hits (0 when none)
   double evaluations_per_ray = 0.0;   ///< mean evaluations per camera ray, every ray
   double evaluations_per_box_ray = 0.0;  ///< mean over the rays that evaluated the field (entered its box)
+  /// The evaluations of the rays that hit, that miss within 2 pixels of a silhouette, and that
+  /// miss farther out (by the truth): where a setting's cost goes.
+  accuracy::EvaluationSplit evaluation_split;
   double gpu_ms = 0.0;                ///< median trace time of the frames
   double truth_ms = 0.0;              ///< wall time of the truth (0 when it came from a cache)
   bool truth_cached = false;          ///< the truth came from memory or the cache folder
