@@ -74,6 +74,14 @@ TEST_CASE("measure: the truth of a ball field is the closed form's, and its defa
   CHECK(m.metrics[acc::PixelClass::interior].normal_degrees.p95 < 1.0);
   CHECK(m.evaluations_per_ray > 1.0);
   CHECK(m.gpu_ms > 0.0);
+  // Every ray in one class of the split, its evaluations the frame's; a ray grazing the ball
+  // marches longer than one that misses it by far, or than one that hits it head on.
+  const acc::EvaluationSplit& e = m.evaluation_split;
+  CHECK(e.hit.rays + e.near_miss.rays + e.far_miss.rays == double(v.width) * v.height);
+  CHECK(e.hit.rays == double(hits));
+  CHECK(e.evaluations() == doctest::Approx(m.evaluations_per_ray * v.width * v.height));
+  CHECK(e.near_miss.per_ray() > e.far_miss.per_ray());
+  CHECK(e.near_miss.per_ray() > e.hit.per_ray() - 6.0);  // the hits' include the normal's 6
 }
 
 TEST_CASE("measure: a coarse setting of a field with L > 1 measures worse than the default") {
