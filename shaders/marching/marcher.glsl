@@ -154,6 +154,10 @@ PROCEDURAY_INLINE bool PROCEDURAY_MARCHER_FN(_trace)(pr_real3 o, pr_real3 u, pr_
     outside = s;
     previous_radius = r;
     pr_real threshold = march_epsilon(m, s);
+    if (d < threshold && m.hit_rule == march_hit_classic && side > PR(0.0)) {
+      s_hit = s;  // the classic rule: below the threshold is a hit, crossing or not
+      return true;
+    }
     if (d < threshold) {
       // Near a surface or grazing one: probe on for an inside point instead of stopping here
       // (see the header); a probe past s_hi stops there once.

@@ -78,7 +78,11 @@
 //                   whatever the distance says, and refines the first crossing.
 //   hit_rule        march_hit_refined: bisect as above; march_hit_unrefined: report the last
 //                   outside point as it is (up to one probe, <= the threshold, or one fixed
-//                   step short), saving the ~5 bisections.
+//                   step short), saving the ~5 bisections; march_hit_classic: the classic
+//                   rule, kept as a method so the charts show what it costs: the first point
+//                   of an outside approach whose distance is below the threshold is the hit,
+//                   no sign change needed (rays passing within the threshold are hits:
+//                   silhouettes grow by the threshold, and estimates stop short).
 #ifndef PROCEDURAY_MARCHING_SPHERE_TRACE_GLSL
 #define PROCEDURAY_MARCHING_SPHERE_TRACE_GLSL
 
@@ -92,7 +96,7 @@ struct MarchSettings {
   pr_real step_scale;
   pr_real over_relaxation;
   uint fixed_steps;  // 0: sphere tracing; n > 0: n equal steps across [s_lo, s_hi], then the crossing's refinement
-  uint hit_rule;     // march_hit_refined (0) or march_hit_unrefined (1)
+  uint hit_rule;     // march_hit_refined (0), march_hit_unrefined (1) or march_hit_classic (2)
 };
 
 /// MarchSettings::hit_rule: bisect the crossing to march_refine_fraction of the threshold, or
@@ -100,6 +104,7 @@ struct MarchSettings {
 /// probe or fixed step short of the surface).
 PROCEDURAY_CONST uint march_hit_refined = 0u;
 PROCEDURAY_CONST uint march_hit_unrefined = 1u;
+PROCEDURAY_CONST uint march_hit_classic = 2u;
 
 /// How a normal is taken by differences (a marcher's P_normal; MarchNormal's values).
 PROCEDURAY_CONST uint march_normal_analytic = 0u;

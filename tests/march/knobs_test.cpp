@@ -32,6 +32,8 @@ TEST_CASE("march knobs - every knob round-trips through its text") {
   CHECK(describe(b).find("method=fixed max_steps=77 threshold_mode=absolute threshold=0.125") == 0);
   CHECK(with("refine", "off").refine == 0);
   CHECK(with("refine", "on", with("refine", "off")).refine == 1);
+  CHECK(with("refine", "classic").refine == 2);  // the classic rule, a method on the charts
+  CHECK(describe(with("refine", "classic")).find("refine=classic") != std::string::npos);
 }
 
 TEST_CASE("march knobs - unknown names and values list the valid ones") {
@@ -91,8 +93,9 @@ TEST_CASE("march knobs - validate names the geometry, the knob, the value and th
   CHECK_THROWS_WITH_AS(validate(bad_enum, sdf, "cog"), doctest::Contains("threshold_mode 7 is unknown; valid: footprint, absolute"),
                        UsageError);
   bad_enum = march_base_knobs;
-  bad_enum.refine = 2;
-  CHECK_THROWS_WITH_AS(validate(bad_enum, sdf, "cog"), doctest::Contains("refine 2 must be 0 (off) or 1 (on)"), UsageError);
+  bad_enum.refine = 3;
+  CHECK_THROWS_WITH_AS(validate(bad_enum, sdf, "cog"), doctest::Contains("refine 3 must be 0 (off), 1 (on) or 2 (classic)"),
+                       UsageError);
   const MarchCapabilities analytic{"analytic", {}, {MarchNormal::analytic}, 0, march_base_knobs};
   CHECK_THROWS_WITH_AS(validate(march_base_knobs, analytic, "box"), doctest::Contains("not marched (analytic)"), UsageError);
 }

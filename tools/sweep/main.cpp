@@ -146,6 +146,9 @@ std::vector<Point> methods_preset() {
   points.push_back({{"method", "relaxed"}, {"relaxation", "1.8"}, {"threshold", "0.5"}});
   points.push_back({{"method", "sphere"}, {"threshold", "0.5"}, {"refine", "off"}});
   points.push_back({{"method", "lipschitz"}, {"threshold", "0.5"}, {"refine", "off"}});
+  // The classic rule (a hit below the threshold, no crossing): what the sign change buys.
+  points.push_back({{"method", "sphere"}, {"threshold", "0.5"}, {"refine", "classic"}});
+  points.push_back({{"method", "lipschitz"}, {"threshold", "0.5"}, {"refine", "classic"}});
   points.push_back({{"method", "sphere"}, {"threshold", "0.5"}, {"normal", "tetrahedral"}});
   points.push_back({{"method", "lipschitz"}, {"threshold", "0.5"}, {"normal", "tetrahedral"}});
   points.push_back({{"method", "sphere"}, {"threshold", "0.5"}, {"iterations", "4"}});

@@ -31,7 +31,8 @@ PROCEDURAY_DECL void set_knob(MarchKnobs& k, std::string_view name, std::string_
   else if (name == "refine") {
     if (value == "on" || value == "1") k.refine = 1;
     else if (value == "off" || value == "0") k.refine = 0;
-    else throw UsageError("march knobs: refine '" + std::string(value) + "' is not on/off; valid: on, off, 1, 0");
+    else if (value == "classic" || value == "2") k.refine = 2;
+    else throw UsageError("march knobs: refine '" + std::string(value) + "' is not on/off/classic; valid: on, off, classic, 1, 0, 2");
   } else if (name == "normal") k.normal = detail::parse_name<MarchNormal>(value, march_normal_names, name);
   else if (name == "normal_scale") k.normal_scale = parse_number<float>(name, value);
   else if (name == "iterations") k.iterations = parse_number<std::uint32_t>(name, value);
@@ -53,7 +54,7 @@ PROCEDURAY_DECL std::vector<std::pair<std::string, std::string>> knob_values(con
           {"step_scale", detail::number(k.step_scale)},
           {"relaxation", detail::number(k.relaxation)},
           {"fixed_steps", std::to_string(k.fixed_steps)},
-          {"refine", k.refine != 0 ? "on" : "off"},
+          {"refine", k.refine == 2 ? "classic" : (k.refine != 0 ? "on" : "off")},
           {"normal", name_of(march_normal_names, k.normal)},
           {"normal_scale", detail::number(k.normal_scale)},
           {"iterations", std::to_string(k.iterations)},
@@ -99,7 +100,7 @@ PROCEDURAY_DECL void proceduray_validate(const MarchKnobs& k, std::string_view w
     fail("fixed_steps " + std::to_string(k.fixed_steps) + " must be in [1, max_steps) = [1, " +
          std::to_string(k.max_steps) + "): the crossing's refinement needs steps left");
   }
-  if (k.refine > 1) fail("refine " + std::to_string(k.refine) + " must be 0 (off) or 1 (on)");
+  if (k.refine > 2) fail("refine " + std::to_string(k.refine) + " must be 0 (off), 1 (on) or 2 (classic)");
   if (code(k.normal) >= march_normal_names.size()) {
     fail("normal " + std::to_string(code(k.normal)) + " is unknown; valid: " + detail::joined(march_normal_names));
   }

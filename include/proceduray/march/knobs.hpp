@@ -85,7 +85,9 @@ struct MarchKnobs {
   float step_scale;              ///< factor on every step, (0, 1]: a fudge for estimates that overshoot
   float relaxation;              ///< relaxed: w in [1, 2)
   std::uint32_t fixed_steps;     ///< fixed: equal steps across the box, < max_steps
-  std::uint32_t refine;          ///< 1: bisect the crossing to 1/32 threshold; 0: report the last outside point
+  std::uint32_t refine;          ///< 1: bisect the crossing to 1/32 threshold; 0: report the last outside point;
+                                 ///< 2 (classic): stop at the first point below the threshold, no crossing
+                                 ///< needed (Hart's rule: cheap, but it fattens silhouettes by the threshold)
   MarchNormal normal;            ///< how the normal at a hit is found
   float normal_scale;            ///< differences' offset h as a fraction of the threshold at the hit
   std::uint32_t iterations;      ///< fractals: iterations (the most, by distance)

@@ -42,6 +42,14 @@ PROCEDURAY_DECL std::vector<MarchKnobs> field_preset(const MarchCapabilities& ca
       }
     }
   }
+  // The classic rule at half a footprint (a hit below the threshold, no crossing): on the chart
+  // it shows what the sign change buys; a budget that bounds silhouette false hits never picks it.
+  MarchKnobs classic = caps.defaults;
+  classic.method = caps.methods.front();
+  classic.relaxation = classic.method == MarchMethod::relaxed ? 1.5f : 1.0f;
+  classic.threshold = 0.5f;
+  classic.refine = 2;
+  out.push_back(classic);
   return out;
 }
 

@@ -12,7 +12,8 @@
 // The preset (field_preset): each method the field accepts (plain sphere steps only where
 // L <= 1: field_capabilities) at thresholds from a quarter to four footprints, relaxed steps at
 // w = 1.5, fixed steps of 32 and 128; a fractal's iteration counts from its default down by
-// two. Rows are calibration rows (march/calibration.hpp) with every error measured, the
+// two; and the classic hit rule at half a footprint (refine = classic), which shows what the
+// sign change buys and which a budget on silhouette false hits never picks. Rows are calibration rows (march/calibration.hpp) with every error measured, the
 // wrong-surface rate included; cost is evaluations per ray that entered the field's box.
 #pragma once
 
