@@ -23,16 +23,12 @@ inline constexpr std::pair<ObjectId, const char*> marched_objects[] = {{julia_id
 /// The knobs an object accepts, with the scene's starting knobs as the defaults (analytic
 /// objects: none but the epsilon).
 inline const pr::MarchCapabilities& capabilities(ObjectId id) {
-  static const pr::MarchCapabilities julia = [] {
-    pr::MarchCapabilities c = pr::fractal_capabilities(julia_knobs.iterations);
-    c.defaults = julia_knobs;
+  const auto fractal = [](const pr::MarchKnobs& starting) {
+    pr::MarchCapabilities c = pr::fractal_capabilities(starting.iterations);
+    c.defaults = starting;
     return c;
-  }();
-  static const pr::MarchCapabilities bulb = [] {
-    pr::MarchCapabilities c = pr::fractal_capabilities(mandelbulb_knobs.iterations);
-    c.defaults = mandelbulb_knobs;
-    return c;
-  }();
+  };
+  static const pr::MarchCapabilities julia = fractal(julia_knobs), bulb = fractal(mandelbulb_knobs);
   static const pr::MarchCapabilities analytic{"analytic", {}, {pr::MarchNormal::analytic}, 0, pr::march_base_knobs};
   return id == julia_id ? julia : (id == mandelbulb_id ? bulb : analytic);
 }
