@@ -22,7 +22,8 @@
 #include <cstdint>
 #include <limits>
 #include <span>
-#include <string>
+#include <string_view>
+#include <vector>
 
 namespace proceduray::accuracy {
 
