@@ -48,6 +48,7 @@ PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, pr_real world_per_o
   m.over_relaxation = uint(k.method) == march_method_relaxed ? pr_real(k.relaxation) : PR(1.0);
   m.fixed_steps = uint(k.method) == march_method_fixed ? max(k.fixed_steps, 1u) : 0u;
   m.hit_rule = k.refine == 2u ? march_hit_classic : (k.refine != 0u ? march_hit_refined : march_hit_unrefined);
+  m.probe = pr_real(k.probe);
   return m;
 }
 

@@ -105,6 +105,7 @@ PROCEDURAY_INLINE bool PROCEDURAY_MARCHER_FN(_trace)(pr_real3 o, pr_real3 u, pr_
   // it there: where spheres stopped overlapping the ray is near a surface or grazing one).
   pr_real w = clamp(m.over_relaxation, PR(1.0), PR(1.99));
   pr_real k = m.step_scale > PR(0.0) ? m.step_scale : PR(1.0);
+  pr_real probe = m.probe > PR(0.0) ? min(max(m.probe, PR(1.0)), PR(8.0)) : march_probe_scale;
   pr_real s = s_lo;
   pr_real previous_radius = PR(0.0);  // scaled distance at the previous point: no surface within it
   pr_real step = PR(0.0);             // the step that led to s
@@ -161,7 +162,7 @@ PROCEDURAY_INLINE bool PROCEDURAY_MARCHER_FN(_trace)(pr_real3 o, pr_real3 u, pr_
     if (d < threshold) {
       // Near a surface or grazing one: probe on for an inside point instead of stopping here
       // (see the header); a probe past s_hi stops there once.
-      step = max(r, clamp(march_probe_scale * d, march_probe_min * threshold, threshold));
+      step = max(r, clamp(probe * d, march_probe_min * threshold, threshold));
       relaxed = false;
       pr_real next = s + step;
       if (!(next > s)) next = s + threshold;  // below the float spacing at s: a whole threshold

@@ -4,7 +4,7 @@
 // itself is generated per distance function by marching/marcher.glsl (P_trace, P_normal, ...);
 // marching/knobs.glsl builds the settings from a geometry's MarchKnobs (proceduray/march/knobs.hpp).
 //
-//   MarchSettings m = MarchSettings(max_steps, epsilon, footprint, step_scale, over_relaxation, 0u, march_hit_refined);
+//   MarchSettings m = MarchSettings(max_steps, epsilon, footprint, step_scale, over_relaxation, 0u, march_hit_refined, 2.0);
 //   float s; uint steps;
 //   if (bulb_trace(o, u, s_lo, s_hi, m, field, s, steps)) {            // marcher.glsl, prefix bulb
 //     vec3 p = o + s * u;
@@ -22,12 +22,14 @@
 // a hit (fat silhouettes: ~40 % of the fractals' 1-pixel silhouette band were such false
 // hits). Here the threshold only says where to look; a hit is a sign change:
 //   - below the threshold t the march probes on instead of stopping: steps of
-//     march_probe_scale (2) distances, clamped to [march_probe_min (1/64), 1] t and never
+//     m.probe (march_probe_scale, 2, by default) distances, clamped to [march_probe_min (1/64), 1] t and never
 //     shorter than the bound's own step, until a point is inside (distance <= 0). Probes are
 //     finer where the distance is far below t, i.e. near the surface or a part thinner than t
 //     (fractal filaments), which probes a whole t apart would step over; past the bound's
 //     step d, a probe of 2 d can step over only a part thinner than d (4 d cost an exact SDF
-//     thin parts, 1 d the fractals 30 % more evaluations). The floor bounds what a probe
+//     thin parts, 1 d the fractals 30 % more evaluations; an estimate that underestimates
+//     several-fold near its surface, as the Mandelbulb's does, creeps at 2 d: m.probe 4 cuts its
+//     probes by 40 %, see docs/accuracy.md). The floor bounds what a probe
 //     steps over where d is tiny, often near a part other than the one ahead (the Mandelbulb's
 //     filaments at 320x240: depth error p99 2.5 footprints with a floor of t / 16, 1.4 with
 //     t / 64, for 10 % more evaluations; the D3D12 SDFs' cost did not change). Its price: a
@@ -76,6 +78,8 @@
 //                   Probes are never relaxed.
 //   fixed_steps     0 for sphere tracing; n > 0 marches n equal steps instead (fixed_march),
 //                   whatever the distance says, and refines the first crossing.
+//   probe           probe length below the threshold in distances, clamped to [1, 8]; 0 (a
+//                   settings struct left zero) is march_probe_scale.
 //   hit_rule        march_hit_refined: bisect as above; march_hit_unrefined: report the last
 //                   outside point as it is (up to one probe, <= the threshold, or one fixed
 //                   step short), saving the ~5 bisections; march_hit_classic: the classic
@@ -97,6 +101,7 @@ struct MarchSettings {
   pr_real over_relaxation;
   uint fixed_steps;  // 0: sphere tracing; n > 0: n equal steps across [s_lo, s_hi], then the crossing's refinement
   uint hit_rule;     // march_hit_refined (0), march_hit_unrefined (1) or march_hit_classic (2)
+  pr_real probe;     // probes below the threshold, in distances; 0: march_probe_scale (2)
 };
 
 /// MarchSettings::hit_rule: bisect the crossing to march_refine_fraction of the threshold, or

@@ -36,10 +36,12 @@ std::string text_of(const Calibration& c) {
   return out.str();
 }
 
-/// The test table's text as a table of an older format would start it.
+/// The test table's text as a table of an older format (1 to 3) would write it: its format line,
+/// and no probe column (the knob came with format 4).
 std::string in_format(const char* number) {
-  return std::regex_replace(text_of(table()), std::regex("# proceduray-calibration 3"),
-                            std::string("# proceduray-calibration ") + number);
+  std::string text = std::regex_replace(text_of(table()), std::regex("# proceduray-calibration 4"),
+                                        std::string("# proceduray-calibration ") + number);
+  return std::regex_replace(text, std::regex(",(probe|2)\n"), "\n");
 }
 
 std::string read(const std::string& path) {
@@ -117,6 +119,25 @@ TEST_CASE("calibration - the default budget is what a 1080p picture cannot tell;
   CHECK_FALSE(r.meets(b));
   CHECK(r.meets({.wrong_surface = 1.0}));
   CHECK(r.meets(ErrorBudget::relaxed()));
+}
+
+TEST_CASE("calibration - a format-3 table reads with the probe it was measured with, 2; format 4 keeps it") {
+  std::istringstream in(in_format("3"));
+  const Calibration three = Calibration::parse(in, "three.csv");
+  REQUIRE(three.rows().size() == 5);
+  CHECK(three.rows()[0].knobs.probe == 2.0f);
+  CHECK(three.rows()[0].false_misses == 0.0);
+  CHECK(three.cheapest("cog", {}).evals == 20.0);
+  // Format 4 writes the knob and reads it back; a row of format 4 without it is refused by count.
+  Calibration deep = table();
+  CalibrationRow r = deep.rows()[0];
+  r.knobs.probe = 4.0f;
+  const Calibration four("d", "8x8", {r});
+  std::istringstream in4(text_of(four));
+  CHECK(Calibration::parse(in4, "four.csv").rows()[0].knobs.probe == 4.0f);
+  std::istringstream short_row(std::regex_replace(text_of(four), std::regex(",4\n"), "\n"));
+  CHECK_THROWS_WITH_AS(Calibration::parse(short_row, "short.csv"), doctest::Contains("has 22 fields, not 23"),
+                       EnvironmentError);
 }
 
 TEST_CASE("calibration - a format-2 table reads with false misses unmeasured (they were per ray)") {

@@ -75,6 +75,9 @@ TEST_CASE("march knobs - validate names the geometry, the knob, the value and th
       {"normal", "analytic", "normal analytic does not apply; valid: central, tetrahedral"},
       {"normal_scale", "0", "normal_scale 0 must be in (0, 64]"},
       {"iteration_mode", "by_distance", "iteration_mode by_distance needs a fractal"},
+      {"probe", "0.5", "probe 0.5 must be in [1, 8] distances"},
+      {"probe", "9", "probe 9 must be in [1, 8] distances"},
+      {"probe", "inf", "probe inf must be in [1, 8] distances"},
   };
   for (const Bad& b : bad) {
     CAPTURE(b.knob);

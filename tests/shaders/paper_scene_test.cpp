@@ -92,7 +92,7 @@ TEST_CASE("paper types fit the pipeline limits") {
   static_assert(sizeof(paper::RadiancePayload) == 88);  // colour, depth, object id, steps, weight; the iterative fields
   static_assert(sizeof(paper::ShadowPayload) == 4);
   CHECK(plan.max_root_arguments_size[2] == 48);  // a MaterialRecord per hit record
-  static_assert(sizeof(proceduray::MarchKnobs) == 14 * 4);
+  static_assert(sizeof(proceduray::MarchKnobs) == 15 * 4);
   static_assert(sizeof(proceduray::CutPlanes) == 2 * 16 + 16);
   // camera, light and sky, depth, flags, weight, the Julia set's cut planes, the mouth (no knobs:
   // the library owns the fields')

@@ -43,7 +43,7 @@ def write_sweep(path):
 
 SWEEP_HEADER = ['scene', 'device', 'width', 'height', 'point', 'label', 'object', 'kind', 'method', 'max_steps',
                 'threshold_mode', 'threshold', 'epsilon', 'step_scale', 'relaxation', 'fixed_steps', 'refine', 'normal',
-                'normal_scale', 'iterations', 'iteration_mode', 'iteration_detail', 'trace_ms', 'object_evals', 'class',
+                'normal_scale', 'iterations', 'iteration_mode', 'iteration_detail', 'probe', 'trace_ms', 'object_evals', 'class',
                 'rays', 'false_hit_rate', 'depth_px_median', 'depth_px_p99']
 # proceduray_sweep's columns: (label, method, relaxation, evals, median, p99, silhouette false-hit rate).
 SWEEP_POINTS = [('method=lipschitz threshold=0.5', 'lipschitz', 1.0, 20.0, 0.05, 0.5, 0.02),
@@ -58,7 +58,7 @@ def write_method_sweep(path):
         for i, (lab, method, relax, evals, median, p99, fat) in enumerate(SWEEP_POINTS):
             for cls in ('silhouette_1px', 'all'):
                 w.writerow(['d3d12', 'llvmpipe', 32, 32, i, lab, 'cog', 'sdf', method, 512, 'footprint', 0.5, 1e-4, 1,
-                            relax, 64, 'on', 'central', 1, 0, 'fixed', 0.01, 1.5, evals, cls, 100,
+                            relax, 64, 'on', 'central', 1, 0, 'fixed', 0.01, 2, 1.5, evals, cls, 100,
                             fat if cls == 'silhouette_1px' else 0.001, median, p99])
 
 

@@ -131,7 +131,7 @@ std::vector<Point> grid(const std::vector<std::string>& vary) {
 }
 
 /// The shipped grid "methods": every method at seven thresholds (1/32 to 2 footprints), its main knob at two values,
-/// the unrefined hit rule, tetrahedral normals, iterations by distance, and the D3D12 sample's
+/// probes of 3 and 4 distances, the unrefined hit rule, tetrahedral normals, iterations by distance, and the D3D12 sample's
 /// settings. Objects take the points their kind accepts.
 std::vector<Point> methods_preset() {
   std::vector<Assignment> points;
@@ -142,6 +142,13 @@ std::vector<Point> methods_preset() {
     points.push_back({{"method", "segment"}, {"threshold", t}});
     points.push_back({{"method", "fixed"}, {"fixed_steps", "64"}, {"threshold", t}});
     points.push_back({{"method", "fixed"}, {"fixed_steps", "256"}, {"threshold", t}});
+  }
+  // Longer probes below the threshold: for estimates that underestimate near their surface.
+  for (const char* t : {"0.25", "0.5", "1"}) {
+    points.push_back({{"method", "sphere"}, {"probe", "3"}, {"threshold", t}});
+    points.push_back({{"method", "sphere"}, {"probe", "4"}, {"threshold", t}});
+    points.push_back({{"method", "lipschitz"}, {"probe", "4"}, {"threshold", t}});
+    points.push_back({{"method", "relaxed"}, {"relaxation", "1.2"}, {"probe", "4"}, {"threshold", t}});
   }
   points.push_back({{"method", "relaxed"}, {"relaxation", "1.8"}, {"threshold", "0.5"}});
   points.push_back({{"method", "sphere"}, {"threshold", "0.5"}, {"refine", "off"}});

@@ -17,7 +17,7 @@
 // per ray that sees the geometry, which does not depend on the machine; the table records the
 // device, size and library version that measured it.
 //
-// File: CSV. Line 1 "# proceduray-calibration 3", line 2 "# library <version>", line 3
+// File: CSV. Line 1 "# proceduray-calibration 4", line 2 "# library <version>", line 3
 // "# measured <device> <W>x<H>", then a header and a row per (geometry, setting). A table from
 // another library version is refused (its marches may differ), as is a foreign or damaged file.
 #pragma once
@@ -93,12 +93,12 @@ struct CalibrationRow {
   bool meets(const ErrorBudget& b) const { return excess(b) == 0.0; }
 };
 
-/// The format line a calibration file starts with. Format 3 counts false misses per truth hit;
-/// format 2 added wrong_surface but counted false misses per ray of the frame, format 1 had
-/// neither: their unmeasured errors read as NaN.
-inline constexpr std::string_view calibration_format = "# proceduray-calibration 3";
-inline constexpr std::string_view calibration_format_2 = "# proceduray-calibration 2";
-inline constexpr std::string_view calibration_format_1 = "# proceduray-calibration 1";
+/// The format line a calibration file starts with. Format 4 added the `probe` knob (older
+/// tables read with its default, 2, the only probe there was); format 3 counts false misses per
+/// truth hit; format 2 added wrong_surface but counted false misses per ray of the frame, format
+/// 1 had neither: their unmeasured errors read as NaN.
+inline constexpr std::string_view calibration_format = "# proceduray-calibration 4";
+inline constexpr int calibration_format_number = 4;
 
 /// Whether `a` is at least as good as `b` in cost and every error, and better in one: then `b`
 /// is off the front (no one would choose it).
@@ -130,11 +130,15 @@ class Calibration {
       return true;
     };
     if (!next(line)) line.clear();
-    const bool format_1 = line == calibration_format_1, per_ray_misses = format_1 || line == calibration_format_2;
-    if (line != calibration_format && !per_ray_misses) {
+    int format = 0;
+    for (int f = 1; f <= calibration_format_number; ++f) {
+      if (line == "# proceduray-calibration " + std::to_string(f)) format = f;
+    }
+    if (format == 0) {
       throw fail("not a calibration table (line 1 is not '" + std::string(calibration_format) +
                  "'); write one with proceduray_sweep --calibration");
     }
+    const bool per_ray_misses = format <= 2;
     if (!next(line) || line.rfind("# library ", 0) != 0) throw fail("line 2 does not name the library version");
     const std::string measured_by = line.substr(10);
     if (measured_by != version) {
@@ -152,8 +156,9 @@ class Calibration {
       out.m_source = line.substr(9);
       if (!next(line)) line.clear();
     }
-    if (line != header(format_1)) throw fail("the column header is not this version's");
-    const std::size_t errors = format_1 ? 6 : 7;  // evals and the errors, before the knobs
+    if (line != header(format)) throw fail("the column header is not this version's");
+    const std::size_t errors = format == 1 ? 6 : 7;  // evals and the errors, before the knobs
+    const std::size_t knobs = knob_columns(format);
     std::size_t number = 4;
     while (next(line)) {
       ++number;
@@ -161,9 +166,9 @@ class Calibration {
       std::vector<std::string> f;
       std::stringstream cells(line);
       for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
-      if (f.size() != 2 + errors + march_knob_names.size()) {
+      if (f.size() != 2 + errors + knobs) {
         throw fail("line " + std::to_string(number) + " has " + std::to_string(f.size()) + " fields, not " +
-                   std::to_string(2 + errors + march_knob_names.size()));
+                   std::to_string(2 + errors + knobs));
       }
       CalibrationRow r;
       r.geometry = f[0];
@@ -179,7 +184,7 @@ class Calibration {
         }
         if (per_ray_misses) r.false_misses = std::numeric_limits<double>::quiet_NaN();  // another unit
         r.knobs = march_base_knobs;
-        for (std::size_t k = 0; k < march_knob_names.size(); ++k) {
+        for (std::size_t k = 0; k < knobs; ++k) {
           set_knob(r.knobs, march_knob_names[k], f[2 + errors + k]);
         }
       } catch (const std::exception& e) {
@@ -201,13 +206,16 @@ class Calibration {
     return parse(in, path.string());
   }
 
-  /// The column header of the rows (of a format-1 table: without wrong_surface).
-  static std::string header(bool format_1 = false) {
+  /// The column header of the rows of a table of `format` (1: without wrong_surface; before 4:
+  /// without probe).
+  static std::string header(int format = calibration_format_number) {
     std::string h = "geometry,kind,evals,depth_median,depth_p99,silhouette_false_hits,false_misses,normal_p95_degrees,";
-    if (!format_1) h += "wrong_surface,";
-    for (std::size_t i = 0; i < march_knob_names.size(); ++i) h += std::string(i ? "," : "") + std::string(march_knob_names[i]);
+    if (format != 1) h += "wrong_surface,";
+    for (std::size_t i = 0; i < knob_columns(format); ++i) h += std::string(i ? "," : "") + std::string(march_knob_names[i]);
     return h;
   }
+  /// The knobs a table of `format` has columns for: the first n of march_knob_names.
+  static std::size_t knob_columns(int format) { return format < 4 ? 14 : march_knob_names.size(); }
 
   /// Writes the table in the format parse reads.
   void write(std::ostream& out) const {

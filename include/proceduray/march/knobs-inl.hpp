@@ -38,6 +38,7 @@ PROCEDURAY_DECL void set_knob(MarchKnobs& k, std::string_view name, std::string_
   else if (name == "iterations") k.iterations = parse_number<std::uint32_t>(name, value);
   else if (name == "iteration_mode") k.iteration_mode = detail::parse_name<MarchIterations>(value, march_iterations_names, name);
   else if (name == "iteration_detail") k.iteration_detail = parse_number<float>(name, value);
+  else if (name == "probe") k.probe = parse_number<float>(name, value);
   else throw UsageError("march knobs: unknown knob '" + std::string(name) + "'; valid: " + detail::joined(march_knob_names));
 }
 
@@ -59,7 +60,8 @@ PROCEDURAY_DECL std::vector<std::pair<std::string, std::string>> knob_values(con
           {"normal_scale", detail::number(k.normal_scale)},
           {"iterations", std::to_string(k.iterations)},
           {"iteration_mode", name_of(march_iterations_names, k.iteration_mode)},
-          {"iteration_detail", detail::number(k.iteration_detail)}};
+          {"iteration_detail", detail::number(k.iteration_detail)},
+          {"probe", detail::number(k.probe)}};
 }
 
 PROCEDURAY_DECL std::string describe(const MarchKnobs& k) {
@@ -117,6 +119,10 @@ PROCEDURAY_DECL void proceduray_validate(const MarchKnobs& k, std::string_view w
   }
   if (!(finite(k.iteration_detail) && k.iteration_detail >= 0.0f)) {
     fail("iteration_detail " + detail::number(k.iteration_detail) + " must be a world size >= 0");
+  }
+  if (!(finite(k.probe) && k.probe >= 1.0f && k.probe <= march_max_probe)) {
+    fail("probe " + detail::number(k.probe) + " must be in [1, 8] distances: under 1 a probe never reaches "
+         "the surface the bound promises, past 8 it steps over parts the estimate saw (2 for an exact SDF)");
   }
 }
 

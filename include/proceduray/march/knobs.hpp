@@ -72,6 +72,9 @@ inline constexpr std::uint32_t march_max_iterations_limit = 64;
 /// The smallest step_scale: a bound that needs steps under 1/1024 of the distance is no bound a
 /// march can use (each ray would take thousands of steps); rescale the distance instead.
 inline constexpr float march_min_step_scale = 1.0f / 1024.0f;
+/// The longest probe below the threshold, in distances: an estimate that underestimates more than
+/// 4-fold near its surface is one to rescale, not to probe past.
+inline constexpr float march_max_probe = 8.0f;
 
 /// One geometry's knobs (GLSL: MarchKnobs, scalar layout; the enums are uints there, whose
 /// march_* consts in marching/knobs.glsl name the same values). Checked wherever it goes to a
@@ -93,6 +96,8 @@ struct MarchKnobs {
   std::uint32_t iterations;      ///< fractals: iterations (the most, by distance)
   MarchIterations iteration_mode;  ///< fixed or by distance
   float iteration_detail;        ///< by_distance: world size of a footprint up to which all iterations run
+  float probe;                   ///< below the threshold, probes of `probe` distances (in [1, 8]; 2: an
+                                 ///< exact SDF's; an estimate that underestimates k-fold takes up to 2k)
 };
 /// Throws UsageError, naming `where`, the knob, its value and the valid range, for knobs no
 /// geometry can take: an unknown enum value, steps or iterations past the limits above, a
@@ -100,7 +105,7 @@ struct MarchKnobs {
 /// What one geometry accepts is validate(k, caps, geometry)'s business.
 PROCEDURAY_DECL void proceduray_validate(const MarchKnobs& k, std::string_view where);
 PROCEDURAY_STRUCT(MarchKnobs, scalar, method, max_steps, threshold_mode, threshold, epsilon, step_scale, relaxation,
-                  fixed_steps, refine, normal, normal_scale, iterations, iteration_mode, iteration_detail);
+                  fixed_steps, refine, normal, normal_scale, iterations, iteration_mode, iteration_detail, probe);
 
 /// What a geometry accepts, and its defaults.
 struct MarchCapabilities {
@@ -115,7 +120,7 @@ struct MarchCapabilities {
 /// (at least 1e-4), refined hits, central normals at the threshold.
 inline constexpr MarchKnobs march_base_knobs{MarchMethod::lipschitz, 512u, MarchThreshold::footprint, 0.5f, 1.0e-4f,
                                              1.0f, 1.0f, 64u, 1u, MarchNormal::central, 1.0f, 0u,
-                                             MarchIterations::fixed, 0.01f};
+                                             MarchIterations::fixed, 0.01f, 2.0f};
 
 namespace detail {
 
@@ -160,9 +165,9 @@ T parse_number(std::string_view knob, std::string_view value) {
 }  // namespace detail
 
 /// The knob names set_knob takes, in the struct's order.
-inline constexpr std::array<std::string_view, 14> march_knob_names{
+inline constexpr std::array<std::string_view, 15> march_knob_names{
     "method", "max_steps", "threshold_mode", "threshold", "epsilon", "step_scale", "relaxation",
-    "fixed_steps", "refine", "normal", "normal_scale", "iterations", "iteration_mode", "iteration_detail"};
+    "fixed_steps", "refine", "normal", "normal_scale", "iterations", "iteration_mode", "iteration_detail", "probe"};
 
 /// Sets one knob from text (enum names, numbers; refine takes on/off too). Throws UsageError for
 /// an unknown knob or value, listing the valid ones; ranges are validate()'s business.
