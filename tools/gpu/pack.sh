@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds what a GPU run needs into gpu/ and the loader's packages into .gl/, both beside the
-# repository (git ignores them): carry them to a GPU machine that has the NVIDIA driver but no
+# Builds what a GPU run needs into gpu/ (stripped, gzipped binaries) and the loader's packages
+# into .gl/, both beside the repository (git ignores them): carry them to a GPU machine that has the NVIDIA driver but no
 # Vulkan loader, SDK or glslang, and run tools/gpu/run.sh there (../shared/GPU.md).
 #
 #   tools/gpu/pack.sh                       # Release build in build/gpu, stripped binaries in gpu/
@@ -14,7 +14,8 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(proceduray_vk_tests proceduray_examples_tests bench_frame_loop 02_paper_scene 04_cis565_scene 05_textured_scene bench_soak)
+  targets=(proceduray_vk_tests proceduray_examples_tests bench_frame_loop 02_paper_scene 03_d3d12_scene 04_cis565_scene
+           05_textured_scene bench_soak proceduray_accuracy proceduray_sweep)
 fi
 
 build=${BUILD:-build/gpu}
@@ -29,6 +30,8 @@ for t in "${targets[@]}"; do
   bin=$(find "$build" -type f -name "$t" -perm -u+x | head -n 1)
   [ -n "$bin" ] || { echo "pack.sh: built no binary named $t" >&2; exit 1; }
   strip -o "gpu/$t" "$bin"
+  # Compressed: the carried tree is limited to 64 MiB, and a stripped binary is ~10 MB (4 gzipped).
+  gzip -9 -f "gpu/$t"
 done
 # The paper scene's GLSL declarations are generated at build time.
 cp -r "$build/examples/02_paper_scene_glsl" gpu/
