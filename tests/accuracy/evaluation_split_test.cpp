@@ -76,3 +76,20 @@ TEST_CASE("split_evaluations: counts other than the frame's are refused, naming 
   CHECK_THROWS_WITH_AS(acc::split_evaluations(frame, square(), marched(), std::vector<std::uint32_t>(5, 1)),
                        doctest::Contains("weights has 5 elements"), proceduray::UsageError);
 }
+
+TEST_CASE("ray_classes: each pixel's class, unknown where the truth is undetermined or left out") {
+  std::vector<acc::Reference> truth = square();
+  truth[0].outcome = acc::Outcome::undetermined;
+  std::vector<std::uint32_t> weights(W * H, 1);
+  weights[W - 1] = 0;
+  const std::vector<acc::RayClass> c = acc::ray_classes(frame, truth, weights);
+  REQUIRE(c.size() == W * H);
+  CHECK(c[0] == acc::RayClass::unknown);
+  CHECK(c[W - 1] == acc::RayClass::unknown);
+  CHECK(c[3 * W + 5] == acc::RayClass::hit);
+  CHECK(c[3 * W + 3] == acc::RayClass::near_miss);  // 2 pixels left of the square
+  CHECK(c[3 * W + 2] == acc::RayClass::far_miss);   // 3 pixels left
+  CHECK(static_cast<int>(acc::RayClass::near_miss) == 2);  // the value the tool writes
+  CHECK_THROWS_WITH_AS(acc::ray_classes(frame, truth, std::vector<std::uint32_t>(2, 1)),
+                       doctest::Contains("accuracy::ray_classes: weights has 2 elements"), proceduray::UsageError);
+}

@@ -38,6 +38,8 @@ struct Knobs {
   std::string device = "auto";
   std::string csv;
   std::string steps_csv;
+  std::string classes_csv;
+  std::string split_csv;
   bool append = false;
   bool validation = false;
   float time = 0.0f;
@@ -70,6 +72,7 @@ struct Measurement {
   std::vector<ObjectRow> objects;
   std::vector<acc::Label> labels;  // the CSV's knob columns
   std::vector<std::uint32_t> steps;  // per pixel: the camera ray's evaluations (heat map)
+  std::vector<acc::RayClass> classes;  // per pixel: the frame's truth's class (heat map split)
 };
 
 /// One line per object: what a reader compares first.
@@ -171,6 +174,7 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = examples::measure_frame(truth.frame(), samples, truth.pixels, truth.weights, truth.stride);
   out.split = acc::split_evaluations(truth.frame(), truth.pixels, samples, truth.weights);
+  out.classes = acc::ray_classes(truth.frame(), truth.pixels, truth.weights);
   const std::vector<paper::ObjectId> seen = paper::device_objects(renderer.plan(), frame.outputs.ids);
   for (const auto& [id, label] : paper::named_objects) {
     out.objects.push_back({label, paper::measure_object(truth, samples, seen, id),
@@ -205,6 +209,7 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = acc::measure(truth.frame(), samples, truth.pixels);
   out.split = acc::split_evaluations(truth.frame(), truth.pixels, samples);
+  out.classes = acc::ray_classes(truth.frame(), truth.pixels);
   const std::vector<std::uint32_t> seen = d3d12::device_objects(renderer.plan(), frame.outputs.ids);
   for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) {
     out.objects.push_back({d3d12::object_name(id), d3d12::measure_object(truth, samples, seen, id),
@@ -217,6 +222,43 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
   }
   out.labels = knob_labels(constants);
   return out;
+}
+
+/// Writes a row per image row, a column per pixel (heatmap.py reads it); false with a message when it cannot.
+bool write_grid(const std::string& path, const char* option, unsigned width, const std::vector<std::uint32_t>& values) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out || width == 0 || values.size() % width != 0) {
+    std::fprintf(stderr, "proceduray_accuracy: cannot write '%s'; give a writable %s path\n", path.c_str(), option);
+    return false;
+  }
+  for (std::size_t i = 0; i < values.size(); ++i) out << values[i] << ((i + 1) % width == 0 ? "\n" : ",");
+  std::printf("wrote %s\n", path.c_str());
+  return true;
+}
+
+/// Writes the evaluations by ray class: the frame's three classes (object "all"), then each
+/// object's hits and near misses by its own truth; share: of the frame's evaluations.
+bool write_split(const std::string& path, const Measurement& m) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) {
+    std::fprintf(stderr, "proceduray_accuracy: cannot write '%s'; give a writable --split-csv path\n", path.c_str());
+    return false;
+  }
+  const double all = m.split.evaluations();
+  out << "object,class,rays,evaluations,evals_per_ray,share\n";
+  auto row = [&](const std::string& object, const char* cls, const acc::EvaluationClass& c) {
+    if (c.rays > 0.0) out << object << ',' << cls << ',' << c.rays << ',' << c.evaluations << ',' << c.per_ray() << ','
+                          << (all > 0.0 ? c.evaluations / all : 0.0) << '\n';
+  };
+  row("all", "hit", m.split.hit);
+  row("all", "near_miss", m.split.near_miss);
+  row("all", "far_miss", m.split.far_miss);
+  for (const ObjectRow& o : m.objects) {
+    row(o.label, "hit", o.split.hit);
+    row(o.label, "near_miss", o.split.near_miss);
+  }
+  std::printf("wrote %s\n", path.c_str());
+  return true;
 }
 
 int run(const Knobs& k) {
@@ -239,19 +281,11 @@ int run(const Knobs& k) {
   std::printf("evaluations per ray, whole frame: hits %.2f (%.0f%%), near misses %.2f (%.0f%%), far misses %.2f (%.0f%%)\n",
               e.hit.per_ray(), 100.0 * e.share(e.hit), e.near_miss.per_ray(), 100.0 * e.share(e.near_miss),
               e.far_miss.per_ray(), 100.0 * e.share(e.far_miss));
-  if (!k.steps_csv.empty()) {
-    // A row per image row, a column per pixel: tools/accuracy/heatmap.py draws it.
-    std::ofstream out(k.steps_csv, std::ios::trunc);
-    if (!out || m.steps.size() != std::size_t{width} * height) {
-      std::fprintf(stderr, "proceduray_accuracy: cannot write '%s'; give a writable --steps-csv path\n", k.steps_csv.c_str());
-      return 1;
-    }
-    for (unsigned y = 0; y < height; ++y) {
-      for (unsigned x = 0; x < width; ++x) out << (x ? "," : "") << m.steps[std::size_t{y} * width + x];
-      out << '\n';
-    }
-    std::printf("wrote %s\n", k.steps_csv.c_str());
-  }
+  if (!k.steps_csv.empty() && !write_grid(k.steps_csv, "--steps-csv", width, m.steps)) return 1;
+  std::vector<std::uint32_t> classes;
+  for (acc::RayClass c : m.classes) classes.push_back(static_cast<std::uint32_t>(c));
+  if (!k.classes_csv.empty() && !write_grid(k.classes_csv, "--classes-csv", width, classes)) return 1;
+  if (!k.split_csv.empty() && !write_split(k.split_csv, m)) return 1;
   if (!k.csv.empty()) {
     std::ofstream out(k.csv, k.append ? std::ios::app : std::ios::trunc);
     if (!out) {
@@ -295,6 +329,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--csv", k.csv, "CSV file to write (a header, then a row per pixel class)");
   app.add_option("--steps-csv", k.steps_csv, "per-pixel evaluations as a W x H CSV (tools/accuracy/heatmap.py draws it)");
+  app.add_option("--classes-csv", k.classes_csv, "per-pixel ray class as a W x H CSV: 1 hit, 2 near miss, 3 far miss, "
+                 "0 unknown (heatmap.py --classes splits the heat map by it)");
+  app.add_option("--split-csv", k.split_csv, "evaluations by ray class, the frame's and each object's "
+                 "(tools/accuracy/split_chart.py draws them)");
   app.add_flag("--append", k.append, "append rows to --csv (a sweep), writing the header only into an empty file");
   app.add_flag("--validation", k.validation, "enable the Khronos validation layer");
   app.add_option("--time", k.time, "scene time in seconds (the fractals' animation)")->capture_default_str();

@@ -11,6 +11,7 @@
 //   const acc::EvaluationSplit s = acc::split_evaluations(frame, truth, samples);  // + weights: stratified
 //   const double near = s.near_miss.per_ray();            // mean evaluations of a near miss
 //   const double share = s.share(s.near_miss);            // its fraction of all the frame's evaluations
+//   const std::vector<acc::RayClass> c = acc::ray_classes(frame, truth);   // per pixel, for a heat map
 //
 // Samples' `steps` are the evaluations (the steps output). Undetermined truths are left out; a
 // weight of 0 leaves a pixel out, k counts it k times (accuracy/stratified.hpp's samples).
@@ -51,21 +52,42 @@ struct EvaluationSplit {
   }
 };
 
-/// Splits the samples' evaluations by their truth's class (classify's bands for the near
-/// misses). Throws UsageError for counts other than frame's pixels, or weights of another count.
+/// A ray's class by its truth. The values are what proceduray_accuracy --classes-csv writes.
+enum class RayClass : std::uint8_t {
+  unknown = 0,    ///< undetermined truth, or a pixel a stratified truth left out (weight 0)
+  hit = 1,        ///< the truth hits
+  near_miss = 2,  ///< the truth misses within 2 pixels of a silhouette
+  far_miss = 3,   ///< the truth misses farther out
+};
+
+/// Each pixel's RayClass (classify's bands for the near misses). Throws UsageError for a truth
+/// of another count than frame's pixels, or weights of another count.
+inline std::vector<RayClass> ray_classes(const Frame& frame, std::span<const Reference> truth,
+                                         std::span<const std::uint32_t> weights = {}) {
+  const std::vector<PixelClass> bands = classify(frame, truth);  // checks the grid and the truth's count
+  if (!weights.empty()) detail::check_count(weights.size(), frame, "weights", "accuracy::ray_classes");
+  std::vector<RayClass> out(truth.size(), RayClass::unknown);
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if ((!weights.empty() && weights[i] == 0) || truth[i].outcome == Outcome::undetermined) continue;
+    const bool near = bands[i] == PixelClass::silhouette_1px || bands[i] == PixelClass::silhouette_2px;
+    out[i] = truth[i].outcome == Outcome::hit ? RayClass::hit : (near ? RayClass::near_miss : RayClass::far_miss);
+  }
+  return out;
+}
+
+/// Splits the samples' evaluations by their truth's class (ray_classes). Throws UsageError for
+/// counts other than frame's pixels, or weights of another count.
 inline EvaluationSplit split_evaluations(const Frame& frame, std::span<const Reference> truth,
                                          std::span<const Sample> samples,
                                          std::span<const std::uint32_t> weights = {}) {
-  constexpr std::string_view call = "accuracy::split_evaluations";
-  const std::vector<PixelClass> classes = classify(frame, truth);  // checks the grid and the truth's count
-  detail::check_count(samples.size(), frame, "samples", call);
-  if (!weights.empty()) detail::check_count(weights.size(), frame, "weights", call);
+  detail::check_count(samples.size(), frame, "samples", "accuracy::split_evaluations");
+  const std::vector<RayClass> classes = ray_classes(frame, truth, weights);
   EvaluationSplit out;
   for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (classes[i] == RayClass::unknown) continue;
     const double w = weights.empty() ? 1.0 : static_cast<double>(weights[i]);
-    if (w == 0.0 || truth[i].outcome == Outcome::undetermined) continue;
-    const bool near = classes[i] == PixelClass::silhouette_1px || classes[i] == PixelClass::silhouette_2px;
-    EvaluationClass& c = truth[i].outcome == Outcome::hit ? out.hit : (near ? out.near_miss : out.far_miss);
+    EvaluationClass& c = classes[i] == RayClass::hit ? out.hit
+                                                     : (classes[i] == RayClass::near_miss ? out.near_miss : out.far_miss);
     c.rays += w;
     c.evaluations += w * samples[i].steps;
   }
