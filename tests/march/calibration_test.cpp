@@ -136,7 +136,7 @@ TEST_CASE("calibration - a format-3 table reads with the probe it was measured w
   std::istringstream in4(text_of(four));
   CHECK(Calibration::parse(in4, "four.csv").rows()[0].knobs.probe == 4.0f);
   std::istringstream short_row(std::regex_replace(text_of(four), std::regex(",4\n"), "\n"));
-  CHECK_THROWS_WITH_AS(Calibration::parse(short_row, "short.csv"), doctest::Contains("has 22 fields, not 23"),
+  CHECK_THROWS_WITH_AS(Calibration::parse(short_row, "short.csv"), doctest::Contains("has 23 fields, not 24"),
                        EnvironmentError);
 }
 

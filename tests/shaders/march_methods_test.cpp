@@ -71,6 +71,9 @@ TEST_CASE("march methods - knobs map to the settings the marches read") {
   CHECK(m.over_relaxation == 1.0f);
   CHECK(m.fixed_steps == 0u);
   CHECK(m.hit_rule == march_hit_refined);
+  CHECK(m.probe == 2.0f);  // the base knobs' probe: the old constant
+  k.probe = 4.0f;
+  CHECK(march_settings(k, 2.0f, 1e-3f, 4.0f).probe == 4.0f);
   k.method = MarchMethod::sphere;
   CHECK(march_settings(k, 2.0f, 1e-3f, 4.0f).step_scale == 1.0f);  // plain: no bound applied
   k.method = MarchMethod::relaxed;

@@ -1,7 +1,7 @@
 // Tests for shaders/marching/sphere_trace.glsl, compiled as C++: hits, misses, exhausted steps,
 // the hit rule (a sign change, bisected; grazing rays march on; the threshold on the unscaled
 // distance), over-relaxation on a thin plate (also at the range's end) and its fallback,
-// tetrahedral normals.
+// longer probes for an underestimating bound, tetrahedral normals.
 #include <proceduray/shader/glsl_cpp.hpp>
 
 #include <algorithm>
@@ -11,11 +11,14 @@
 namespace sphere_trace_test {
 using namespace proceduray::glsl_cpp;
 // 0: unit sphere; 1: thin plate |z| <= 0.01 (exact distances, Lipschitz 1); 2: the unit sphere
-// as an estimate that is 0 inside (as the fractals' are).
+// as an estimate that is 0 inside (as the fractals' are); 3: the unit sphere's distance a
+// quarter of the truth outside (an estimate that underestimates 4-fold, as the Mandelbulb's
+// does near its surface).
 inline int shape = 0;
 inline float march_distance(vec3 p) {
   if (shape == 1) return std::abs(p.z) - 0.01f;
   const float d = length(p) - 1.0f;
+  if (shape == 3) return d > 0.0f ? 0.25f * d : d;
   return shape == 2 ? std::max(d, 0.0f) : d;
 }
 #include "marching/sphere_trace.glsl"
@@ -274,4 +277,25 @@ TEST_CASE("tetrahedral normal of the sphere is radial") {
   CHECK(glm::dot(n, glm::normalize(glm::vec3(1.0f, 2.0f, -2.0f))) == doctest::Approx(1.0f).epsilon(1e-4));
   const glm::vec3 flat = shape_tetrahedral_normal(glm::vec3(5.0f), 0.0f, {});  // h = 0: zero gradient, fallback
   CHECK(std::isfinite(flat.x + flat.y + flat.z));
+}
+
+TEST_CASE("sphere_trace: probes of 4 distances cross an underestimating bound sooner, to the same point") {
+  shape = 3;
+  const glm::vec3 o(0.0f, 0.3f, -5.0f), u(0.0f, 0.0f, 1.0f);
+  const float truth = 5.0f - std::sqrt(1.0f - 0.09f);
+  std::uint32_t evaluations[3] = {};
+  const float probes[3] = {0.0f, 2.0f, 4.0f};  // 0: a settings struct left zero, the default 2
+  for (int i = 0; i < 3; ++i) {
+    MarchSettings m = settings(1.0f, 4096);
+    m.footprint = 1e-3f;  // a threshold of 1e-3 t, so probing starts well before the surface
+    m.probe = probes[i];
+    float s = 0.0f;
+    REQUIRE(shape_trace(o, u, 0.0f, 10.0f, m, {}, s, evaluations[i]));
+    CAPTURE(probes[i]);
+    CHECK(s <= truth + 1e-6f);                                 // outside, as always
+    CHECK(truth - s <= march_refine_fraction * 1e-3f * truth);  // within t/32 of the crossing
+  }
+  CHECK(evaluations[0] == evaluations[1]);
+  CHECK(evaluations[2] < evaluations[1]);
+  shape = 0;
 }
