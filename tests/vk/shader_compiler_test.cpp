@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,26 @@ TEST_CASE("compile_glsl produces SPIR-V for a miss shader") {
   REQUIRE(spirv.size() > 5);
   CHECK(spirv[0] == 0x07230203u);  // SPIR-V magic number
   CHECK(spirv[1] >= 0x00010400u);  // SPIR-V 1.4 or later, which ray tracing needs
+}
+
+TEST_CASE("compile_glsl compiles a compute shader (the benchmarks' peers), GLCompute its model") {
+  const auto spirv = compile_glsl({.stage = ShaderStage::compute,
+                                   .name = "ok.comp",
+                                   .code = "#version 460\nlayout(local_size_x = 64) in;\n"
+                                           "layout(std430, binding = 0) buffer B { float v[]; };\n"
+                                           "void main() { v[gl_GlobalInvocationID.x] = 1.0; }\n"});
+  REQUIRE(spirv.size() > 5);
+  bool compute = false;  // OpEntryPoint (15) with execution model GLCompute (5)
+  detail::each_spirv_instruction(spirv, [&](std::uint32_t op, std::span<const std::uint32_t> words) {
+    if (op == 15 && words.size() > 1 && words[1] == 5) compute = true;
+    return true;
+  });
+  CHECK(compute);
+  CHECK(std::string(proceduray::to_string(ShaderStage::compute)) == "compute");
+  // A ray-tracing stage refuses the compute built-ins: the stage is what decides.
+  CHECK_THROWS_AS(compile_glsl({.stage = ShaderStage::miss, .name = "bad.rmiss",
+                                .code = "#version 460\nvoid main() { uvec3 g = gl_GlobalInvocationID; }\n"}),
+                  ShaderCompileError);
 }
 
 TEST_CASE("compile_glsl reports the shader name and the error line") {

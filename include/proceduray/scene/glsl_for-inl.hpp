@@ -211,6 +211,7 @@ PROCEDURAY_DECL std::string stage_declarations(const detail::SceneCore& scene, c
       }
       return out + record_block(records, shader) + callable_data(scene, location);
     }
+    case ShaderStage::compute: return out;  // no scene holds one: nothing of the scene to declare
   }
   return out;
 }

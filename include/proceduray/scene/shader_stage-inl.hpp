@@ -9,7 +9,7 @@
 namespace proceduray {
 
 PROCEDURAY_DECL const char* to_string(ShaderStage stage) {
-  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable"};
+  constexpr const char* names[] = {"raygen", "miss", "closest_hit", "any_hit", "intersection", "callable", "compute"};
   return names[static_cast<std::uint32_t>(stage)];
 }
 

@@ -31,6 +31,7 @@ PROCEDURAY_DECL VkShaderStageFlagBits vk_stage(ShaderStage s) {
     case ShaderStage::any_hit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
     case ShaderStage::intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
     case ShaderStage::callable: return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+    case ShaderStage::compute: return VK_SHADER_STAGE_COMPUTE_BIT;
   }
   return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
 }

@@ -130,6 +130,7 @@ PROCEDURAY_DECL EShLanguage glslang_stage(ShaderStage s) {
     case ShaderStage::any_hit: return EShLangAnyHit;
     case ShaderStage::intersection: return EShLangIntersect;
     case ShaderStage::callable: return EShLangCallable;
+    case ShaderStage::compute: return EShLangCompute;
   }
   return EShLangRayGen;
 }
