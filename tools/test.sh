@@ -38,6 +38,7 @@ if want cmake; then
   # The installed tools run from the prefix: its headers and shaders, not the source tree's.
   prefix=$(realpath "$out/prefix")
   test -x "$prefix/bin/proceduray-chart" && test -x "$prefix/bin/proceduray-calibration-chart"
+  test -x "$prefix/bin/proceduray-heatmap" && test -x "$prefix/bin/proceduray-split-chart"
   where=$(env -u PROCEDURAY_SHADER_DIR -u PROCEDURAY_INCLUDE_DIR "$prefix/bin/proceduray-field" where)
   grep -qx "shaders $prefix/share/proceduray/shaders" <<< "$where" || { echo "installed proceduray-field: $where" >&2; exit 1; }
   grep -qx "headers $prefix/include" <<< "$where" || { echo "installed proceduray-field: $where" >&2; exit 1; }
