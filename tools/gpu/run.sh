@@ -42,6 +42,8 @@ if [ "$what" = all ] || [ "$what" = tests ]; then
   for t in gpu/proceduray_*_tests; do step "$(basename "$t")" "$t"; done
 fi
 if [ "$what" = all ] || [ "$what" = bench ]; then
+  # The device's FP32 peak, the ceiling the marching numbers are read against.
+  [ -x gpu/bench_peak ] && step bench_peak gpu/bench_peak --device gpu && grep -h "FMAs" "$out/bench_peak.txt" >> "$log"
   [ -x gpu/bench_frame_loop ] && step bench_frame_loop gpu/bench_frame_loop --device gpu --sizes 1024,4096 --frames 200
   if [ -x gpu/02_paper_scene ]; then
     # A cold start, then a second one with both caches warm (SPIR-V and pipeline, in XDG_CACHE_HOME).
