@@ -23,6 +23,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -39,6 +40,7 @@ struct Knobs {
   std::string csv;
   std::string steps_csv;
   std::string classes_csv;
+  std::string classes_object;  // --classes-csv by this object's truth; empty: the frame's
   std::string split_csv;
   bool append = false;
   bool validation = false;
@@ -60,6 +62,7 @@ struct ObjectRow {
   acc::Metrics metrics;
   double steps = 0.0;  // mean evaluations per ray that sees the object (reference or render)
   acc::EvaluationSplit split;  // by the object's reference: its hits, its near misses, the rest
+  std::vector<acc::RayClass> classes;  // per pixel by the object's reference (--classes-object only)
 };
 
 /// What a scene's run gives the report.
@@ -186,6 +189,12 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                                                   std::span<const paper::ObjectId>(truth.objects),
                                                   std::span<const acc::Sample>(samples), id,
                                                   std::span<const std::uint32_t>(truth.weights))});
+    if (label == k.classes_object) {
+      out.objects.back().classes = acc::ray_classes(
+          truth.frame(), examples::object_reference(std::span<const acc::Reference>(truth.pixels),
+                                                    std::span<const paper::ObjectId>(truth.objects), id),
+          truth.weights);
+    }
   }
   out.labels = knob_labels(constants);
   return out;
@@ -219,6 +228,11 @@ Measurement measure_d3d12(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                            examples::split_object(truth.frame(), std::span<const acc::Reference>(truth.pixels),
                                                   std::span<const std::uint32_t>(truth.objects),
                                                   std::span<const acc::Sample>(samples), id)});
+    if (d3d12::object_name(id) == k.classes_object) {
+      out.objects.back().classes = acc::ray_classes(
+          truth.frame(), examples::object_reference(std::span<const acc::Reference>(truth.pixels),
+                                                    std::span<const std::uint32_t>(truth.objects), id));
+    }
   }
   out.labels = knob_labels(constants);
   return out;
@@ -268,6 +282,21 @@ int run(const Knobs& k) {
     std::fprintf(stderr, "proceduray_accuracy: --size '%s' is not WxH with positive numbers, e.g. 320x240\n", k.size.c_str());
     return 2;
   }
+  if (!k.classes_object.empty()) {  // refused before the truth is computed, not after
+    std::vector<std::string> names;
+    if (k.scene == "d3d12") {
+      for (std::uint32_t id = d3d12::plane_id; id < d3d12::object_id_count; ++id) names.push_back(d3d12::object_name(id));
+    } else {
+      for (const auto& [id, label] : paper::named_objects) names.emplace_back(label);
+    }
+    if (std::find(names.begin(), names.end(), k.classes_object) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      std::fprintf(stderr, "proceduray_accuracy: --classes-object '%s' is not an object of the %s scene; give one of %s\n",
+                   k.classes_object.c_str(), k.scene.c_str(), list.c_str());
+      return 2;
+    }
+  }
   proceduray::vk::Context ctx({.device = device_of(k.device), .validation = k.validation});
   const Measurement m = k.scene == "d3d12" ? measure_d3d12(ctx, k, width, height) : measure_paper(ctx, k, width, height);
   std::printf("device: %s\n%s\ntrace: %.3f ms; %s\n\n", ctx.name().c_str(), m.settings.c_str(), m.trace_ms,
@@ -282,8 +311,12 @@ int run(const Knobs& k) {
               e.hit.per_ray(), 100.0 * e.share(e.hit), e.near_miss.per_ray(), 100.0 * e.share(e.near_miss),
               e.far_miss.per_ray(), 100.0 * e.share(e.far_miss));
   if (!k.steps_csv.empty() && !write_grid(k.steps_csv, "--steps-csv", width, m.steps)) return 1;
+  const std::vector<acc::RayClass>* chosen = &m.classes;
+  for (const ObjectRow& o : m.objects) {
+    if (!k.classes_object.empty() && o.label == k.classes_object) chosen = &o.classes;
+  }
   std::vector<std::uint32_t> classes;
-  for (acc::RayClass c : m.classes) classes.push_back(static_cast<std::uint32_t>(c));
+  for (acc::RayClass c : *chosen) classes.push_back(static_cast<std::uint32_t>(c));
   if (!k.classes_csv.empty() && !write_grid(k.classes_csv, "--classes-csv", width, classes)) return 1;
   if (!k.split_csv.empty() && !write_split(k.split_csv, m)) return 1;
   if (!k.csv.empty()) {
@@ -331,6 +364,8 @@ int main(int argc, char** argv) {
   app.add_option("--steps-csv", k.steps_csv, "per-pixel evaluations as a W x H CSV (tools/accuracy/heatmap.py draws it)");
   app.add_option("--classes-csv", k.classes_csv, "per-pixel ray class as a W x H CSV: 1 hit, 2 near miss, 3 far miss, "
                  "0 unknown (heatmap.py --classes splits the heat map by it)");
+  app.add_option("--classes-object", k.classes_object, "--classes-csv by this object's truth (its hits, its near "
+                 "misses; 3: the rest) instead of the whole frame's");
   app.add_option("--split-csv", k.split_csv, "evaluations by ray class, the frame's and each object's "
                  "(tools/accuracy/split_chart.py draws them)");
   app.add_flag("--append", k.append, "append rows to --csv (a sweep), writing the header only into an empty file");

@@ -67,9 +67,14 @@ def main(argv=None):
         import matplotlib.pyplot as plt
     except ImportError:
         fail('matplotlib is missing; install python3-matplotlib (tools/setup.sh does)')
-    fig, axes = plt.subplots(1, len(names), figsize=(3.2 * len(names) + 1.0, 3.8), squeeze=False,
+    columns = min(4, len(names))  # rows of at most 4 panels
+    rows = (len(names) + columns - 1) // columns
+    fig, axes = plt.subplots(rows, columns, figsize=(3.2 * columns + 1.0, 3.4 * rows + 0.4), squeeze=False,
                              sharey=True)  # one scale: objects compare at a glance
-    for ax, name in zip(axes[0], names):
+    panels = [ax for row in axes for ax in row]
+    for ax in panels[len(names):]:
+        ax.set_visible(False)
+    for ax, name in zip(panels, names):
         classes = [c for c in CLASSES if c[0] in data[name]]
         heights = [data[name][c[0]][1] for c in classes]
         bars = ax.bar([c[1] for c in classes], heights, color=[c[2] for c in classes])
@@ -81,7 +86,8 @@ def main(argv=None):
         ax.tick_params(axis='x', labelsize=8)
     top = max(v[1] for n in names for v in data[n].values())
     axes[0][0].set_ylim(0, 1.25 * max(top, 1.0))
-    axes[0][0].set_ylabel('evaluations per ray')
+    for row in axes:
+        row[0].set_ylabel('evaluations per ray')
     fig.suptitle(a.title)
     fig.tight_layout()
     fig.savefig(a.out, dpi=90)
