@@ -2,7 +2,7 @@
 // ground and a grid of analytic, volumetric and signed-distance primitives, radiance and shadow
 // rays, animated over --frames with no acceleration-structure work. Prints timings and the SBT.
 //   --gallery PATH  also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)
-//   --bench         per primitive alone at --size: trace ms (median of 5), coverage, and mean
+//   --bench         per primitive alone at --size: trace ms (median of 5), coverage, evaluations per second, and mean
 //                   marching steps (distance or field evaluations, the normal's included) over the rays that hit, over
 //                   all rays that entered the primitive's AABB (hits and misses), and per pixel
 //   --relax W       sphere tracing's over-relaxation w in [1, 2) (default 1: plain)
@@ -59,13 +59,15 @@ void bench_row(proceduray::vk::Renderer& timed, proceduray::vk::Renderer& counte
   }
   const double pixels = double(w) * h;
   if (all_steps == 0) {  // analytic: no marching, and no way to tell AABB rays from the rest
-    std::printf("%-16s %10.2f %8.1f%% %9s %10.1f %10s %10.2f\n", name.c_str(), median(ms), 100.0 * double(hits) / pixels,
-                "-", 0.0, "0", 0.0);
+    std::printf("%-16s %10.2f %8.1f%% %9s %10.1f %10s %10.2f %11s\n", name.c_str(), median(ms), 100.0 * double(hits) / pixels,
+                "-", 0.0, "0", 0.0, "-");
     return;
   }
-  std::printf("%-16s %10.2f %8.1f%% %8.1f%% %10.1f %10.1f %10.2f\n", name.c_str(), median(ms), 100.0 * double(hits) / pixels,
-              100.0 * double(entered) / pixels, hits ? hit_steps / double(hits) : 0.0,
-              entered ? all_steps / double(entered) : 0.0, all_steps / pixels);
+  // Evaluations per second: the counted frame's evaluations over the timed frame's trace time
+  // (times the flops of one evaluation, over bench_peak's FLOP/s: the fraction of the peak).
+  std::printf("%-16s %10.2f %8.1f%% %8.1f%% %10.1f %10.1f %10.2f %11.1f\n", name.c_str(), median(ms),
+              100.0 * double(hits) / pixels, 100.0 * double(entered) / pixels, hits ? hit_steps / double(hits) : 0.0,
+              entered ? all_steps / double(entered) : 0.0, all_steps / pixels, all_steps / (median(ms) * 1.0e3));
 }
 
 /// Renders each primitive alone (Layout::isolated): the gallery tiles and the benchmark rows.
@@ -81,8 +83,8 @@ void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, co
   std::vector<std::uint8_t> tiles(std::size_t(w) * columns * h * rows * 4);
   if (bench) {
     std::printf("over-relaxation w = %.2f\n", double(relax));
-    std::printf("%-16s %10s %9s %9s %10s %10s %10s\n", "primitive", "trace ms", "coverage", "in AABB", "steps/hit",
-                "steps/ray", "steps/px");
+    std::printf("%-16s %10s %9s %9s %10s %10s %10s %11s\n", "primitive", "trace ms", "coverage", "in AABB", "steps/hit",
+                "steps/ray", "steps/px", "Mevals/s");
   }
   for (std::uint32_t k = 0; k < d3d12::primitive_count; ++k) {
     const auto kind = static_cast<d3d12::PrimitiveKind>(k);
@@ -121,7 +123,8 @@ int main(int argc, char** argv) {
   examples::Options o = examples::parse(argc, argv, "03_d3d12_scene", {.width = 1024, .height = 768, .frames = 1},
                                         [&](CLI::App& app) {
     app.add_option("--gallery", gallery_path, "also render each primitive alone into one tiled PNG (5 x 2 tiles of --size)");
-    app.add_flag("--bench", bench, "per primitive alone at --size: trace ms (median of 5), coverage, marching steps");
+    app.add_flag("--bench", bench, "per primitive alone at --size: trace ms (median of 5), coverage, marching steps, "
+                 "evaluations per second");
     app.add_option("--relax", relax, "the SDFs' over-relaxation w in [1, 2) (1: their default method)")
         ->check(CLI::Range(1.0f, 1.9999f));
   });
