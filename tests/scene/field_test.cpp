@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -130,6 +131,37 @@ TEST_CASE("field: the generated shader includes the file, calls the function and
   CHECK(!has(b, "bulb_normal"));
   bulb.normal = "bulb_normal";  // the user's exact normal first, differences where it declines
   CHECK(has(field_stage_source(bulb, 0), "if (found && !bulb_normal(p, iterations, n)) n = proceduray_march0_normal("));
+}
+
+TEST_CASE("field: the knobs become specialization constants, one per member, with their bits") {
+  const std::string s = field_stage_source(gyroid(), 0);
+  // The flag and every member of MarchKnobs, by the registered struct: a new knob needs no edit.
+  CHECK(has(s, "layout(constant_id = 2000) const bool proceduray_knobs_specialized = false;"));
+  const TypeOps& t = type_ops<MarchKnobs>;
+  REQUIRE(t.field_count == sizeof(MarchKnobs) / 4);  // every member one 4-byte constant
+  for (std::size_t i = 0; i < t.field_count; ++i) {
+    const std::string name = "proceduray_knob_" + std::string(t.fields[i].name);
+    CAPTURE(name);
+    CHECK(has(s, "layout(constant_id = " + std::to_string(2001 + i) + ") const "));
+    CHECK(has(s, " " + name + " = "));
+    CHECK(has(s, "k." + std::string(t.fields[i].name) + " = " + name + ";"));
+  }
+  CHECK(has(s, "f.knobs = proceduray_field_knobs(f.knobs);"));  // before any use of the knobs
+  CHECK(s.find("f.knobs = proceduray_field_knobs") < s.find("field_march_begin("));
+  MarchKnobs k = march_base_knobs;
+  k.method = MarchMethod::relaxed;
+  k.relaxation = 1.25f;
+  k.probe = 3.0f;
+  const std::vector<SpecConstant> c = field_spec_constants(k);
+  REQUIRE(c.size() == 1 + t.field_count);
+  CHECK(c[0] == SpecConstant{field_spec_id, 1u});
+  for (std::size_t i = 0; i < c.size(); ++i) CHECK(c[i].id == field_spec_id + i);
+  CHECK(c[1].bits == static_cast<std::uint32_t>(MarchMethod::relaxed));  // method, the first member
+  float relaxation = 0.0f, probe = 0.0f;
+  std::memcpy(&relaxation, &c[7].bits, 4);  // relaxation, the 7th member
+  std::memcpy(&probe, &c[15].bits, 4);      // probe, the last
+  CHECK(relaxation == 1.25f);
+  CHECK(probe == 3.0f);
 }
 
 TEST_CASE("field: a normal function needs a name of its own") {

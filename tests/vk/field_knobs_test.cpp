@@ -322,3 +322,65 @@ TEST_CASE("the classic hit rule fattens a silhouette by its threshold, as the cl
   CHECK(exact_false <= 2);               // a crossing is needed: the same threshold keeps the silhouette
   CHECK(pr::describe(classic).find("refine=classic") != std::string::npos);
 }
+
+namespace {
+/// True when `spirv` declares a specialization constant with SpecId `id` (OpDecorate %x SpecId id).
+bool declares_spec_id(const std::vector<std::uint32_t>& spirv, std::uint32_t id) {
+  for (std::size_t i = 5; i < spirv.size();) {
+    const std::uint32_t count = spirv[i] >> 16, opcode = spirv[i] & 0xFFFFu;
+    if (count == 0) return false;
+    if (opcode == 71 && count == 4 && spirv[i + 2] == 1 && spirv[i + 3] == id) return true;  // 1: SpecId
+    i += count;
+  }
+  return false;
+}
+}  // namespace
+
+TEST_CASE("a field's knobs compiled in (specialized) and read per ray (general) render the same image") {
+  TestContext t;
+  FieldScene ball("ball.glsl"), gyroid("gyroid.glsl", "", 1.75f);
+  pr::vk::RendererOptions general = options();
+  general.specialize_fields = false;
+  // The field's stage is the generated one, and its SPIR-V declares the knobs as constants.
+  const pr::Plan plan = pr::compile(ball.scene);
+  const pr::vk::SceneStages stages = pr::vk::compile_scene_stages(plan, options());
+  std::size_t field_stages = 0;
+  for (std::size_t i = 0; i < plan.pipeline().stages.size(); ++i) {
+    if (!plan.pipeline().stages[i].field) continue;
+    ++field_stages;
+    CHECK(*plan.pipeline().stages[i].field == 0u);
+    CHECK(declares_spec_id(stages.spirv[i], pr::field_spec_id));
+    CHECK(declares_spec_id(stages.spirv[i], pr::field_spec_id + 1));  // the method
+  }
+  CHECK(field_stages == 1);
+  for (FieldScene* scene : {&ball, &gyroid}) {
+    pr::vk::Renderer s(t.ctx, scene->scene, options()), g(t.ctx, scene->scene, general);
+    // Each method of march/ the field takes, the classic rule, tetrahedral normals, fixed steps.
+    std::vector<pr::MarchKnobs> settings;
+    for (pr::MarchMethod m : pr::field_capabilities(s.plan().fields()[0].field).methods) {
+      pr::MarchKnobs k = pr::march_base_knobs;
+      k.method = m;
+      k.relaxation = 1.5f;
+      k.fixed_steps = 48;
+      settings.push_back(k);
+    }
+    settings.push_back(settings.front());
+    settings.back().refine = 2;
+    settings.back().normal = pr::MarchNormal::tetrahedral;
+    settings.back().threshold = 2.0f;
+    std::vector<std::vector<std::uint8_t>> images;
+    for (const pr::MarchKnobs& k : settings) {
+      CAPTURE(pr::describe(k));
+      images.push_back(render(s, k));
+      CHECK(covered(images.back()) > width * height / 10);
+      CHECK(images.back() == render(g, k));
+    }
+    CHECK(images.back() != images.front());  // the knobs reach the specialized shader
+    // One pipeline per change of knobs for the specialized renderer (every setting differs from
+    // the one before, the first from the defaults; none for equal knobs), none for the general one.
+    CHECK(s.timings().rebuilds == settings.size());
+    render(s, settings.back());
+    CHECK(s.timings().rebuilds == settings.size());
+    CHECK(g.timings().rebuilds == 0);
+  }
+}

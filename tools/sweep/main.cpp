@@ -250,6 +250,14 @@ struct ObjectResult {
   double evals = 0.0;
 };
 
+/// The measuring renderer reads each point's knobs per ray (the general variant: no pipeline per
+/// point); the timing one compiles them in (specialized, as a user's frame runs), one pipeline per
+/// point, built before the point's warm-up frames.
+pr::vk::RendererOptions general(pr::vk::RendererOptions o) {
+  o.specialize_fields = false;
+  return o;
+}
+
 /// One scene view: a measuring renderer (outputs), a timing renderer (none), its truth.
 template <class Scene, class Constants, class Truth>
 struct View {
@@ -400,7 +408,7 @@ struct Sweep {
 
 void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
   const paper::PaperScene measured_scene(paper::accuracy_outputs), timed_scene;
-  pr::vk::Renderer measured(sw.ctx, measured_scene, measured_scene.renderer_options());
+  pr::vk::Renderer measured(sw.ctx, measured_scene, general(measured_scene.renderer_options()));
   pr::vk::Renderer timed(sw.ctx, timed_scene, timed_scene.renderer_options());
   paper::Frame base = paper::default_frame(sw.width, sw.height, sw.o.time);
   base.flags = 0;
@@ -446,7 +454,7 @@ void sweep_d3d12(Sweep& sw, const std::vector<Object>& objects) {
   for (const D3d12View& view : views) {
     const d3d12::D3d12Scene measured_scene(d3d12::default_primitives(), view.layout, d3d12::accuracy_outputs);
     const d3d12::D3d12Scene timed_scene(d3d12::default_primitives(), view.layout);
-    pr::vk::Renderer measured(sw.ctx, measured_scene, d3d12::renderer_options());
+    pr::vk::Renderer measured(sw.ctx, measured_scene, general(d3d12::renderer_options()));
     pr::vk::Renderer timed(sw.ctx, timed_scene, d3d12::renderer_options());
     d3d12::SceneConstants base = view.base;
     base.flags = 0;

@@ -57,7 +57,9 @@ PROCEDURAY_DECL void PlanBuilder::fields() {
   for (PlannedStage& stage : out.m_pipeline.stages) {
     if (stage.stage != ShaderStage::intersection) continue;
     for (std::uint32_t i = 0; i < s.fields().size(); ++i) {
-      if (stage.shader == field_stage_name(s.fields()[i])) stage.source = field_stage_source(s.fields()[i], i);
+      if (stage.shader != field_stage_name(s.fields()[i])) continue;
+      stage.source = field_stage_source(s.fields()[i], i);
+      stage.field = i;
     }
   }
 }

@@ -137,6 +137,40 @@ PROCEDURAY_DECL std::string field_source(const DistanceField& f, std::string_vie
 
 PROCEDURAY_DECL std::string field_stage_name(const DistanceField& f) { return f.id + ".field.rint"; }
 
+namespace detail {
+/// MarchKnobs' members as specialization constants (ids field_spec_id + 1...) and the knobs they
+/// make when field_spec_id is set: generated from the registered struct, so a new knob is a
+/// constant without an edit here.
+inline std::string field_spec_declarations() {
+  const TypeOps& t = type_ops<MarchKnobs>;
+  std::string s = "layout(constant_id = " + std::to_string(field_spec_id) + ") const bool proceduray_knobs_specialized = false;\n";
+  std::string body;
+  for (std::size_t i = 0; i < t.field_count; ++i) {
+    const Field& m = t.fields[i];
+    const std::string name = "proceduray_knob_" + std::string(m.name);
+    const bool real = m.type->glsl_name == "float";
+    s += "layout(constant_id = " + std::to_string(field_spec_id + 1 + i) + ") const " + std::string(m.type->glsl_name) +
+         " " + name + " = " + (real ? "0.0" : "0u") + ";\n";
+    body += "  k." + std::string(m.name) + " = " + name + ";\n";
+  }
+  s += "MarchKnobs proceduray_field_knobs(MarchKnobs general) {\n";
+  s += "  if (!proceduray_knobs_specialized) return general;\n";
+  s += "  MarchKnobs k;\n" + body + "  return k;\n}\n";
+  return s;
+}
+}  // namespace detail
+
+PROCEDURAY_DECL std::vector<SpecConstant> field_spec_constants(const MarchKnobs& knobs) {
+  const TypeOps& t = type_ops<MarchKnobs>;
+  std::vector<SpecConstant> out{{field_spec_id, 1u}};
+  for (std::size_t i = 0; i < t.field_count; ++i) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, reinterpret_cast<const char*>(&knobs) + t.fields[i].offset, sizeof bits);
+    out.push_back({field_spec_id + 1 + static_cast<std::uint32_t>(i), bits});
+  }
+  return out;
+}
+
 PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint32_t index) {
   const std::string n = std::to_string(index);
   const std::string distance = "proceduray_field" + n;
@@ -158,8 +192,10 @@ PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint
   s += "#define PROCEDURAY_MARCHER_FIELD uint\n";
   s += "#define PROCEDURAY_MARCHER_DISTANCE " + distance + "\n";
   s += "#include \"marching/marcher.glsl\"\n";
+  s += detail::field_spec_declarations();
   s += "void main() {\n";
   s += "  FieldSettings f = " + std::string(field_settings_name) + ".data[" + n + "];\n";
+  s += "  f.knobs = proceduray_field_knobs(f.knobs);\n";
   s += "  FieldMarch fm;\n";
   // lipschitz and relaxed steps divide by the bound; sphere steps (only where L <= 1) do not.
   s += "  if (!field_march_begin(" + distance + "_box_min, " + distance + "_box_max, f.knobs, f.pixel_angle, " +

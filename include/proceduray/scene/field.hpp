@@ -32,6 +32,7 @@
 #include <proceduray/march/knobs.hpp>
 #include <proceduray/scene/geometry.hpp>
 #include <proceduray/scene/ids.hpp>
+#include <proceduray/scene/shader_stage.hpp>
 #include <proceduray/scene/uniform_slot.hpp>
 #include <proceduray/shader/define_struct.hpp>
 
@@ -173,11 +174,25 @@ PROCEDURAY_DECL void validate(const DistanceField& f, std::string_view op);
 /// defaults are the field's starting knobs, else march_base_knobs (a fractal's iterations its own).
 PROCEDURAY_DECL MarchCapabilities field_capabilities(const DistanceField& f);
 
+/// The first specialization constant id of a generated field stage: a bool (specialized or not),
+/// then one per MarchKnobs member in declaration order (field_spec_constants). Far above the ids
+/// a user's own GLSL would pick, below glslang's limit (2047).
+inline constexpr std::uint32_t field_spec_id = 2000;
+
+/// The constants that compile `knobs` into a generated field stage: field_spec_id = true, then
+/// each member's bits. Without them (a general stage) the shader reads the knobs from
+/// `proceduray_fields` on every ray, so they change without a new pipeline.
+PROCEDURAY_DECL std::vector<SpecConstant> field_spec_constants(const MarchKnobs& knobs);
+
 /// The name of the field's generated intersection stage: "<id>.field.rint" (no file has it).
 PROCEDURAY_DECL std::string field_stage_name(const DistanceField& f);
 
-/// The intersection shader of field number `index` (proceduray_fields.data[index]): includes the user's file and marching/field.glsl, generates the
-/// marcher (marching/marcher.glsl) for f, marches with the bound, takes the normal and reports FieldHit.
+/// The intersection shader of field number `index` (proceduray_fields.data[index]): includes the
+/// user's file and marching/field.glsl, generates the marcher (marching/marcher.glsl) for f,
+/// marches with the bound, takes the normal and reports FieldHit. Its knobs are specialization
+/// constants (field_spec_constants) when given, else the buffer's: one SPIR-V for both variants.
+/// Why constants: the driver folds the methods a field does not use out of its hit group, so the
+/// pipeline compiles one march per field instead of every method of march/, and runs fewer branches.
 PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint32_t index);
 
 }  // namespace proceduray

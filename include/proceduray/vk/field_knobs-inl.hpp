@@ -59,6 +59,13 @@ PROCEDURAY_DECL void FieldKnobs::set(GeometryId field, const MarchKnobs& knobs, 
   if (std::memcmp(&m_settings[i].knobs, &knobs, sizeof knobs) == 0) return;
   m_settings[i].knobs = knobs;
   m_dirty = true;
+  ++m_version;
+}
+
+PROCEDURAY_DECL std::vector<MarchKnobs> FieldKnobs::knobs() const {
+  std::vector<MarchKnobs> out;
+  for (const FieldSettings& s : m_settings) out.push_back(s.knobs);
+  return out;
 }
 
 PROCEDURAY_DECL const MarchKnobs& FieldKnobs::get(GeometryId field, std::string_view op) const {

@@ -43,6 +43,11 @@ class FieldKnobs {
   void upload(Bindings& bindings, std::string_view op);
   /// True when a change waits for upload().
   bool dirty() const noexcept { return m_dirty; }
+  /// Counts the knob changes (not the pixel angle's): a pipeline with the knobs compiled in
+  /// (RendererOptions::specialize_fields) is stale when this moved.
+  std::uint64_t version() const noexcept { return m_version; }
+  /// Every field's knobs now, in Plan::fields() order.
+  std::vector<MarchKnobs> knobs() const;
   /// Throws UsageError, naming `op` and the field, when an error budget's pick (Plan::fields())
   /// came from a table measured on another device than `device`, or for another text of the
   /// field's GLSL file than the one found in `dirs`: its errors were measured for something else.
@@ -56,6 +61,7 @@ class FieldKnobs {
   std::vector<FieldSettings> m_settings;
   bool m_pixel_angle = false;
   bool m_dirty = false;
+  std::uint64_t m_version = 0;
 };
 
 }  // namespace proceduray::vk

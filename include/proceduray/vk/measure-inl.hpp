@@ -181,7 +181,8 @@ PROCEDURAY_DECL FieldMeter::FieldMeter(const Context& ctx, DistanceField field, 
                                    .normal = m_field.normal,
                                    .closest_hit = {{ray, "measure/measure.rchit"}}});
   if (const auto lib = library_shader_dir(); !lib.empty()) dirs.push_back(lib);
-  m_renderer = std::make_unique<Renderer>(ctx, scene, RendererOptions{.shader_dirs = dirs});
+  // The general variant: a meter renders many settings, each a new pipeline if specialized.
+  m_renderer = std::make_unique<Renderer>(ctx, scene, RendererOptions{.shader_dirs = dirs, .specialize_fields = false});
   m_device = ctx.name();
 }
 

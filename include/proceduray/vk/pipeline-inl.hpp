@@ -74,6 +74,9 @@ PROCEDURAY_DECL void check_pipeline_desc(const Context& ctx, const PipelineDesc&
 PROCEDURAY_DECL VkPipeline create_pipeline(const Context& ctx, const PipelineDesc& desc, VkPipelineLayout layout) {
   std::vector<DeviceHandle<VkShaderModule>> modules;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
+  // Each stage's map entries and specialization info, sized first: stages point into them.
+  std::vector<std::vector<VkSpecializationMapEntry>> entries(desc.shaders.size());
+  std::vector<VkSpecializationInfo> specializations(desc.shaders.size());
   for (const auto& shader : desc.shaders) {
     auto info = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
     info.codeSize = shader.spirv.size() * sizeof(std::uint32_t);
@@ -85,6 +88,17 @@ PROCEDURAY_DECL VkPipeline create_pipeline(const Context& ctx, const PipelineDes
     stage.stage = detail::vk_stage(shader.stage);
     stage.module = module;
     stage.pName = "main";
+    if (!shader.constants.empty()) {
+      const std::size_t i = stages.size();
+      for (std::size_t c = 0; c < shader.constants.size(); ++c) {
+        entries[i].push_back({shader.constants[c].id, static_cast<std::uint32_t>(c * sizeof(SpecConstant) +
+                                                                                 offsetof(SpecConstant, bits)),
+                              sizeof(std::uint32_t)});
+      }
+      specializations[i] = {static_cast<std::uint32_t>(entries[i].size()), entries[i].data(),
+                            shader.constants.size() * sizeof(SpecConstant), shader.constants.data()};
+      stage.pSpecializationInfo = &specializations[i];
+    }
     stages.push_back(stage);
   }
   std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;

@@ -19,10 +19,12 @@
 
 #include <proceduray/config.hpp>
 
+#include <proceduray/scene/shader_stage.hpp>
 #include <proceduray/vk/descriptors.hpp>
 #include <proceduray/vk/shader_compiler.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <span>
 #include <string>
@@ -55,6 +57,7 @@ struct PipelineDesc {
   struct Shader {
     ShaderStage stage;
     std::vector<std::uint32_t> spirv;
+    std::vector<SpecConstant> constants;  ///< its specialization constants; none: the module's defaults
   };
   std::vector<Shader> shaders;
   std::vector<ShaderGroup> groups;
@@ -72,8 +75,8 @@ struct PipelineDesc {
   bool planned = false;
 
   /// Adds a shader and returns its index for ShaderGroup.
-  std::uint32_t add_shader(ShaderStage stage, std::vector<std::uint32_t> spirv) {
-    shaders.push_back({stage, std::move(spirv)});
+  std::uint32_t add_shader(ShaderStage stage, std::vector<std::uint32_t> spirv, std::vector<SpecConstant> constants = {}) {
+    shaders.push_back({stage, std::move(spirv), std::move(constants)});
     return static_cast<std::uint32_t>(shaders.size() - 1);
   }
 };

@@ -15,8 +15,9 @@
 
 namespace proceduray::vk {
 
-PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, RendererOptions options)
-    : m_ctx(&ctx), m_plan(std::move(plan)) {
+PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, RendererOptions given)
+    : m_ctx(&ctx), m_options(std::move(given)), m_plan(std::move(plan)) {
+  const RendererOptions& options = m_options;
   m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
   m_slot_frames.resize(m_ring->size());
   if (const auto raygen = m_plan.records(SbtRegionKind::raygen); raygen.size() > 1) {
@@ -28,32 +29,50 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, Re
   // Every device limit is checked once, before any device object is made: the plan's (layout),
   // then the depth the stages' tracing settles, when derived.
   m_layout = m_plan.layout(ctx.limits());
-  SceneStages stages = compile_scene_stages(m_plan, options);
+  m_stages = compile_scene_stages(m_plan, options);
   FieldKnobs::check_picks(m_plan, ctx.name(), options.shader_dirs.empty() ?
       std::vector<std::filesystem::path>{std::filesystem::current_path()} : options.shader_dirs, "Renderer");
-  m_plan.settle_recursion(stages.traces, ctx.limits(), "Renderer");
+  m_plan.settle_recursion(m_stages.traces, ctx.limits(), "Renderer");
   const auto start = Clock::now();
   m_structures = std::make_unique<SceneAcceleration>(ctx, m_plan, options.blas);
   m_timings.acceleration_ms = ms_since(start);
   m_bindings = std::make_unique<Bindings>(ctx, m_plan.global_signature(), m_structures->tlas().structure(),
                                           static_cast<std::uint32_t>(m_plan.instances().size()));
+  m_fields = std::make_unique<FieldKnobs>(m_plan, *m_bindings);
+  m_meshes = std::make_unique<MeshBuffers>(ctx, m_plan);
   PipelineTimings pipeline;
-  m_pipeline = make_scene_pipeline(ctx, m_plan, std::move(stages), m_bindings->layouts(), m_bindings->push_size(), options,
-                                   &pipeline);
+  build_pipeline(&pipeline);
   m_timings.compile_ms = pipeline.compile_ms;
   m_timings.pipeline_ms = pipeline.pipeline_ms;
   m_timings.pipeline_cached = pipeline.pipeline_cached;
   m_timings.spirv_cached = pipeline.spirv_cached;
   m_timings.spirv_compiled = pipeline.spirv_compiled;
-  m_meshes = std::make_unique<MeshBuffers>(ctx, m_plan);
-  m_sbt = std::make_unique<SbtBuffer>(ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
+  // Only a specialized pipeline is built again: the general one keeps no SPIR-V.
+  if (!m_options.specialize_fields || m_plan.fields().empty()) m_stages = {};
   m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
-  m_fields = std::make_unique<FieldKnobs>(m_plan, *m_bindings);
+}
+
+PROCEDURAY_DECL void Renderer::build_pipeline(PipelineTimings* timings) {
+  const bool specialize = m_options.specialize_fields && !m_plan.fields().empty();
+  const std::vector<MarchKnobs> knobs = specialize ? m_fields->knobs() : std::vector<MarchKnobs>{};
+  // A copy of the SPIR-V while a knob change may need it again; else the modules themselves.
+  SceneStages stages = specialize ? m_stages : std::move(m_stages);
+  m_sbt.reset();  // it points at the old pipeline's group handles
+  m_pipeline = make_scene_pipeline(*m_ctx, m_plan, std::move(stages), m_bindings->layouts(), m_bindings->push_size(),
+                                   m_options, timings, knobs);
+  m_sbt = std::make_unique<SbtBuffer>(*m_ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
+  m_pipeline_knobs = m_fields->version();
 }
 
 PROCEDURAY_DECL void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
   check_trace_size(*m_ctx, width, height);
   if (m_fields->dirty()) m_ring->wait_all();  // the settings buffer is written in place
+  if (m_options.specialize_fields && m_fields->version() != m_pipeline_knobs) {
+    const auto start = Clock::now();  // after the wait above: no frame in flight uses the old ones
+    build_pipeline(nullptr);
+    ++m_timings.rebuilds;
+    m_timings.rebuild_ms += ms_since(start);
+  }
   m_fields->upload(*m_bindings, op);
   m_bindings->check_ready(op);
   if (m_image && m_image->width() == width && m_image->height() == height) return;

@@ -68,6 +68,10 @@ struct BuildTimings {
   bool pipeline_cached = false;  ///< the pipeline cache file was valid and used
   std::uint32_t spirv_cached = 0;    ///< stages whose SPIR-V came from the cache (RendererOptions::cache)
   std::uint32_t spirv_compiled = 0;  ///< stages glslang compiled
+  /// Pipelines built again for changed field knobs (RendererOptions::specialize_fields), and the
+  /// wall time of all of them (pipeline and SBT).
+  std::uint32_t rebuilds = 0;
+  double rebuild_ms = 0;
 };
 
 /// Builds the device objects of a scene and traces frames of it.
@@ -169,7 +173,8 @@ class Renderer {
   /// scale with it, so a scene with fields needs it before its first frame (else UsageError).
   void set_pixel_angle(float radians) { m_fields->set_pixel_angle(radians, "Renderer::set_pixel_angle"); }
   /// Sets a distance field's knobs (add_distance_field's geometry), checked against what it
-  /// accepts (field_capabilities); used from the next frame on.
+  /// accepts (field_capabilities); used from the next frame on. With specialized fields (the
+  /// default) a change builds the pipeline and SBT again before that frame (timings().rebuilds).
   void set_field_knobs(GeometryId field, const MarchKnobs& knobs) {
     m_fields->set(field, knobs, "Renderer::set_field_knobs");
   }
@@ -218,6 +223,7 @@ class Renderer {
   double warm_up();
 
   const BuildTimings& timings() const noexcept { return m_timings; }
+  /// The pipeline and SBT of the last frame (a knob change replaces both: don't keep them).
   const Pipeline& pipeline() const noexcept { return *m_pipeline; }
   const SbtBuffer& sbt() const noexcept { return *m_sbt; }
   const Tlas& tlas() const noexcept { return m_structures->tlas(); }
@@ -252,13 +258,18 @@ class Renderer {
   };
   /// The image layout transitions, structure work, uploads and the trace.
   FrameWork record_frame(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height, Stamp before, Stamp after);
+  /// The pipeline and SBT for the fields' knobs now (specialized) or for any (general).
+  void build_pipeline(PipelineTimings* timings);
   /// The slot of `frame`, waited for and timed.
   std::pair<FrameSlot*, SlotFrame*> finished(FrameTicket frame, std::string_view op);
   /// Mapped bytes of output `which` in a slot (Readback::all), after its rgba.
   std::span<const std::uint8_t> output_bytes(FrameTicket frame, Output which, std::string_view op);
 
   const Context* m_ctx;
+  RendererOptions m_options;
   proceduray::Plan m_plan;
+  SceneStages m_stages;                 // kept only while a knob change may rebuild the pipeline
+  std::uint64_t m_pipeline_knobs = 0;   // FieldKnobs::version() the pipeline was specialized for
   SbtLayout m_layout;
   BuildTimings m_timings;
   std::unique_ptr<SceneAcceleration> m_structures;

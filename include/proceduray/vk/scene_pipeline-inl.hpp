@@ -105,7 +105,8 @@ PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx
                                                               SceneStages stages,
                                                               std::span<const VkDescriptorSetLayout> set_layouts,
                                                               std::uint32_t push_size, const RendererOptions& options,
-                                                              PipelineTimings* timings) {
+                                                              PipelineTimings* timings,
+                                                              std::span<const MarchKnobs> field_knobs) {
   using Clock = std::chrono::steady_clock;
   const PipelinePlan& planned = plan.pipeline();
   if (!planned.recursion_settled || stages.spirv.size() != planned.stages.size()) {
@@ -114,8 +115,16 @@ PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx
                      " stages); compile them with compile_scene_stages(plan), then call plan.layout(limits) and "
                      "plan.settle_recursion(traces, limits)");
   }
+  if (!field_knobs.empty() && field_knobs.size() != plan.fields().size()) {
+    throw UsageError("make_scene_pipeline: " + std::to_string(field_knobs.size()) + " field knobs for a plan of " +
+                     std::to_string(plan.fields().size()) + " distance fields; pass one per field, or none");
+  }
   PipelineDesc desc;
-  for (std::size_t i = 0; i < planned.stages.size(); ++i) desc.add_shader(planned.stages[i].stage, std::move(stages.spirv[i]));
+  for (std::size_t i = 0; i < planned.stages.size(); ++i) {
+    const std::optional<std::uint32_t> field = planned.stages[i].field;
+    desc.add_shader(planned.stages[i].stage, std::move(stages.spirv[i]),
+                    field && !field_knobs.empty() ? field_spec_constants(field_knobs[*field]) : std::vector<SpecConstant>{});
+  }
   desc.groups = shader_groups(planned);
   desc.set_layouts.assign(set_layouts.begin(), set_layouts.end());
   desc.push_constant_size = push_size;

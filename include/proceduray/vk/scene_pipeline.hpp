@@ -49,6 +49,12 @@ struct RendererOptions {
   /// Frames a Renderer keeps in flight, 1..max_frames_in_flight (8); default 2: the host records
   /// one frame while the device traces the one before.
   std::uint32_t frames_in_flight = 2;
+  /// Compile each distance field's knobs into its intersection (default on): the driver drops the
+  /// methods it does not use, so the pipeline builds faster and traces with fewer branches; a
+  /// knob change (Renderer::set_field_knobs) builds the pipeline again before the next frame. Off:
+  /// the general variant reads the knobs per ray from a buffer, so a sweep or a viewer changes
+  /// them for free. Both render the same image.
+  bool specialize_fields = true;
 };
 
 /// A plan's stages compiled, in pipeline().stages order.
@@ -92,11 +98,14 @@ PROCEDURAY_DECL SceneStages compile_scene_stages(const proceduray::Plan& plan, c
 /// Makes the plan's pipeline from its compiled stages over `set_layouts` and `push_size` bytes of
 /// push constants, at the plan's recursion depth. The plan must be checked (layout()) and settled
 /// (settle_recursion): its numbers are taken as they are (UsageError when not settled).
+/// `field_knobs`, one per Plan::fields() entry, are compiled into the fields' intersections
+/// (field_spec_constants); empty: the general variant, which reads them from the buffer.
 PROCEDURAY_DECL std::unique_ptr<Pipeline> make_scene_pipeline(const Context& ctx, const proceduray::Plan& plan,
                                                               SceneStages stages,
                                                               std::span<const VkDescriptorSetLayout> set_layouts,
                                                               std::uint32_t push_size, const RendererOptions& options,
-                                                              PipelineTimings* timings = nullptr);
+                                                              PipelineTimings* timings = nullptr,
+                                                              std::span<const MarchKnobs> field_knobs = {});
 
 }  // namespace proceduray::vk
 
