@@ -74,11 +74,11 @@ void bench_row(proceduray::vk::Renderer& timed, proceduray::vk::Renderer& counte
 void isolated(const proceduray::vk::Context& ctx, const examples::Options& o, const char* gallery, bool bench,
               float relax) {
   d3d12::D3d12Scene scene(d3d12::default_primitives(), d3d12::Layout::isolated);
-  proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options(o.cache));
+  proceduray::vk::Renderer renderer(ctx, scene, examples::renderer_options(o, d3d12::renderer_options(o.cache)));
   // The benchmark's evaluation counts come from a second renderer with the steps output.
   const d3d12::D3d12Scene counted_scene(d3d12::default_primitives(), d3d12::Layout::isolated, {proceduray::Output::steps});
   std::unique_ptr<proceduray::vk::Renderer> counted;
-  if (bench) counted = std::make_unique<proceduray::vk::Renderer>(ctx, counted_scene, d3d12::renderer_options(o.cache));
+  if (bench) counted = std::make_unique<proceduray::vk::Renderer>(ctx, counted_scene, examples::renderer_options(o, d3d12::renderer_options(o.cache)));
   const std::uint32_t w = o.width, h = o.height, columns = 5, rows = 2;
   std::vector<std::uint8_t> tiles(std::size_t(w) * columns * h * rows * 4);
   if (bench) {
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
       return ctx.validation_messages().empty() ? 0 : 1;
     }
     d3d12::D3d12Scene scene;
-    proceduray::vk::Renderer renderer(ctx, scene, d3d12::renderer_options(o.cache));
+    proceduray::vk::Renderer renderer(ctx, scene, examples::renderer_options(o, d3d12::renderer_options(o.cache)));
     const proceduray::Camera camera = d3d12::sample_camera(o.width, o.height);
     auto constants = [&](float time) {
       d3d12::SceneConstants c = d3d12::default_constants(camera, time);

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     proceduray::check_writable(o.out);
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
     cis565::Cis565Scene scene(5);  // one pipeline for every depth: the frame's uniform picks it
-    proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options(o.cache));
+    proceduray::vk::Renderer renderer(ctx, scene, examples::renderer_options(o, scene.renderer_options(o.cache)));
     renderer.set(cis565::constants_slot, cis565::default_constants(o.width, o.height, 0.0f, depth));
     examples::print_build(ctx, renderer);
     if (sweep) {

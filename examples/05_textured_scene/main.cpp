@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
     proceduray::check_writable(o.out);
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
     textured::TexturedScene scene;
-    proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options(o.cache));
+    proceduray::vk::Renderer renderer(ctx, scene, examples::renderer_options(o, scene.renderer_options(o.cache)));
     textured::set_textures(renderer);
     renderer.set(textured::constants_slot, textured::default_constants(o.width, o.height));
     examples::print_build(ctx, renderer);

@@ -23,6 +23,8 @@ Options parse(int argc, char** argv, const char* program, Options defaults, cons
       ->check(CLI::IsMember({"cpu", "gpu", "auto"}))->capture_default_str();
   app.add_option("--cache", o.cache, "pipeline cache file (default: one per device in $XDG_CACHE_HOME/proceduray or ~/.cache/proceduray)");
   app.add_flag("--validation", o.validation, "enable the Khronos validation layer");
+  app.add_flag("--general", o.general, "the general pipeline: distance fields read their knobs per ray instead of "
+                                        "having them compiled in (slower; what a sweep uses)");
   if (extra) extra(app);
   try {
     app.parse(argc, argv);

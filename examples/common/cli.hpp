@@ -10,6 +10,7 @@
 #include "paths.hpp"
 
 #include <proceduray/vk/context.hpp>
+#include <proceduray/vk/scene_pipeline.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -30,6 +31,7 @@ struct Options {
   proceduray::vk::DevicePreference device = proceduray::vk::DevicePreference::automatic;
   bool validation = false;
   std::filesystem::path cache;  ///< pipeline cache file; default: the cache folder's
+  bool general = false;         ///< fields read their knobs per ray (RendererOptions::specialize_fields off)
   std::optional<int> exit;      ///< set when the program should stop with this code
 };
 
@@ -39,5 +41,11 @@ struct Options {
 /// so only the examples that add options of their own include <CLI/CLI.hpp>.
 Options parse(int argc, char** argv, const char* program, Options defaults,
               const std::function<void(CLI::App&)>& extra = {});
+
+/// `options` with what the command line asks of the renderer (--general).
+inline proceduray::vk::RendererOptions renderer_options(const Options& o, proceduray::vk::RendererOptions options) {
+  options.specialize_fields = !o.general;
+  return options;
+}
 
 }  // namespace examples

@@ -39,6 +39,7 @@ inline void print_build(const proceduray::vk::Context& ctx, proceduray::vk::Rend
               ctx.name().c_str(), t.acceleration_ms, t.compile_ms, t.spirv_cached, t.spirv_compiled, t.pipeline_ms,
               t.pipeline_cached ? "pipeline cache warm" : "pipeline cache cold", t.compile_ms + t.pipeline_ms);
   std::printf("warm-up: %.1f ms\n", renderer.warm_up());
+  if (t.rebuilds > 0) std::printf("pipeline built again for changed field knobs: %u time(s), %.1f ms\n", t.rebuilds, t.rebuild_ms);
 }
 
 /// The frames of one run: medians of their GPU and host times, whether any refit the TLAS, the last frame.
@@ -79,7 +80,7 @@ int run_scene(int argc, char** argv, const char* program, Options defaults, proc
     proceduray::check_writable(o.out);  // fail before the expensive part
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
     Scene scene;
-    proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options(o.cache));
+    proceduray::vk::Renderer renderer(ctx, scene, renderer_options(o, scene.renderer_options(o.cache)));
     set_constants(renderer, slot, constants(o, 0u));
     print_build(ctx, renderer);
     const Run run = run_frames(renderer, o, [&](std::uint32_t f) { set_constants(renderer, slot, constants(o, f)); });

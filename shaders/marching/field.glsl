@@ -39,6 +39,18 @@ struct FieldMarch {
   float footprint;
 };
 
+/// True for a ray of which only whether it hits is read: it stops at its first hit, runs no closest
+/// hit, is opaque (no any-hit reads the attributes) and culls nothing (the normal decides no face):
+/// a shadow ray. Its march skips the crossing's bisection (the crossing found is the same, so is
+/// the answer, but where the crossing lies within float rounding of the ray's tmax) and the
+/// normal's evaluations.
+bool field_hit_only() {
+  uint f = gl_IncomingRayFlagsEXT;
+  uint needed = gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT | gl_RayFlagsOpaqueEXT;
+  uint cull = gl_RayFlagsCullBackFacingTrianglesEXT | gl_RayFlagsCullFrontFacingTrianglesEXT;
+  return (f & needed) == needed && (f & cull) == 0u;
+}
+
 /// Clips the ray to [box_min, box_max] (false: it misses the box) and sets up fm for knobs k at
 /// pixel_angle radians per pixel, for a field with Lipschitz bound `lipschitz`.
 bool field_march_begin(vec3 box_min, vec3 box_max, MarchKnobs k, float pixel_angle, float lipschitz, out FieldMarch fm) {
@@ -55,6 +67,7 @@ bool field_march_begin(vec3 box_min, vec3 box_max, MarchKnobs k, float pixel_ang
   float world_length = length(gl_WorldRayDirectionEXT);
   float world_per_object = max(world_length / fm.len, 1.0e-20);
   fm.m = march_settings(k, world_per_object, pixel_angle, lipschitz);
+  if (fm.m.hit_rule == march_hit_refined && field_hit_only()) fm.m.hit_rule = march_hit_unrefined;
   fm.footprint = pixel_angle * max(t0, 0.0) * world_length;
   return true;
 }

@@ -130,7 +130,7 @@ TEST_CASE("field: the generated shader includes the file, calls the function and
   CHECK(has(b, "const float proceduray_field0_lipschitz = 1.0;"));
   CHECK(!has(b, "bulb_normal"));
   bulb.normal = "bulb_normal";  // the user's exact normal first, differences where it declines
-  CHECK(has(field_stage_source(bulb, 0), "if (found && !bulb_normal(p, iterations, n)) n = proceduray_march0_normal("));
+  CHECK(has(field_stage_source(bulb, 0), "if (normal && !bulb_normal(p, iterations, n)) n = proceduray_march0_normal("));
 }
 
 TEST_CASE("field: the knobs become specialization constants, one per member, with their bits") {

@@ -45,8 +45,10 @@ struct FieldScene {
   pr::GeometryId object;
 
   explicit FieldScene(const std::string& glsl, const std::string& intersection = {}, float lipschitz = 0.0f,
-                      std::vector<pr::FieldParameter> parameters = {}, std::string normal = {}) {
+                      std::vector<pr::FieldParameter> parameters = {}, std::string normal = {},
+                      pr::OutputSet outputs = {}) {
     const auto primary = scene.add_ray<Colour>("primary", {.miss = "sky.rmiss"});
+    scene.set_outputs(outputs);
     scene.set_global_signature(pr::default_global_signature({constants_slot}));
     scene.add_raygen("field.rgen");
     if (!intersection.empty()) {
@@ -383,4 +385,38 @@ TEST_CASE("a field's knobs compiled in (specialized) and read per ray (general) 
     CHECK(s.timings().rebuilds == settings.size());
     CHECK(g.timings().rebuilds == 0);
   }
+}
+
+TEST_CASE("a ray that reads only whether it hits (a shadow ray) skips the bisection and the normal, same answer") {
+  TestContext t;
+  FieldScene ball("ball.glsl", "", 0.0f, {}, {}, {pr::Output::steps});
+  pr::vk::Renderer r(t.ctx, ball.scene, options());
+  const auto frame = [&](std::uint32_t flags) {
+    Constants c = constants();
+    c.ray_flags = flags;
+    r.set(constants_slot, c);
+    r.set_pixel_angle(c.camera.pixel_angle);
+    return r.render(width, height);
+  };
+  const std::uint32_t first = 0x4, skip = 0x8;  // gl_RayFlagsTerminateOnFirstHitEXT, ...SkipClosestHitShaderEXT
+  const pr::vk::Frame full = frame(first), shadow = frame(first | skip);
+  std::size_t hits = 0, same = 0;
+  std::uint64_t full_steps = 0, shadow_steps = 0;
+  for (std::size_t i = 0; i < std::size_t{width} * height; ++i) {
+    const bool hit_full = (full.rgba[4 * i] | full.rgba[4 * i + 1] | full.rgba[4 * i + 2]) != 0;
+    const bool hit_shadow = shadow.rgba[4 * i] == 255;  // the payload a skipped closest hit leaves
+    hits += hit_full;
+    same += hit_full == hit_shadow;
+    full_steps += full.outputs.steps[i];
+    shadow_steps += shadow.outputs.steps[i];
+  }
+  CHECK(hits > width * height / 8);
+  CHECK(same == std::size_t{width} * height);  // the same pixels hit
+  // Per hit: the central normal's 6 evaluations and the bisection's (at least one) saved.
+  CHECK(shadow_steps + 7 * hits <= full_steps);
+  // A ray that culls needs the normal to tell the face: it pays for the normal and the bisection.
+  const pr::vk::Frame culled = frame(first | skip | 0x10);  // ...CullBackFacingTrianglesEXT: the normal decides
+  std::uint64_t culled_steps = 0;
+  for (std::uint32_t s : culled.outputs.steps) culled_steps += s;
+  CHECK(culled_steps > shadow_steps + 6 * hits);
 }

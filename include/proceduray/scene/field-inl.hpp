@@ -207,15 +207,16 @@ PROCEDURAY_DECL std::string field_stage_source(const DistanceField& f, std::uint
   s += "  float s;\n  uint steps;\n";
   s += "  bool found = " + marcher + "_trace(fm.o, fm.u, fm.range.x, fm.range.y, fm.m, iterations, s, steps);\n";
   s += "  vec3 p = fm.o + s * fm.u;\n";
+  s += "  bool normal = found && !field_hit_only();  // a shadow ray reads no normal\n";
   const std::string differences = marcher + "_normal(uint(f.knobs.normal), p, field_normal_offset(f.knobs, fm.m, p, s), "
                                   "iterations)";
   if (f.normal.empty()) {
-    s += "  vec3 n = found ? " + differences + " : vec3(0.0, 1.0, 0.0);\n";
+    s += "  vec3 n = normal ? " + differences + " : vec3(0.0, 1.0, 0.0);\n";
   } else {  // the user's exact normal where it knows one (iterations as the march used them)
     s += "  vec3 n = vec3(0.0, 1.0, 0.0);\n";
-    s += "  if (found && !" + f.normal + "(" + arguments + ", n)) n = " + differences + ";\n";
+    s += "  if (normal && !" + f.normal + "(" + arguments + ", n)) n = " + differences + ";\n";
   }
-  s += "  field_march_report(found, s / fm.len, steps, fm.m, n, march_normal_evaluations(f.knobs));\n";
+  s += "  field_march_report(found, s / fm.len, steps, fm.m, n, normal ? march_normal_evaluations(f.knobs) : 0u);\n";
   s += "}\n";
   return s;
 }
