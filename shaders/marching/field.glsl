@@ -24,20 +24,7 @@
 #ifndef PROCEDURAY_MARCHING_FIELD_GLSL
 #define PROCEDURAY_MARCHING_FIELD_GLSL
 
-#include "../common/ray.glsl"
-#include "knobs.glsl"
-
-/// A march's frame: object-space origin o and unit direction u, |d| (t = s / len), the range
-/// (s_lo, s_hi) inside the box, the settings, and a pixel footprint at the box entry (world
-/// units, for by-distance iterations).
-struct FieldMarch {
-  vec3 o;
-  vec3 u;
-  float len;
-  vec2 range;
-  MarchSettings m;
-  float footprint;
-};
+#include "field_march.glsl"
 
 /// True for a ray of which only whether it hits is read: it stops at its first hit, runs no closest
 /// hit, is opaque (no any-hit reads the attributes) and culls nothing (the normal decides no face):
@@ -54,21 +41,12 @@ bool field_hit_only() {
 /// Clips the ray to [box_min, box_max] (false: it misses the box) and sets up fm for knobs k at
 /// pixel_angle radians per pixel, for a field with Lipschitz bound `lipschitz`.
 bool field_march_begin(vec3 box_min, vec3 box_max, MarchKnobs k, float pixel_angle, float lipschitz, out FieldMarch fm) {
-  fm.o = gl_ObjectRayOriginEXT;
-  vec3 d = gl_ObjectRayDirectionEXT;
-  float t0 = gl_RayTminEXT;
-  float t1 = gl_RayTmaxEXT;
-  // Drivers may report AABB hits outside the box (it may be enlarged): clip to our own.
-  if (!ray_clip_aabb(fm.o, d, box_min, box_max, t0, t1)) return false;
-  fm.len = length(d);
-  if (!(fm.len > 0.0)) return false;
-  fm.u = d / fm.len;
-  fm.range = vec2(t0 * fm.len, t1 * fm.len);
-  float world_length = length(gl_WorldRayDirectionEXT);
-  float world_per_object = max(world_length / fm.len, 1.0e-20);
-  fm.m = march_settings(k, world_per_object, pixel_angle, lipschitz);
+  // Drivers may report AABB hits outside the box (it may be enlarged): the setup clips to our own.
+  if (!field_march_setup(gl_ObjectRayOriginEXT, gl_ObjectRayDirectionEXT, gl_RayTminEXT, gl_RayTmaxEXT,
+                         length(gl_WorldRayDirectionEXT), box_min, box_max, k, pixel_angle, lipschitz, fm)) {
+    return false;
+  }
   if (fm.m.hit_rule == march_hit_refined && field_hit_only()) fm.m.hit_rule = march_hit_unrefined;
-  fm.footprint = pixel_angle * max(t0, 0.0) * world_length;
   return true;
 }
 
@@ -78,12 +56,6 @@ void field_march_started(float first_distance) {
 #ifdef PROCEDURAY_OUTPUTS
   if (first_distance < 0.0) output_flags(output_flag_started_inside);
 #endif
-}
-
-/// The difference normal's offset at p, a hit at s: the knobs' normal_scale thresholds, at
-/// least 1e-5 object units.
-float field_normal_offset(MarchKnobs k, MarchSettings m, vec3 p, float s) {
-  return march_knobs_normal_offset(k, p, max(march_epsilon(m, s), 1.0e-5));
 }
 
 /// Whether the ray's cull flags drop a hit with this object-space normal. Vulkan culls triangles
