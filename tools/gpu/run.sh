@@ -53,12 +53,33 @@ if [ "$what" = all ] || [ "$what" = bench ]; then
     for i in 1 2 3 4 5; do step paper_warm_start_$i gpu/02_paper_scene --device gpu --frames 1 --out /tmp/paper.png; done
     grep -h "shader and pipeline work" "$out"/paper_*_start*.txt >> "$log"
   fi
+  if [ -x gpu/03_d3d12_scene ]; then  # the same for the D3D12 scene, specialized (default) and general
+    export XDG_CACHE_HOME=/tmp/proceduray-cache-d3d12
+    for v in specialized general; do
+      flag=$([ $v = general ] && echo --general || true)
+      rm -rf "$XDG_CACHE_HOME"
+      step "d3d12_cold_$v" gpu/03_d3d12_scene --device gpu --frames 1 $flag --out /tmp/d3d12.png
+      for i in 1 2 3; do step "d3d12_warm_${v}_$i" gpu/03_d3d12_scene --device gpu --frames 1 $flag --out /tmp/d3d12.png; done
+      grep -H "shader and pipeline work" "$out"/d3d12_*_"$v"*.txt >> "$log"
+    done
+  fi
   # Both scenes of the report's size class at 1920x1080, 200 frames, three runs each (medians).
   for s in 02_paper_scene 03_d3d12_scene; do
     [ -x "gpu/$s" ] || continue
     for i in 1 2 3; do step "${s}_1080p_$i" "gpu/$s" --device gpu --size 1920x1080 --frames 200 --out "/tmp/$s.png"; done
     grep -h "^trace" "$out/${s}"_1080p_*.txt >> "$log"
+    # The general pipeline (knobs read per ray), interleaved with the specialized default.
+    for i in 1 2; do
+      step "${s}_1080p_general_$i" "gpu/$s" --device gpu --size 1920x1080 --frames 200 --general --out "/tmp/$s.png"
+      step "${s}_1080p_special_$i" "gpu/$s" --device gpu --size 1920x1080 --frames 200 --out "/tmp/$s.png"
+    done
+    grep -H "^trace" "$out/${s}"_1080p_general_*.txt "$out/${s}"_1080p_special_*.txt >> "$log"
   done
+  # Frame time against marched instances: the library's pipeline and the compute peer.
+  if [ -x gpu/bench_instances ]; then
+    step bench_instances gpu/bench_instances --device gpu --size 1920x1080 --frames 20 --csv "$out/instances.csv"
+    cat "$out/bench_instances.txt" >> "$log"
+  fi
   # Frame time against reflection depth (examples/04_cis565_scene), with validation off.
   if [ -x gpu/04_cis565_scene ]; then
     step cis565_depth_sweep gpu/04_cis565_scene --device gpu --size 1920x1080 --frames 100 --depth-sweep --out /tmp/cis565.png
