@@ -136,6 +136,13 @@ Difference compare(const std::vector<std::uint8_t>& a, const std::uint32_t* b, s
   return d;
 }
 
+/// `text` as one CSV field: quoted, quotes doubled (a device name has commas: "llvmpipe (LLVM 15, 256 bits)").
+std::string csv_field(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -218,7 +225,7 @@ int main(int argc, char** argv) {
       std::printf("%10u %12.3f %12.3f %8.3f %9.3f%% %9.3f%% %11.1f%%\n", n, l, p, l / p, 100.0 * coverage, 100.0 * shade,
                   100.0 * of_silhouette);
       if (out != nullptr) {
-        std::fprintf(out, "%s,%u,%u,%u,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f\n", ctx.name().c_str(), width, height, n, l, p, l / p,
+        std::fprintf(out, "%s,%u,%u,%u,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f\n", csv_field(ctx.name()).c_str(), width, height, n, l, p, l / p,
                      coverage, shade, of_silhouette);
       }
       // Shades must agree where both hit; coverage may flip only on a few silhouette pixels.
