@@ -7,15 +7,18 @@
 // GPU timestamps, and their last images compared pixel by pixel.
 //
 //   bench_instances [--device cpu|gpu|auto] [--size 512x512] [--counts 1,10,100,1000,10000]
-//                   [--frames 5] [--csv instances.csv] [--validation]
+//                   [--frames 5] [--csv instances.csv] [--validation] [--flops-per-eval F --peak-gflops P]
 //   tools/bench/instances_chart.py instances.csv --out instances.png
 //
 // Prints per count: the medians of the library's and the peer's trace times, their ratio
 // (library / peer: below 1, the pipeline wins), and how the images differ: pixels hit in one only
 // (coverage; also as a share of the silhouette pixels, where float rounding of each side's
 // object-space ray decides a grazing ray), and pixels hit in both but shaded more than 2 levels
-// apart. Exit status 1 when more than 1% are shaded apart or 10% of the silhouette flips: the
-// peer would not be marching the same scene.
+// apart; then the frame's distance evaluations (the peer counts them; the library, marching the
+// same rays with the same code, makes the same), each side's evaluations per second and, given
+// the flops per evaluation and the device's peak, the share of the peak each reaches. Exit status
+// 1 when more than 1% are shaded apart or 10% of the silhouette flips: the peer would not be
+// marching the same scene.
 #include "compute.hpp"
 
 #include <proceduray/proceduray.hpp>
@@ -156,6 +159,7 @@ int main(int argc, char** argv) {
   std::vector<std::uint32_t> counts{1, 10, 100, 1000, 10000};
   std::uint32_t frames = 5;
   bool validation = false;
+  double flops_per_eval = 0.0, peak_gflops = 0.0;
   CLI::App app{"Frame time against marched instances: the library's pipeline and a compute peer"};
   app.add_option("--device", device, "cpu (lavapipe), gpu or auto")->check(CLI::IsMember({"cpu", "gpu", "auto"}));
   app.add_option("--size", size, "image WxH")->capture_default_str();
@@ -163,7 +167,15 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "timed frames per side and count (median)")->check(CLI::Range(1u, 1000u));
   app.add_option("--csv", csv, "also write the rows as CSV (instances_chart.py charts it)");
   app.add_flag("--validation", validation, "the Khronos validation layer on; a message fails the run");
+  app.add_option("--flops-per-eval", flops_per_eval, "flops one Mandelbulb evaluation costs (bench_flops counts them)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--peak-gflops", peak_gflops, "the device's FP32 peak (bench_peak): prints the share of it each side reaches")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
+  if ((flops_per_eval > 0.0) != (peak_gflops > 0.0)) {
+    std::fprintf(stderr, "bench_instances: --flops-per-eval and --peak-gflops go together (the share of the peak needs both)\n");
+    return 2;
+  }
   unsigned width = 0, height = 0;
   if (std::sscanf(size.c_str(), "%ux%u", &width, &height) != 2 || width == 0 || height == 0 || width > 8192 ||
       height > 8192) {
@@ -188,12 +200,14 @@ int main(int argc, char** argv) {
     std::FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
     if (!csv.empty() && out == nullptr) throw std::runtime_error("bench_instances: cannot write " + csv);
     if (out != nullptr) {
-      std::fprintf(out, "device,width,height,instances,library_ms,peer_ms,ratio,coverage,shade,coverage_of_silhouette\n");
+      std::fprintf(out, "device,width,height,instances,library_ms,peer_ms,ratio,coverage,shade,coverage_of_silhouette,"
+                        "evaluations,library_evals_per_s,peer_evals_per_s\n");
     }
     std::printf("device: %s; %ux%u camera rays, Mandelbulbs (%u iterations), %u frames per side (medians)\n",
                 ctx.name().c_str(), width, height, iterations, frames);
-    std::printf("%10s %12s %12s %8s %10s %10s %12s\n", "instances", "library ms", "peer ms", "ratio", "coverage",
-                "shade", "of silhouette");
+    std::printf("%10s %12s %12s %8s %10s %10s %12s %9s %9s %9s%s\n", "instances", "library ms", "peer ms", "ratio",
+                "coverage", "shade", "of silhouette", "Mevals", "lib Ge/s", "peer Ge/s",
+                peak_gflops > 0.0 ? "  lib peak peer peak" : "");
     int status = 0;
     for (const std::uint32_t n : counts) {
       const std::vector<glm::vec4> where = placements(n);
@@ -201,7 +215,8 @@ int main(int argc, char** argv) {
       library.set(constants_slot, constants);
       library.set_pixel_angle(constants.camera.pixel_angle);
       library.set_field_knobs(library.plan().fields()[0].geometry, knobs);
-      bench::ComputeKernel peer(ctx, spirv, {VkDeviceSize{width} * height * 4, where.size() * sizeof(glm::vec4)},
+      bench::ComputeKernel peer(ctx, spirv,
+                                {VkDeviceSize{width} * height * 4, where.size() * sizeof(glm::vec4), VkDeviceSize{width} * height * 4},
                                 sizeof(Push), "bench_instances");
       std::vector<glm::vec4> to_object;  // instances.comp's world-to-object transforms
       for (const glm::vec4& p : where) to_object.emplace_back(-glm::vec3(p) * (1.0f / p.w), 1.0f / p.w);
@@ -220,13 +235,23 @@ int main(int argc, char** argv) {
       const Difference d = compare(last.rgba, static_cast<const std::uint32_t*>(peer.buffer(0)), width, height);
       const double pixels = static_cast<double>(width) * height;
       const double l = median(lib_ms), p = median(peer_ms);
+      const auto* counts_px = static_cast<const std::uint32_t*>(peer.buffer(2));
+      double evals = 0.0;
+      for (std::size_t i = 0; i < std::size_t{width} * height; ++i) evals += counts_px[i];
+      // Evaluations per second of each side (the same evaluations: same rays, same marcher), and
+      // with the flops per evaluation and the device's peak, the share of the peak each reaches.
+      const double lib_rate = evals / (l * 1.0e-3), peer_rate = evals / (p * 1.0e-3);
+      const double lib_peak = peak_gflops > 0.0 ? flops_per_eval * lib_rate / (peak_gflops * 1.0e9) : 0.0;
+      const double peer_peak = peak_gflops > 0.0 ? flops_per_eval * peer_rate / (peak_gflops * 1.0e9) : 0.0;
       const double coverage = static_cast<double>(d.coverage) / pixels, shade = static_cast<double>(d.shade) / pixels;
       const double of_silhouette = static_cast<double>(d.coverage) / static_cast<double>(std::max<std::size_t>(d.silhouette, 1));
-      std::printf("%10u %12.3f %12.3f %8.3f %9.3f%% %9.3f%% %11.1f%%\n", n, l, p, l / p, 100.0 * coverage, 100.0 * shade,
-                  100.0 * of_silhouette);
+      std::printf("%10u %12.3f %12.3f %8.3f %9.3f%% %9.3f%% %11.1f%% %9.2f %9.3f %9.3f", n, l, p, l / p, 100.0 * coverage,
+                  100.0 * shade, 100.0 * of_silhouette, evals * 1.0e-6, lib_rate * 1.0e-9, peer_rate * 1.0e-9);
+      if (peak_gflops > 0.0) std::printf(" %8.1f%% %8.1f%%", 100.0 * lib_peak, 100.0 * peer_peak);
+      std::printf("\n");
       if (out != nullptr) {
-        std::fprintf(out, "%s,%u,%u,%u,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f\n", csv_field(ctx.name()).c_str(), width, height, n, l, p, l / p,
-                     coverage, shade, of_silhouette);
+        std::fprintf(out, "%s,%u,%u,%u,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.0f,%.6g,%.6g\n", csv_field(ctx.name()).c_str(), width,
+                     height, n, l, p, l / p, coverage, shade, of_silhouette, evals, lib_rate, peer_rate);
       }
       // Shades must agree where both hit; coverage may flip only on a few silhouette pixels.
       if (shade > 0.01 || of_silhouette > 0.1) {

@@ -11,6 +11,8 @@ layout(set = 0, binding = 0, scalar) writeonly buffer Pixels { uint rgba[]; } pi
 // Each instance as world-to-object: object = w * world + xyz (w = 1 / scale, xyz = -translation / scale),
 // the matrix a ray-tracing implementation applies to a ray entering the instance.
 layout(set = 0, binding = 1, scalar) readonly buffer Instances { vec4 to_object[]; } instances;
+// Distance evaluations per pixel, the normals' included: the library's by construction (same rays, same marcher).
+layout(set = 0, binding = 2, scalar) writeonly buffer Evaluations { uint count[]; } evaluations;
 
 #include "instances.glsl"
 #include "common/camera.glsl"
@@ -30,6 +32,7 @@ void main() {
   float closest = 1e30;
   vec3 normal = vec3(0.0);
   bool any = false;
+  uint evaluated = 0u;
   for (uint i = 0u; i < push.count; ++i) {
     vec4 m = instances.to_object[i];
     FieldMarch fm;
@@ -40,13 +43,16 @@ void main() {
     uint iterations = march_iterations(k, fm.footprint);
     float s;
     uint steps;
-    if (!peer_trace(fm.o, fm.u, fm.range.x, fm.range.y, fm.m, iterations, s, steps)) continue;
+    bool found = peer_trace(fm.o, fm.u, fm.range.x, fm.range.y, fm.m, iterations, s, steps);
+    evaluated += steps;
     float t = s / fm.len;
-    if (!t_in_range(t, 0.0, closest)) continue;
+    if (!found || !t_in_range(t, 0.0, closest)) continue;
+    evaluated += march_normal_evaluations(k);
     closest = t;
     vec3 p = fm.o + s * fm.u;
     normal = peer_normal(uint(k.normal), p, field_normal_offset(k, fm.m, p, s), iterations);
     any = true;
   }
+  evaluations.count[px.y * size.x + px.x] = evaluated;
   pixels.rgba[px.y * size.x + px.x] = packUnorm4x8(vec4(any ? bench_shade(normal) : vec3(0.0), 1.0));
 }
