@@ -15,7 +15,7 @@ cd "$(dirname "$0")/../.."
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(proceduray_vk_tests proceduray_examples_tests bench_frame_loop 02_paper_scene 03_d3d12_scene 04_cis565_scene
-           05_textured_scene bench_soak bench_peak bench_instances proceduray_accuracy proceduray_sweep)
+           05_textured_scene bench_soak bench_peak bench_instances bench_paper_peer bench_flops proceduray_accuracy proceduray_sweep)
 fi
 
 build=${BUILD:-build/gpu}

@@ -77,8 +77,20 @@ if [ "$what" = all ] || [ "$what" = bench ]; then
   done
   # Frame time against marched instances: the library's pipeline and the compute peer.
   if [ -x gpu/bench_instances ]; then
-    step bench_instances gpu/bench_instances --device gpu --size 1920x1080 --frames 20 --csv "$out/instances.csv"
+    # The share of the peak: the Mandelbulb's flops per evaluation (counted from its code) over bench_peak's best.
+    share=()
+    if [ -x gpu/bench_flops ] && [ -f "$out/bench_peak.txt" ]; then
+      flops=$(gpu/bench_flops --size 256x256 | awk 'tolower($1) == "mandelbulb" { print $2 }')
+      peak=$(grep -o '[0-9.]* GFLOP/s' "$out/bench_peak.txt" | sort -g | tail -n 1 | cut -d' ' -f1)
+      [ -n "$flops" ] && [ -n "$peak" ] && share=(--flops-per-eval "$flops" --peak-gflops "$peak")
+    fi
+    step bench_instances gpu/bench_instances --device gpu --size 1920x1080 --frames 20 "${share[@]}" --csv "$out/instances.csv"
     cat "$out/bench_instances.txt" >> "$log"
+  fi
+  # The paper scene: the library against the compute peer, interleaved (images compared).
+  if [ -x gpu/bench_paper_peer ]; then
+    step paper_peer gpu/bench_paper_peer --device gpu --size 1920x1080 --frames 200
+    cat "$out/paper_peer.txt" >> "$log"
   fi
   # Frame time against reflection depth (examples/04_cis565_scene), with validation off.
   if [ -x gpu/04_cis565_scene ]; then
