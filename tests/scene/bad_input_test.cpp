@@ -267,8 +267,30 @@ TEST_CASE("bad input: an unknown ray id by name") {
 
 TEST_CASE("bad input: a default-constructed GeometryId") {
   Small a;
-  CHECK_THROWS_WITH_AS(a.scene.add_hit(a.ray, a.group, GeometryId{}), Contains("geometry #(invalid id) is not registered"),
+  CHECK_THROWS_WITH_AS(a.scene.add_hit(a.ray, a.group, GeometryId{}), Contains("a default-constructed geometry id names no geometry; use the id this scene returned"),
                        UnknownIdError);
+}
+
+TEST_CASE("bad input: a default-constructed GeometryId asked of a plan") {
+  Small a;
+  const Plan plan = compile(a.scene);
+  CHECK_THROWS_WITH_AS(plan.geometry(GeometryId{}, "Renderer::set_transform"),
+                       Contains("Renderer::set_transform: a default-constructed GeometryId names no geometry; use the id "
+                                "Scene::add_geometry"),
+                       UnknownIdError);
+}
+
+TEST_CASE("bad input: a geometry mask of 0x100 (wider than Vulkan's 8 bits)") {
+  TestScene s;
+  GeometryDesc d = GeometryDesc::procedural({Aabb{}});
+  d.instances = {identity_transform()};
+  d.mask = 0x100;  // an uint8_t field would have truncated this to 0: the instance would vanish
+  CHECK_THROWS_WITH_AS(s.add_geometry("ball", d),
+                       Contains("mask is 0x100, more than Vulkan's 8 instance-mask bits; use layer bits"),
+                       InvalidGeometryError);
+  d.mask = 0xFF;
+  d.instance_masks = {0x1FF};
+  CHECK_THROWS_WITH_AS(s.add_geometry("ball", d), Contains("instance mask 0 is 0x1ff"), InvalidGeometryError);
 }
 
 // ---- entries and compile

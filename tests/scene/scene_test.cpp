@@ -104,7 +104,7 @@ TEST_CASE("scene unknown ids name the nearest known ids") {
   CHECK_THROWS_WITH_AS(s.ray_id("Radiance"), doctest::Contains("unknown ray id \"Radiance\"; nearest known ids: (none)"),
                        UnknownIdError);
   CHECK_THROWS_WITH_AS(s.geometry(GeometryId(7)), doctest::Contains("geometry #7 is not registered"), UnknownIdError);
-  CHECK_THROWS_WITH_AS(s.geometry(GeometryId()), doctest::Contains("(invalid id)"), UnknownIdError);
+  CHECK_THROWS_WITH_AS(s.geometry(GeometryId()), doctest::Contains("a default-constructed geometry id names no geometry"), UnknownIdError);
 }
 
 TEST_CASE("scene typed lookups check the registered type") {

@@ -71,8 +71,9 @@ class BlasSet {
 
  private:
   static std::vector<std::uint8_t> masks_of(const GeometryDesc& desc) {
-    if (!desc.instance_masks.empty()) return desc.instance_masks;
-    return std::vector<std::uint8_t>(desc.instances.size(), desc.mask);
+    // Geometry validation refused masks over 0xFF before a BLAS sees them.
+    if (!desc.instance_masks.empty()) return {desc.instance_masks.begin(), desc.instance_masks.end()};
+    return std::vector<std::uint8_t>(desc.instances.size(), static_cast<std::uint8_t>(desc.mask));
   }
 
   std::vector<Blas> m_blases;

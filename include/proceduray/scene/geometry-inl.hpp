@@ -140,6 +140,16 @@ PROCEDURAY_DECL void validate(const GeometryDesc& desc, std::string_view id, std
                                std::to_string(desc.instances.size()) + " instances; give one mask per instance, or "
                                "none and set `mask` for all");
   }
+  const auto check_mask = [&](std::uint32_t mask, const std::string& what) {
+    if (mask > 0xFFu) {
+      throw InvalidGeometryError(place() + " " + what + " is 0x" + detail::hex(mask) +
+                                 ", more than Vulkan's 8 instance-mask bits; use layer bits (Scene::layer_mask), 0..0xFF");
+    }
+  };
+  check_mask(desc.mask, "mask");
+  for (std::size_t i = 0; i < desc.instance_masks.size(); ++i) {
+    check_mask(desc.instance_masks[i], "instance mask " + std::to_string(i));
+  }
   if (static_cast<std::uint32_t>(desc.update) > static_cast<std::uint32_t>(UpdatePolicy::DynamicGeometry)) {
     throw InvalidGeometryError(place() + " has update policy " + std::to_string(static_cast<std::uint32_t>(desc.update)) +
                                "; use UpdatePolicy::Static, DynamicTransform or DynamicGeometry");

@@ -93,8 +93,10 @@ struct GeometryDesc {
   std::vector<InstanceTransform> instances;      ///< TLAS instances of its BLAS; empty = inherit from the BLAS
   bool opaque = true;                            ///< VK_GEOMETRY_OPAQUE_BIT; default on (any-hit skipped)
   std::string blas;                              ///< BLAS shared with other geometries; empty = its own BLAS
-  std::uint8_t mask = 0xFF;                      ///< instance mask of every instance (Layers bits); default all
-  std::vector<std::uint8_t> instance_masks;      ///< per-instance masks overriding `mask`; empty or one per instance
+  /// Instance mask of every instance (Layers bits, 0..0xFF); default all. Wider than Vulkan's 8
+  /// bits so that 0x100 is refused by name instead of truncating to 0 in the caller.
+  std::uint32_t mask = 0xFF;
+  std::vector<std::uint32_t> instance_masks;     ///< per-instance masks overriding `mask`; empty or one per instance
   UpdatePolicy update = UpdatePolicy::Static;    ///< what may change after the build; default Static
   /// Keep hit records for instances added at run time (Renderer::add_instance) even when every
   /// declared instance has entries of its own, or none is declared; they then need entries for

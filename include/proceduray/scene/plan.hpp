@@ -174,6 +174,10 @@ class Plan {
                            "scene #" + std::to_string(id.scene()) + ", but this plan (and a renderer built from it) "
                            "was compiled from scene #" + std::to_string(m_scene) + "; use an id of that scene");
     }
+    if (!id.valid()) {
+      throw UnknownIdError(std::string(operation) + ": a default-constructed GeometryId names no geometry; use the id "
+                           "Scene::add_geometry (or add_object, add_distance_field) returned");
+    }
     if (id.index() >= m_geometries.size()) {
       throw UnknownIdError(std::string(operation) + ": geometry #" + std::to_string(id.index()) + " is not in the "
                            "compiled scene (it has " + std::to_string(m_geometries.size()) + " geometries); "

@@ -45,9 +45,13 @@ PROCEDURAY_DECL std::uint32_t IdIndex::index_of(std::string_view id, std::string
 }
 
 PROCEDURAY_DECL void IdIndex::check_index(std::uint32_t index, std::string_view operation) const {
+  if (index == empty_slot) {
+    throw UnknownIdError(std::string(operation) + ": a default-constructed " + m_kind + " id names no " + m_kind +
+                         "; use the id this scene returned when it was added");
+  }
   if (index >= m_names.size()) {
     throw UnknownIdError(std::string(operation) + ": " + m_kind + " #" +
-                         (index == empty_slot ? std::string("(invalid id)") : std::to_string(index)) +
+                         std::to_string(index) +
                          " is not registered (" + std::to_string(m_names.size()) + " " + m_kind +
                          " entities); use an id returned by this scene");
   }
