@@ -223,3 +223,29 @@ TEST_CASE("calibration - the shipped table loads and covers every marched primit
     CHECK_NOTHROW(t.cheapest(g, ErrorBudget{}));  // every default bound, wrong-surface included
   }
 }
+
+TEST_CASE("bad input: a NaN or negative budget bound is invalid, not unmeetable") {
+  const Calibration t = table();
+  ErrorBudget nan_median;
+  nan_median.depth_median = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH_AS(t.cheapest("cog", nan_median),
+                       doctest::Contains("Calibration::cheapest: the error budget's depth_median is nan; a bound is a "
+                                         "number from 0 to infinity"),
+                       UsageError);
+  ErrorBudget negative;
+  negative.silhouette_false_hits = -0.01;
+  CHECK_THROWS_WITH_AS(t.cheapest("cog", negative),
+                       doctest::Contains("silhouette_false_hits is -0.01; a bound is a number from 0 to 1 (a fraction)"),
+                       UsageError);
+  ErrorBudget degrees;
+  degrees.normal_p95 = 360.0;
+  CHECK_THROWS_WITH_AS(t.cheapest("cog", degrees), doctest::Contains("normal_p95 is 360; a bound is a number from 0 to 180"),
+                       UsageError);
+  CHECK_NOTHROW(t.cheapest("cog", ErrorBudget::relaxed()));  // infinite depth bounds are open, not invalid
+}
+
+TEST_CASE("bad input: an empty calibration table says it is empty") {
+  const Calibration empty("test device", "64x64", {});
+  CHECK_THROWS_WITH_AS(empty.cheapest("cog", {}),
+                       doctest::Contains("no rows for 'cog': the table is empty; calibrate it"), UsageError);
+}

@@ -255,3 +255,10 @@ TEST_CASE("distance field: a budget does not carry across sizes; at 1080p a 4-it
   CHECK(plan.fields()[0].pick->knobs.iterations == 6);
   CHECK(plan.fields()[0].caps.defaults.iterations == 6);
 }
+
+TEST_CASE("bad input: Scene::set_error_budget with a negative bound") {
+  Rays r;
+  CHECK_THROWS_WITH_AS(r.scene.set_error_budget({.false_misses = -1.0}, Calibration("d", "320x240", {}), 320, 240),
+                       doctest::Contains("Scene::set_error_budget: the error budget's false_misses is -1"), UsageError);
+  CHECK_FALSE(r.scene.error_budget().has_value());  // refused, not stored
+}

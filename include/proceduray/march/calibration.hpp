@@ -61,6 +61,30 @@ struct ErrorBudget {
   }
 };
 
+/// Throws UsageError, naming `op`, the bound and its value, for a budget bound that is NaN or
+/// negative, a fraction over 1 or a normal bound over 180 degrees: such a budget is invalid, not
+/// unmeetable. Depth bounds may be infinite (open).
+inline void validate(const ErrorBudget& b, std::string_view op) {
+  const struct {
+    const char* name;
+    double value;
+    double most;
+  } bounds[] = {{"depth_median", b.depth_median, std::numeric_limits<double>::infinity()},
+                {"depth_p99", b.depth_p99, std::numeric_limits<double>::infinity()},
+                {"silhouette_false_hits", b.silhouette_false_hits, 1.0},
+                {"false_misses", b.false_misses, 1.0},
+                {"wrong_surface", b.wrong_surface, 1.0},
+                {"normal_p95", b.normal_p95, 180.0}};
+  for (const auto& bound : bounds) {
+    if (bound.value >= 0.0 && bound.value <= bound.most) continue;
+    std::ostringstream m;
+    m << op << ": the error budget's " << bound.name << " is " << bound.value << "; a bound is a number from 0 to "
+      << (bound.most == 1.0 ? "1 (a fraction)" : bound.most == 180.0 ? "180 (degrees)" : "infinity (footprints)")
+      << ": give one in range, or ErrorBudget::relaxed() for no bound";
+    throw UsageError(m.str());
+  }
+}
+
 /// One measured setting of one geometry.
 struct CalibrationRow {
   std::string geometry;  ///< the object's name in its scene ("cog", "mandelbulb")
@@ -235,6 +259,7 @@ class Calibration {
   /// for a geometry the table lacks (listing those it has) or a budget no row meets (naming the
   /// best reachable: the row least over it, and its errors).
   const CalibrationRow& cheapest(std::string_view geometry, const ErrorBudget& budget) const {
+    validate(budget, "Calibration::cheapest");
     const CalibrationRow* best = nullptr;
     const CalibrationRow* closest = nullptr;
     for (const CalibrationRow& r : m_rows) {
@@ -246,6 +271,10 @@ class Calibration {
     if (closest == nullptr) {
       std::string names;
       for (const std::string& g : geometries()) names += (names.empty() ? "" : ", ") + g;
+      if (names.empty()) {
+        throw UsageError("Calibration::cheapest: no rows for '" + std::string(geometry) +
+                         "': the table is empty; calibrate it (proceduray_sweep --calibration, or vk::calibrate)");
+      }
       throw UsageError("Calibration::cheapest: no rows for '" + std::string(geometry) + "'; the table has: " + names);
     }
     std::ostringstream m;

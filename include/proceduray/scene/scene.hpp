@@ -172,6 +172,7 @@ class SceneCore : public Entities {
   /// errors in footprints grow with the resolution (compile() refuses another size). The pick
   /// is the field's starting knobs and Plan::fields()'s report.
   void set_error_budget(ErrorBudget budget, Calibration table, std::uint32_t width, std::uint32_t height) {
+    validate(budget, "Scene::set_error_budget");
     m_budget = FieldBudget{budget, std::move(table), width, height};
   }
   /// The error budget of the fields, if one was set.
