@@ -30,6 +30,10 @@ PROCEDURAY_CONST uint march_threshold_footprint = 0u;
 PROCEDURAY_CONST uint march_threshold_absolute = 1u;
 PROCEDURAY_CONST uint march_iterations_fixed = 0u;
 PROCEDURAY_CONST uint march_iterations_by_distance = 1u;
+/// What march_settings clamps to, whatever memory holds (knobs written without validate()): the
+/// host's march_max_steps_limit and march_min_step_scale (march/knobs.hpp), so no value hangs a frame.
+PROCEDURAY_CONST uint march_steps_cap = 65536u;
+PROCEDURAY_CONST float march_step_scale_floor = 1.0 / 1024.0;
 
 /// The MarchSettings of knobs k for a ray whose object space has world_per_object world units per unit.
 PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, pr_real world_per_object, pr_real pixel_angle, pr_real lipschitz) {
@@ -40,11 +44,15 @@ PROCEDURAY_INLINE MarchSettings march_settings(MarchKnobs k, pr_real world_per_o
 #endif
   pr_real scale = world_per_object > PR(0.0) ? world_per_object : PR(1.0);
   bool absolute = uint(k.threshold_mode) == march_threshold_absolute;
-  m.max_steps = k.max_steps;
+  // Clamped, not trusted: 0xFFFFFFFF steps of 1e-30 would never end the dispatch; 0 would hide
+  // the object (validate() refuses both on the host; memory written past it lands here).
+  m.max_steps = min(max(k.max_steps, 1u), march_steps_cap);
   m.epsilon = pr_real(absolute ? k.threshold : k.epsilon) / scale;
   m.footprint = absolute ? PR(0.0) : pr_real(k.threshold) * pixel_angle;
   bool bounded = uint(k.method) == march_method_lipschitz || uint(k.method) == march_method_relaxed;
-  m.step_scale = pr_real(k.step_scale) / (bounded && lipschitz > PR(0.0) ? lipschitz : PR(1.0));
+  pr_real step_scale = pr_real(k.step_scale) >= pr_real(march_step_scale_floor) ? min(pr_real(k.step_scale), PR(1.0))
+                                                                                 : pr_real(march_step_scale_floor);  // NaN too
+  m.step_scale = step_scale / (bounded && lipschitz > PR(0.0) ? lipschitz : PR(1.0));
   m.over_relaxation = uint(k.method) == march_method_relaxed ? pr_real(k.relaxation) : PR(1.0);
   m.fixed_steps = uint(k.method) == march_method_fixed ? max(k.fixed_steps, 1u) : 0u;
   m.hit_rule = k.refine == 2u ? march_hit_classic : (k.refine != 0u ? march_hit_refined : march_hit_unrefined);

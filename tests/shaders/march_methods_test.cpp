@@ -32,6 +32,7 @@ namespace blob {
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace march_methods_test;
@@ -97,6 +98,27 @@ TEST_CASE("march methods - knobs map to the settings the marches read") {
   CHECK(march_normal_evaluations(k) == 6u);
   k.normal = proceduray::MarchNormal::tetrahedral;
   CHECK(march_normal_evaluations(k) == 4u);
+}
+
+TEST_CASE("bad input: knobs written into memory without validate() are clamped, so no march hangs or hides") {
+  CHECK(march_steps_cap == proceduray::march_max_steps_limit);  // the shader's caps are the host's limits
+  CHECK(march_step_scale_floor == proceduray::march_min_step_scale);
+  MarchKnobs k = knobs("lipschitz");
+  k.max_steps = 0xFFFFFFFFu;  // with 1e-30 steps this loop would run for hours on the device
+  k.step_scale = 1.0e-30f;
+  MarchSettings m = march_settings(k, 1.0f, 1e-3f, 1.0f);
+  CHECK(m.max_steps == proceduray::march_max_steps_limit);
+  CHECK(m.step_scale == doctest::Approx(proceduray::march_min_step_scale));
+  const Marched far = trace(k, vec3(0.0f, 0.0f, -5.0f), vec3(0.0f, 1.0f, 0.0f), 1.0e30f);  // a miss: every step spent
+  CHECK_FALSE(far.hit);
+  CHECK(far.steps <= proceduray::march_max_steps_limit);
+  k.step_scale = std::numeric_limits<float>::quiet_NaN();
+  CHECK(march_settings(k, 1.0f, 1e-3f, 1.0f).step_scale == doctest::Approx(proceduray::march_min_step_scale));
+  k.step_scale = 8.0f;  // longer than the bound allows: would step through the surface
+  CHECK(march_settings(k, 1.0f, 1e-3f, 1.0f).step_scale == 1.0f);
+  k = knobs("lipschitz");
+  k.max_steps = 0;  // would make the sphere vanish without a word; one step at least is taken
+  CHECK(march_settings(k, 1.0f, 1e-3f, 1.0f).max_steps == 1u);
 }
 
 TEST_CASE("march methods - fractal iterations by distance drop one per doubling of the footprint") {
