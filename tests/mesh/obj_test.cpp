@@ -185,14 +185,38 @@ TEST_CASE("mesh: bad OBJ content is refused with the face and the fix") {
   CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n", "n.obj"),
                        doctest::Contains("face 1 uses normal 2 but the file has 1 (`vn` lines)"),
                        proceduray::InvalidGeometryError);
-  // Relative indices reaching before the first position.
+  // Relative indices reaching before the first position: named as written (-3), not as resolved.
   CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\nv 1 0 0\nf -1 -2 -3\n", "rel.obj"),
-                       doctest::Contains("face 1 uses position 0 but the file has 2"), proceduray::InvalidGeometryError);
+                       "load_obj: 'rel.obj' line 3: face corner '-3' uses position (`v`) index -3, reaching back past "
+                       "the 2 defined before it; fix the face's index",
+                       proceduray::InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 0 1 2\n", "zero.obj"),
+                       doctest::Contains("uses position (`v`) index 0, but OBJ indices start at 1"),
+                       proceduray::InvalidGeometryError);
   CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\n# no faces\n", "empty.obj"),
                        "load_obj: 'empty.obj' has no faces (`f` lines); a mesh needs at least one triangle",
                        proceduray::InvalidGeometryError);
-  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 1e39 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "nan.obj"),
-                       doctest::Contains("has a position that is not finite"), proceduray::InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 1e39 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "big.obj"),
+                       doctest::Contains("line 1: position coordinate '1e39' is not a finite float"),
+                       proceduray::InvalidGeometryError);
   // Every error is a proceduray::Error, so one catch reaches them.
   CHECK_THROWS_AS(proceduray::parse_obj("f 1 2 3\n"), proceduray::Error);
+}
+
+TEST_CASE("bad input: an OBJ position of nan or inf (tinyobjloader reads it as 0)") {
+  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v nan 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "nan.obj"),
+                       "load_obj: 'nan.obj' line 1: position coordinate 'nan' is not a finite float; fix its `v` line",
+                       proceduray::InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\nv 1 -inf 0\nv 1 1 0\nf 1 2 3\n", "inf.obj"),
+                       doctest::Contains("line 2: position coordinate '-inf'"), proceduray::InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\nv 1 0x 0\nv 1 1 0\nf 1 2 3\n", "word.obj"),
+                       doctest::Contains("line 2: position coordinate '0x'"), proceduray::InvalidGeometryError);
+  // A weight after the three coordinates and a comment line are not positions.
+  CHECK_NOTHROW(proceduray::parse_obj("# nan\nv 0 0 0 1\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "ok.obj"));
+}
+
+TEST_CASE("bad input: an OBJ relative index reaching before the file, named as written") {
+  CHECK_THROWS_WITH_AS(proceduray::parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 1\nf -3//-1 -2//-1 -1//-2\n", "n.obj"),
+                       doctest::Contains("face corner '-1//-2' uses normal (`vn`) index -2, reaching back past the 1"),
+                       proceduray::InvalidGeometryError);
 }

@@ -12,9 +12,12 @@
 #include <tiny_obj_loader.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <tuple>
 
@@ -126,8 +129,54 @@ PROCEDURAY_DECL ObjMesh obj_mesh(const tinyobj::attrib_t& attrib, const std::vec
   return mesh;
 }
 
+/// What tinyobjloader does not say by itself, checked line by line before it parses: a `v`
+/// coordinate that is not a finite number (it reads `nan` as 0) and a face index that is 0 or
+/// reaches back (negative) past the start of the file (it reports the resolved value, not the
+/// one written). Throws InvalidGeometryError naming the line and the value as written.
+PROCEDURAY_DECL void check_obj_lines(const std::string& text, std::string_view name) {
+  long long counts[3] = {0, 0, 0};  // v, vt, vn lines so far
+  std::istringstream lines(text);
+  std::string line;
+  for (std::size_t number = 1; std::getline(lines, line); ++number) {
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    const auto fail = [&](const std::string& what) {
+      return InvalidGeometryError("load_obj: '" + std::string(name) + "' line " + std::to_string(number) + ": " + what);
+    };
+    if (key == "v" || key == "vt" || key == "vn") {
+      ++counts[key == "v" ? 0 : key == "vt" ? 1 : 2];
+      if (key != "v") continue;
+      std::string word;
+      for (int c = 0; c < 3 && words >> word; ++c) {
+        char* end = nullptr;
+        const double x = std::strtod(word.c_str(), &end);
+        if (end == word.c_str() || *end != '\0' || !(std::abs(x) <= std::numeric_limits<float>::max())) {
+          throw fail("position coordinate '" + word + "' is not a finite float; fix its `v` line");
+        }
+      }
+    } else if (key == "f") {
+      static constexpr const char* kinds[3] = {"position (`v`)", "texture coordinate (`vt`)", "normal (`vn`)"};
+      for (std::string corner; words >> corner;) {
+        std::istringstream parts(corner);
+        std::string part;
+        for (int k = 0; k < 3 && std::getline(parts, part, '/'); ++k) {
+          if (part.empty()) continue;
+          const long long index = std::atoll(part.c_str());
+          if (index == 0 || (index < 0 && -index > counts[k])) {
+            throw fail("face corner '" + corner + "' uses " + kinds[k] + " index " + part + (index == 0 ?
+                       ", but OBJ indices start at 1" : ", reaching back past the " + std::to_string(counts[k]) +
+                       " defined before it") + "; fix the face's index");
+          }
+        }
+      }
+    }
+  }
+}
+
 /// Parses `text` with tinyobjloader; throws InvalidGeometryError with its message.
 PROCEDURAY_DECL ObjMesh parse_obj_text(const std::string& text, std::string_view name) {
+  check_obj_lines(text, name);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
