@@ -159,11 +159,32 @@ TEST_CASE("renderer bad input: frames in flight 0 or over the limit, stale, unre
   CHECK_THROWS_WITH_AS(renderer.rgba(dark), doctest::Contains("frame 2 was submitted with Readback::none; submit it "
                                                               "with Readback::rgba"),
                        UsageError);
-  CHECK_THROWS_WITH_AS(renderer.rgba(vk::FrameTicket{9}), doctest::Contains("frame 9 was never submitted (3 so far)"),
+  CHECK_THROWS_WITH_AS(renderer.rgba(vk::FrameTicket{9, renderer.serial()}), doctest::Contains("frame 9 was never submitted (3 so far)"),
                        UsageError);
   std::vector<std::uint8_t> small(100);
-  CHECK_THROWS_WITH_AS(renderer.read_rgba(vk::FrameTicket{3}, small),
+  CHECK_THROWS_WITH_AS(renderer.read_rgba(vk::FrameTicket{3, renderer.serial()}, small),
                        doctest::Contains("the span holds 100 bytes but frame 3 (96x64) needs 24576 (width * height * 4)"),
                        UsageError);
   CHECK(renderer.wait(dark).trace_ms > 0.0);  // a frame without readback is still waited for and timed
+}
+
+TEST_CASE("bad input: renderer B given renderer A's ticket, or a ticket no submit() returned") {
+  TestContext t;
+  RendererScene s;
+  vk::Renderer a(t.ctx, s.table(t.ctx), RendererScene::options());
+  vk::Renderer b(t.ctx, s.table(t.ctx), RendererScene::options());
+  renderer_scene::prepare(a, width, height);
+  renderer_scene::prepare(b, width, height);
+  const vk::FrameTicket from_a = a.submit(width, height);
+  b.submit(width, height);  // b has a frame 1 too: it must not hand back its own
+  CHECK(from_a.renderer == a.serial());
+  CHECK(a.serial() != b.serial());
+  const std::string words = "Renderer::rgba: ticket of frame 1 was issued by renderer #" + std::to_string(a.serial()) +
+                            ", not by this one (#" + std::to_string(b.serial()) + "); pass it to the renderer that submitted it";
+  CHECK_THROWS_WITH_AS(b.rgba(from_a), words.c_str(), UsageError);
+  CHECK_THROWS_WITH_AS(b.wait(from_a), doctest::Contains("Renderer::wait: ticket of frame 1 was issued by renderer"),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(a.wait(vk::FrameTicket{1}), doctest::Contains("was not returned by submit() (it names no renderer)"),
+                       UsageError);
+  CHECK(a.wait(from_a).width == width);  // its own renderer still reads it
 }

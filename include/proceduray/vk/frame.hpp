@@ -20,9 +20,12 @@ enum class Readback {
   all,   ///< the image and every per-pixel output the scene asked for
 };
 
-/// A submitted frame: its number, 1, 2, ...; what Renderer::wait, rgba and output take.
+/// A submitted frame: its number, 1, 2, ..., and the renderer that submitted it (Renderer::
+/// serial()); what Renderer::wait, rgba and output take. Another renderer refuses it by name
+/// rather than reading its own frame of that number.
 struct FrameTicket {
   std::uint64_t number = 0;
+  std::uint64_t renderer = 0;  ///< 0: not returned by a submit()
   friend bool operator==(const FrameTicket&, const FrameTicket&) = default;
 };
 

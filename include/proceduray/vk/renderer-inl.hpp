@@ -133,7 +133,7 @@ PROCEDURAY_DECL FrameTicket Renderer::submit_as(std::uint32_t width, std::uint32
   info.readback = readback;
   info.timed = false;
   info.submitted = Clock::now();
-  return {m_ring->submit(slot)};
+  return {m_ring->submit(slot), m_serial};
 }
 
 PROCEDURAY_DECL Renderer::~Renderer() = default;
@@ -168,6 +168,7 @@ PROCEDURAY_DECL double Renderer::warm_up() {
 namespace proceduray::vk {
 
 PROCEDURAY_DECL std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(FrameTicket frame, std::string_view op) {
+  check_ticket(frame, op);
   FrameSlot& slot = m_ring->slot_of(frame.number, op);
   m_ring->wait(slot);
   SlotFrame& info = m_slot_frames[slot.index];
@@ -176,6 +177,17 @@ PROCEDURAY_DECL std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(F
     info.timed = true;
   }
   return {&slot, &info};
+}
+
+PROCEDURAY_DECL void Renderer::check_ticket(FrameTicket frame, std::string_view op) const {
+  if (frame.renderer == m_serial) return;
+  if (frame.renderer == 0) {
+    throw UsageError(std::string(op) + ": ticket of frame " + std::to_string(frame.number) + " was not returned by "
+                     "submit() (it names no renderer); pass the ticket this renderer's submit() returned");
+  }
+  throw UsageError(std::string(op) + ": ticket of frame " + std::to_string(frame.number) + " was issued by renderer #" +
+                   std::to_string(frame.renderer) + ", not by this one (#" + std::to_string(m_serial) +
+                   "); pass it to the renderer that submitted it");
 }
 
 PROCEDURAY_DECL Frame Renderer::wait(FrameTicket frame) { return finished(frame, "Renderer::wait").second->frame; }
@@ -193,7 +205,7 @@ PROCEDURAY_DECL std::span<const std::uint8_t> Renderer::rgba(FrameTicket frame) 
 PROCEDURAY_DECL void Renderer::read_rgba(FrameTicket frame, std::span<std::uint8_t> out) {
   const std::span<const std::uint8_t> pixels = rgba(frame);
   if (out.size() < pixels.size()) {
-    const Frame& f = m_slot_frames[m_ring->slot_of(frame.number, "Renderer::read_rgba").index].frame;
+    const Frame& f = finished(frame, "Renderer::read_rgba").second->frame;
     throw UsageError("Renderer::read_rgba: the span holds " + std::to_string(out.size()) + " bytes but frame " +
                      std::to_string(frame.number) + " (" + std::to_string(f.width) + "x" + std::to_string(f.height) +
                      ") needs " + std::to_string(pixels.size()) + " (width * height * 4); give a span of at least that");

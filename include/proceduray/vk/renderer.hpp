@@ -49,6 +49,7 @@
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/trace.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <cstring>
 #include <memory>
@@ -187,6 +188,8 @@ class Renderer {
   /// Records and submits one width x height frame, with the copies `readback` asks for, and
   /// returns at once: it waits only for the frame that used the slot frames_in_flight frames ago.
   FrameTicket submit(std::uint32_t width, std::uint32_t height, Readback readback = Readback::rgba);
+  /// The number this renderer's tickets carry (FrameTicket::renderer), unique in the process.
+  std::uint64_t serial() const { return m_serial; }
   /// Waits for the frame; its times and structure work (its rgba and outputs vectors stay empty).
   /// Throws UsageError for a frame whose slot a later frame reused.
   Frame wait(FrameTicket frame);
@@ -262,9 +265,18 @@ class Renderer {
   void build_pipeline(PipelineTimings* timings);
   /// The slot of `frame`, waited for and timed.
   std::pair<FrameSlot*, SlotFrame*> finished(FrameTicket frame, std::string_view op);
+  /// Throws UsageError, naming `op`, for a ticket another renderer (or no submit()) issued.
+  void check_ticket(FrameTicket frame, std::string_view op) const;
   /// Mapped bytes of output `which` in a slot (Readback::all), after its rgba.
   std::span<const std::uint8_t> output_bytes(FrameTicket frame, Output which, std::string_view op);
 
+  /// A number no other renderer of this process has: what its tickets carry.
+  static std::uint64_t next_serial() {
+    static std::atomic<std::uint64_t> last{0};
+    return ++last;
+  }
+
+  std::uint64_t m_serial = next_serial();
   const Context* m_ctx;
   RendererOptions m_options;
   proceduray::Plan m_plan;
