@@ -7,6 +7,7 @@
 #include "test_context.hpp"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -213,4 +214,20 @@ TEST_CASE("texture: bad textures and slots are refused with the fix, and a missi
   r.renderer->set_texture(grounds, palette(), {}, 1);
   r.renderer->set_texture(sky, sky_cube());
   CHECK_NOTHROW(r.renderer->render(width, height));
+}
+
+TEST_CASE("bad input: a float texture with a NaN texel (it would sample white)") {
+  Textured r({.repeat = 1.0f, .layer = 0}, false);
+  std::vector<float> texels(4 * 4 * 4, 0.5f);
+  texels[4 * (2 * 4 + 3) + 1] = std::numeric_limits<float>::quiet_NaN();  // texel (3, 2), green
+  CHECK_THROWS_WITH_AS(r.renderer->set_texture(grounds, TextureData::from_pixels(4, 4, 4, texels)),
+                       doctest::Contains("Renderer::set_texture: a 4x4 texture has texel (3, 2), channel G, = nan; float "
+                                         "texels must be finite"),
+                       UsageError);
+  texels[4 * (2 * 4 + 3) + 1] = 0.5f;
+  texels[0] = std::numeric_limits<float>::infinity();
+  CHECK_THROWS_WITH_AS(r.renderer->set_texture(grounds, TextureData::from_pixels(4, 4, 4, texels)),
+                       doctest::Contains("texel (0, 0), channel R, = inf"), UsageError);
+  texels[0] = 0.5f;
+  CHECK_NOTHROW(r.renderer->set_texture(grounds, TextureData::from_pixels(4, 4, 4, texels)));
 }

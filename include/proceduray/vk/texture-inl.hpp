@@ -25,6 +25,21 @@ PROCEDURAY_DECL VkFormat checked_texture_format(const Context& ctx, const Textur
     throw UsageError(what + " with " + std::to_string(data.faces) + " faces and " + std::to_string(data.pixels.size()) +
                      " bytes of pixels is malformed; make it with load_texture, TextureData::from_pixels or make_cube");
   }
+  if (data.format == TexelFormat::rgba32f) {  // filtering and mips spread one NaN texel over its neighbours
+    const std::size_t values = data.pixels.size() / sizeof(float);
+    for (std::size_t i = 0; i < values; ++i) {
+      float v;
+      std::memcpy(&v, data.pixels.data() + i * sizeof(float), sizeof v);
+      if (std::isfinite(v)) continue;
+      const std::size_t texel = i / 4, per_face = std::size_t{data.width} * data.height;
+      std::ostringstream m;
+      m << what << " has texel (" << texel % per_face % data.width << ", " << texel % per_face / data.width << ")";
+      if (data.cube()) m << " of face " << texel / per_face;
+      m << ", channel " << "RGBA"[i % 4] << ", = " << v << "; float texels must be finite: replace NaN and "
+        << "infinities (clamp them) before the upload";
+      throw UsageError(m.str());
+    }
+  }
   const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
   const std::uint32_t limit = data.cube() ? limits.maxImageDimensionCube : limits.maxImageDimension2D;
   if (data.width > limit || data.height > limit) {

@@ -18,7 +18,10 @@
 #include <proceduray/vk/context.hpp>
 #include <proceduray/vk/handle.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <sstream>
 #include <string_view>
 
 namespace proceduray::vk {
