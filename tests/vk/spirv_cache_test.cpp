@@ -7,6 +7,7 @@
 
 #include <proceduray/vk/spirv_cache.hpp>
 
+#include <cstring>
 #include <fstream>
 
 using namespace proceduray;
@@ -96,6 +97,36 @@ TEST_CASE("spirv cache bad input: a corrupt or foreign entry is ignored with a w
   CHECK(flipped.compile(source(dir)) == good);
   REQUIRE(flipped.warnings().size() == 1);
   CHECK(flipped.warnings()[0].find("its checksum does not match") != std::string::npos);
+}
+
+TEST_CASE("bad input: a SPIR-V cache entry with a valid key and checksum but bad SPIR-V") {
+  const std::filesystem::path dir = shader_folder("spirv_cache_bad_spirv");
+  const std::vector<std::uint32_t> good = vk::SpirvCache(dir / "cache").compile(source(dir));
+  const std::filesystem::path entry = vk::SpirvCache(dir / "cache").entry(source(dir));
+  std::string bytes;
+  {
+    std::ifstream in(entry, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // The SPIR-V's id bound set to 1 (every id past it is then out of range), the checksum made right.
+  const std::string spirv_magic("\x03\x02\x23\x07", 4);
+  const std::size_t start = bytes.find(spirv_magic);
+  REQUIRE(start != std::string::npos);
+  const std::uint32_t bound = 1;
+  std::memcpy(bytes.data() + start + 12, &bound, 4);
+  const std::size_t sum_at = 8 + 8;  // magic, key, then the checksum of the rest
+  const std::uint64_t sum = vk::fnv1a(std::string_view(bytes.data() + sum_at + 8, bytes.size() - sum_at - 8));
+  std::memcpy(bytes.data() + sum_at, &sum, 8);
+  write(entry, bytes);
+  vk::SpirvCache cache(dir / "cache");
+  CHECK(cache.compile(source(dir)) == good);  // compiled again, never handed to a driver
+  CHECK(cache.misses() == 1);
+  REQUIRE(cache.warnings().size() == 1);
+  CHECK(cache.warnings()[0].find("SPIR-V cache entry '" + entry.string() + "' ignored (its SPIR-V does not parse") !=
+        std::string::npos);
+  vk::SpirvCache after(dir / "cache");  // rewritten: served again
+  CHECK(after.compile(source(dir)) == good);
+  CHECK(after.hits() == 1);
 }
 
 TEST_CASE("spirv cache bad input: a folder that cannot be written warns once and compiles uncached") {
