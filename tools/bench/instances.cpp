@@ -19,6 +19,7 @@
 // the flops per evaluation and the device's peak, the share of the peak each reaches. Exit status
 // 1 when more than 1% are shaded apart or 10% of the silhouette flips: the peer would not be
 // marching the same scene.
+#include "bench_cli.hpp"
 #include "compute.hpp"
 
 #include <proceduray/proceduray.hpp>
@@ -35,9 +36,6 @@
 #include <string>
 #include <vector>
 
-#ifndef PROCEDURAY_BENCH_SHADER_DIR
-#define PROCEDURAY_BENCH_SHADER_DIR "tools/bench/shaders"
-#endif
 
 namespace pr = proceduray;
 
@@ -100,13 +98,6 @@ Scene scene(const std::vector<glm::vec4>& where) {
   return s;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("bench_instances: cannot read " + path.string() + "; set PROCEDURAY_BENCH_SHADER_DIR");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// How two images of the scene differ: pixels hit in one only (at a silhouette, where float
 /// rounding of the object-space ray decides), pixels hit in both whose shade differs by more than
@@ -146,10 +137,6 @@ std::string csv_field(const std::string& text) {
   return out + "\"";
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace instances
 
@@ -177,25 +164,18 @@ int main(int argc, char** argv) {
     return 2;
   }
   unsigned width = 0, height = 0;
-  if (std::sscanf(size.c_str(), "%ux%u", &width, &height) != 2 || width == 0 || height == 0 || width > 8192 ||
-      height > 8192) {
-    std::fprintf(stderr, "bench_instances: --size '%s' is not WxH with sides 1..8192, e.g. 512x512\n", size.c_str());
-    return 2;
-  }
+  if (!bench::parse_size(size, "bench_instances", "512x512", width, height)) return 2;
   try {
-    pr::vk::Context ctx({.device = device == "cpu"   ? pr::vk::DevicePreference::cpu
-                                   : device == "gpu" ? pr::vk::DevicePreference::gpu
-                                                     : pr::vk::DevicePreference::automatic,
-                         .validation = validation});
+    pr::vk::Context ctx({.device = bench::device_preference(device), .validation = validation});
     if (ctx.timestamp_period_ns() <= 0.0) throw std::runtime_error("bench_instances: the queue writes no timestamps");
-    const char* env = std::getenv("PROCEDURAY_BENCH_SHADER_DIR");
-    const std::filesystem::path dir = env != nullptr && *env != '\0' ? env : PROCEDURAY_BENCH_SHADER_DIR;
+    const std::filesystem::path dir = bench::shader_dir();
     const Constants constants{pr::look_at({0.0f, 0.0f, 3.2f}, {0.0f, 0.0f, 0.0f}, 50.0f, width, height)};
     const pr::MarchKnobs knobs = pr::fractal_capabilities(iterations).defaults;
     const std::string preamble = pr::glsl_declarations(std::vector<const pr::TypeOps*>{&pr::type_ops<Push>}, false) +
                                  pr::glsl_push_constant(pr::type_ops<Push>, "push");
     const std::vector<std::uint32_t> spirv = pr::vk::compile_glsl(
-        {.stage = pr::ShaderStage::compute, .name = (dir / "instances.comp").string(), .code = read_text(dir / "instances.comp"),
+        {.stage = pr::ShaderStage::compute, .name = (dir / "instances.comp").string(),
+         .code = bench::read_text(dir / "instances.comp", "bench_instances"),
          .include_dirs = {dir, pr::vk::library_shader_dir()}, .preamble = preamble});
     std::FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
     if (!csv.empty() && out == nullptr) throw std::runtime_error("bench_instances: cannot write " + csv);
@@ -234,7 +214,7 @@ int main(int argc, char** argv) {
       }
       const Difference d = compare(last.rgba, static_cast<const std::uint32_t*>(peer.buffer(0)), width, height);
       const double pixels = static_cast<double>(width) * height;
-      const double l = median(lib_ms), p = median(peer_ms);
+      const double l = bench::median(lib_ms), p = bench::median(peer_ms);
       const auto* counts_px = static_cast<const std::uint32_t*>(peer.buffer(2));
       double evals = 0.0;
       for (std::size_t i = 0; i < std::size_t{width} * height; ++i) evals += counts_px[i];

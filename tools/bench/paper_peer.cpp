@@ -10,6 +10,7 @@
 // 1.1), the peer's distance evaluations per frame (every ray of every pixel) and per second, and
 // the shares of pixels more than 2 and more than 8 levels apart. Exit status 1 when more than 1%
 // are more than 8 levels apart: the peer would not be rendering the same scene.
+#include "bench_cli.hpp"
 #include "compute.hpp"
 
 #include "02_paper_scene/frame.hpp"
@@ -28,9 +29,6 @@
 #include <string>
 #include <vector>
 
-#ifndef PROCEDURAY_BENCH_SHADER_DIR
-#define PROCEDURAY_BENCH_SHADER_DIR "tools/bench/shaders"
-#endif
 
 namespace pr = proceduray;
 
@@ -45,13 +43,6 @@ struct Push {
 };
 PROCEDURAY_STRUCT(Push, scalar, julia, bulb, width, height);
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("bench_paper_peer: cannot read " + path.string() + "; set PROCEDURAY_BENCH_SHADER_DIR");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// The consts paper_peer.comp takes from the scene (the library's shaders get them from glsl_for).
 std::string scene_consts() {
@@ -78,10 +69,6 @@ std::vector<glm::vec4> object_rows() {
   return rows;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace paper_peer
 
@@ -99,19 +86,11 @@ int main(int argc, char** argv) {
   app.add_flag("--validation", validation, "the Khronos validation layer on; a message fails the run");
   CLI11_PARSE(app, argc, argv);
   unsigned width = 0, height = 0;
-  if (std::sscanf(size.c_str(), "%ux%u", &width, &height) != 2 || width == 0 || height == 0 || width > 8192 ||
-      height > 8192) {
-    std::fprintf(stderr, "bench_paper_peer: --size '%s' is not WxH with sides 1..8192, e.g. 1024x768\n", size.c_str());
-    return 2;
-  }
+  if (!bench::parse_size(size, "bench_paper_peer", "1024x768", width, height)) return 2;
   try {
-    pr::vk::Context ctx({.device = device == "cpu"   ? pr::vk::DevicePreference::cpu
-                                   : device == "gpu" ? pr::vk::DevicePreference::gpu
-                                                     : pr::vk::DevicePreference::automatic,
-                         .validation = validation});
+    pr::vk::Context ctx({.device = bench::device_preference(device), .validation = validation});
     if (ctx.timestamp_period_ns() <= 0.0) throw std::runtime_error("bench_paper_peer: the queue writes no timestamps");
-    const char* env = std::getenv("PROCEDURAY_BENCH_SHADER_DIR");
-    const std::filesystem::path dir = env != nullptr && *env != '\0' ? env : PROCEDURAY_BENCH_SHADER_DIR;
+    const std::filesystem::path dir = bench::shader_dir();
     const std::filesystem::path paper_dir = examples::examples_dir() / "02_paper_scene" / "shaders";
     const paper::Frame f = paper::default_frame(width, height, time);
 
@@ -125,7 +104,8 @@ int main(int argc, char** argv) {
                                  scene_consts();
     const std::vector<std::uint32_t> spirv = pr::vk::compile_glsl(
         {.stage = pr::ShaderStage::compute, .name = (dir / "paper_peer.comp").string(),
-         .code = read_text(dir / "paper_peer.comp"), .include_dirs = {dir, paper_dir, pr::vk::library_shader_dir()},
+         .code = bench::read_text(dir / "paper_peer.comp", "bench_paper_peer"),
+         .include_dirs = {dir, paper_dir, pr::vk::library_shader_dir()},
          .preamble = preamble});
     const VkDeviceSize pixels = VkDeviceSize{width} * height;
     std::vector<paper::MaterialRecord> materials(6);
@@ -166,7 +146,7 @@ int main(int argc, char** argv) {
       over8 += worst > 8;
       evals += counts[i];
     }
-    const double l = median(lib_ms), p = median(peer_ms), n = static_cast<double>(pixels);
+    const double l = bench::median(lib_ms), p = bench::median(peer_ms), n = static_cast<double>(pixels);
     std::printf("device: %s; paper scene %ux%u at t = %g s, %u frames per side (medians)\n", ctx.name().c_str(), width,
                 height, static_cast<double>(time), frames);
     std::printf("library %.3f ms, compute peer %.3f ms, library / peer %.3f\n", l, p, l / p);
