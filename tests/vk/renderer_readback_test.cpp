@@ -8,10 +8,12 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <string>
 #include <vector>
@@ -187,4 +189,20 @@ TEST_CASE("bad input: renderer B given renderer A's ticket, or a ticket no submi
   CHECK_THROWS_WITH_AS(a.wait(vk::FrameTicket{1}), doctest::Contains("was not returned by submit() (it names no renderer)"),
                        UsageError);
   CHECK(a.wait(from_a).width == width);  // its own renderer still reads it
+}
+
+TEST_CASE("bad input: the Context destroyed (or reset) before its Renderer, which goes on rendering") {
+  RendererScene s;
+  auto ctx = std::make_unique<vk::Context>(vk::ContextOptions{.validation = true});
+  vk::Renderer renderer(*ctx, s.table(*ctx), RendererScene::options());
+  renderer_scene::prepare(renderer, width, height);
+  CHECK(ctx->use_count() == 2);  // the caller's and the renderer's
+  const std::vector<std::uint8_t> before = renderer.render(width, height).rgba;
+  ctx.reset();  // the caller's handle goes: the device stays while the renderer holds it
+  CHECK(renderer.context().use_count() == 1);
+  const vk::FrameTicket t = renderer.submit(width, height);
+  const std::span<const std::uint8_t> after = renderer.rgba(t);
+  CHECK(std::vector<std::uint8_t>(after.begin(), after.end()) == before);  // the same frame, not a crash
+  CHECK(std::any_of(before.begin(), before.end(), [](std::uint8_t v) { return v != 0; }));
+  CHECK(renderer.context().validation_messages().empty());
 }

@@ -33,7 +33,7 @@ PROCEDURAY_DECL DeviceFunctions load_device_functions(VkDevice device, const std
 
 namespace proceduray::vk {
 
-PROCEDURAY_DECL Context::Context(const ContextOptions& options)
+PROCEDURAY_DECL ContextState::ContextState(const ContextOptions& options)
     : m_preference(detail::preference_from_environment(options.device)),  // a bad PROCEDURAY_DEVICE throws first
       m_log(options.print_validation),
       m_vulkan(options.application_name, options.validation ? &m_log : nullptr) {
@@ -50,9 +50,9 @@ PROCEDURAY_DECL Context::Context(const ContextOptions& options)
   }
 }
 
-PROCEDURAY_DECL Context::~Context() { release(); }
+PROCEDURAY_DECL ContextState::~ContextState() { release(); }
 
-PROCEDURAY_DECL void Context::release() noexcept {
+PROCEDURAY_DECL void ContextState::release() noexcept {
   if (m_device != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(m_device);
     if (m_submit_fence != VK_NULL_HANDLE) vkDestroyFence(m_device, m_submit_fence, nullptr);
@@ -62,7 +62,7 @@ PROCEDURAY_DECL void Context::release() noexcept {
   }
 }
 
-PROCEDURAY_DECL void Context::read_properties() {
+PROCEDURAY_DECL void ContextState::read_properties() {
   vkGetPhysicalDeviceProperties(m_physical, &m_properties);
   m_name = m_properties.deviceName;
   auto as = make<VkPhysicalDeviceAccelerationStructurePropertiesKHR>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR);
@@ -77,7 +77,7 @@ PROCEDURAY_DECL void Context::read_properties() {
   vkGetPhysicalDeviceMemoryProperties(m_physical, &m_memory);
 }
 
-PROCEDURAY_DECL void Context::create_device() {
+PROCEDURAY_DECL void ContextState::create_device() {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -146,7 +146,7 @@ PROCEDURAY_DECL void Context::create_device() {
   m_rt = detail::load_device_functions(m_device, m_name);
 }
 
-PROCEDURAY_DECL std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {
+PROCEDURAY_DECL std::uint32_t ContextState::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {
   for (std::uint32_t i = 0; i < m_memory.memoryTypeCount; ++i) {
     if ((type_bits & (1u << i)) != 0 && (m_memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
   }
@@ -155,7 +155,7 @@ PROCEDURAY_DECL std::uint32_t Context::memory_type(std::uint32_t type_bits, VkMe
                         std::to_string(flags) + " for type bits " + std::to_string(type_bits));
 }
 
-PROCEDURAY_DECL void Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
+PROCEDURAY_DECL void ContextState::submit(const std::function<void(VkCommandBuffer)>& record) const {
   if (m_submitting) {  // a submit from inside another's recording: its own command buffer and fence
     auto alloc = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
     alloc.commandPool = m_pool;
@@ -185,7 +185,7 @@ PROCEDURAY_DECL void Context::submit(const std::function<void(VkCommandBuffer)>&
   submit_and_wait(m_submit_cmd, m_submit_fence, record);
 }
 
-PROCEDURAY_DECL void Context::submit_and_wait(VkCommandBuffer cmd, VkFence fence,
+PROCEDURAY_DECL void ContextState::submit_and_wait(VkCommandBuffer cmd, VkFence fence,
                                               const std::function<void(VkCommandBuffer)>& record) const {
   auto begin = make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

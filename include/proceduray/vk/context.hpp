@@ -10,7 +10,9 @@
 // The device is chosen by select_device (device_selection.hpp: a GPU when one can ray trace, else
 // lavapipe; PROCEDURAY_DEVICE=cpu|gpu|auto overrides automatic); the instance and the validation
 // messenger are made by vulkan_instance.hpp.
-// A Context is neither copied nor moved: every object made from it keeps a pointer to it.
+// A Context is a shared handle: copies share one device, which lives until the last copy goes. A
+// Renderer keeps a copy, so destroying the Context first (or resetting the pointer that held it)
+// leaves the renderer working; the device goes with the last of them.
 #pragma once
 
 #include <proceduray/config.hpp>
@@ -29,6 +31,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <cstring>
@@ -63,13 +66,14 @@ struct DeviceFunctions {
   PFN_vkCmdSetRayTracingPipelineStackSizeKHR cmd_set_ray_tracing_pipeline_stack_size = nullptr;
 };
 
-/// Instance, device, queue and command pool for one ray-tracing device.
-class Context {
+/// Instance, device, queue and command pool for one ray-tracing device: what a Context shares.
+/// Neither copied nor moved: every object made from it keeps a pointer to it.
+class ContextState {
  public:
-  explicit Context(const ContextOptions& options = {});
-  Context(const Context&) = delete;
-  Context& operator=(const Context&) = delete;
-  ~Context();
+  explicit ContextState(const ContextOptions& options = {});
+  ContextState(const ContextState&) = delete;
+  ContextState& operator=(const ContextState&) = delete;
+  ~ContextState();
 
   VkInstance instance() const noexcept { return m_vulkan.get(); }
   VkPhysicalDevice physical_device() const noexcept { return m_physical; }
@@ -157,6 +161,48 @@ class Context {
   VkCommandBuffer m_submit_cmd = VK_NULL_HANDLE;
   VkFence m_submit_fence = VK_NULL_HANDLE;
   mutable bool m_submitting = false;
+};
+
+/// The library's handle on one ray-tracing device (ContextState): cheap to copy, every copy the
+/// same device. See ContextState for what each member returns.
+class Context {
+ public:
+  explicit Context(const ContextOptions& options = {}) : m_state(std::make_shared<ContextState>(options)) {}
+
+  VkInstance instance() const noexcept { return m_state->instance(); }
+  VkPhysicalDevice physical_device() const noexcept { return m_state->physical_device(); }
+  VkDevice device() const noexcept { return m_state->device(); }
+  VkQueue queue() const noexcept { return m_state->queue(); }
+  const DeviceFunctions& rt() const noexcept { return m_state->rt(); }
+  const std::string& name() const noexcept { return m_state->name(); }
+  bool is_cpu() const noexcept { return m_state->is_cpu(); }
+  const VkPhysicalDeviceProperties& properties() const noexcept { return m_state->properties(); }
+  const VkPhysicalDeviceRayTracingPipelinePropertiesKHR& ray_tracing_properties() const noexcept {
+    return m_state->ray_tracing_properties();
+  }
+  SbtProperties sbt_properties() const noexcept { return m_state->sbt_properties(); }
+  DeviceLimits limits() const { return m_state->limits(); }
+  double timestamp_period_ns() const noexcept { return m_state->timestamp_period_ns(); }
+  std::uint32_t queue_family() const noexcept { return m_state->queue_family(); }
+  VkCommandPool command_pool() const noexcept { return m_state->command_pool(); }
+  std::uint32_t scratch_alignment() const noexcept { return m_state->scratch_alignment(); }
+  bool pipeline_library() const noexcept { return m_state->pipeline_library(); }
+  std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags) const {
+    return m_state->memory_type(type_bits, flags);
+  }
+  std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags flags, VkMemoryPropertyFlags preferred) const {
+    return m_state->memory_type(type_bits, flags, preferred);
+  }
+  VkMemoryPropertyFlags memory_flags(std::uint32_t index) const noexcept { return m_state->memory_flags(index); }
+  void submit(const std::function<void(VkCommandBuffer)>& record) const { m_state->submit(record); }
+  std::uint64_t submit_count() const noexcept { return m_state->submit_count(); }
+  std::vector<std::string> validation_messages() const { return m_state->validation_messages(); }
+  bool validation_enabled() const noexcept { return m_state->validation_enabled(); }
+  /// How many Context copies share this device now (the Renderers made from it hold one each).
+  long use_count() const noexcept { return m_state.use_count(); }
+
+ private:
+  std::shared_ptr<ContextState> m_state;
 };
 
 // ---------------------------------------------------------------------------------------------

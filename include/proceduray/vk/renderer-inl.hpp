@@ -16,9 +16,11 @@
 namespace proceduray::vk {
 
 PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, RendererOptions given)
-    : m_ctx(&ctx), m_options(std::move(given)), m_plan(std::move(plan)) {
+    : m_ctx(ctx), m_options(std::move(given)), m_plan(std::move(plan)) {
+  // Everything below is made from this renderer's own copy of the context, which keeps the device
+  // alive until they are gone, whatever happens to the caller's `ctx`.
   const RendererOptions& options = m_options;
-  m_ring = std::make_unique<FrameRing>(ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
+  m_ring = std::make_unique<FrameRing>(m_ctx, options.frames_in_flight, "Renderer: RendererOptions::frames_in_flight");
   m_slot_frames.resize(m_ring->size());
   if (const auto raygen = m_plan.records(SbtRegionKind::raygen); raygen.size() > 1) {
     throw UsageError("Renderer: the scene has " + std::to_string(raygen.size()) + " raygen entries (first \"" +
@@ -28,18 +30,18 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, Re
   }
   // Every device limit is checked once, before any device object is made: the plan's (layout),
   // then the depth the stages' tracing settles, when derived.
-  m_layout = m_plan.layout(ctx.limits());
+  m_layout = m_plan.layout(m_ctx.limits());
   m_stages = compile_scene_stages(m_plan, options);
-  FieldKnobs::check_picks(m_plan, ctx.name(), options.shader_dirs.empty() ?
+  FieldKnobs::check_picks(m_plan, m_ctx.name(), options.shader_dirs.empty() ?
       std::vector<std::filesystem::path>{std::filesystem::current_path()} : options.shader_dirs, "Renderer");
-  m_plan.settle_recursion(m_stages.traces, ctx.limits(), "Renderer");
+  m_plan.settle_recursion(m_stages.traces, m_ctx.limits(), "Renderer");
   const auto start = Clock::now();
-  m_structures = std::make_unique<SceneAcceleration>(ctx, m_plan, options.blas);
+  m_structures = std::make_unique<SceneAcceleration>(m_ctx, m_plan, options.blas);
   m_timings.acceleration_ms = ms_since(start);
-  m_bindings = std::make_unique<Bindings>(ctx, m_plan.global_signature(), m_structures->tlas().structure(),
+  m_bindings = std::make_unique<Bindings>(m_ctx, m_plan.global_signature(), m_structures->tlas().structure(),
                                           static_cast<std::uint32_t>(m_plan.instances().size()));
   m_fields = std::make_unique<FieldKnobs>(m_plan, *m_bindings);
-  m_meshes = std::make_unique<MeshBuffers>(ctx, m_plan);
+  m_meshes = std::make_unique<MeshBuffers>(m_ctx, m_plan);
   PipelineTimings pipeline;
   build_pipeline(&pipeline);
   m_timings.compile_ms = pipeline.compile_ms;
@@ -49,7 +51,7 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, Re
   m_timings.spirv_compiled = pipeline.spirv_compiled;
   // Only a specialized pipeline is built again: the general one keeps no SPIR-V.
   if (!m_options.specialize_fields || m_plan.fields().empty()) m_stages = {};
-  m_outputs = std::make_unique<OutputImages>(ctx, m_plan.outputs());
+  m_outputs = std::make_unique<OutputImages>(m_ctx, m_plan.outputs());
 }
 
 PROCEDURAY_DECL void Renderer::build_pipeline(PipelineTimings* timings) {
@@ -58,14 +60,14 @@ PROCEDURAY_DECL void Renderer::build_pipeline(PipelineTimings* timings) {
   // A copy of the SPIR-V while a knob change may need it again; else the modules themselves.
   SceneStages stages = specialize ? m_stages : std::move(m_stages);
   m_sbt.reset();  // it points at the old pipeline's group handles
-  m_pipeline = make_scene_pipeline(*m_ctx, m_plan, std::move(stages), m_bindings->layouts(), m_bindings->push_size(),
+  m_pipeline = make_scene_pipeline(m_ctx, m_plan, std::move(stages), m_bindings->layouts(), m_bindings->push_size(),
                                    m_options, timings, knobs);
-  m_sbt = std::make_unique<SbtBuffer>(*m_ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
+  m_sbt = std::make_unique<SbtBuffer>(m_ctx, *m_pipeline, m_plan, m_layout, m_meshes->addresses());
   m_pipeline_knobs = m_fields->version();
 }
 
 PROCEDURAY_DECL void Renderer::prepare(std::uint32_t width, std::uint32_t height, std::string_view op) {
-  check_trace_size(*m_ctx, width, height);
+  check_trace_size(m_ctx, width, height);
   if (m_fields->dirty()) m_ring->wait_all();  // the settings buffer is written in place
   if (m_options.specialize_fields && m_fields->version() != m_pipeline_knobs) {
     const auto start = Clock::now();  // after the wait above: no frame in flight uses the old ones
@@ -79,7 +81,7 @@ PROCEDURAY_DECL void Renderer::prepare(std::uint32_t width, std::uint32_t height
   // New images, bound in the descriptor sets: no frame in flight may still use the old ones.
   m_ring->wait_all();
   m_outputs->resize(width, height, *m_bindings);
-  m_image = std::make_unique<StorageImage>(*m_ctx, width, height, VK_FORMAT_R8G8B8A8_UNORM, StorageImage::recorded);
+  m_image = std::make_unique<StorageImage>(m_ctx, width, height, VK_FORMAT_R8G8B8A8_UNORM, StorageImage::recorded);
   m_bindings->bind_image(m_image->view());
 }
 
@@ -99,7 +101,7 @@ PROCEDURAY_DECL FrameWork Renderer::record_frame(VkCommandBuffer cmd, std::uint3
   const FrameWork work = m_structures->record(cmd);  // each structure build ends with a barrier for the trace
   m_bindings->record_upload(cmd);
   m_outputs->record_clear(cmd);
-  record_trace(*m_ctx, cmd, *m_pipeline, m_bindings->sets(), *m_sbt, width, height, m_bindings->push(), before, after);
+  record_trace(m_ctx, cmd, *m_pipeline, m_bindings->sets(), *m_sbt, width, height, m_bindings->push(), before, after);
   return work;
 }
 
@@ -173,7 +175,7 @@ PROCEDURAY_DECL std::pair<FrameSlot*, Renderer::SlotFrame*> Renderer::finished(F
   m_ring->wait(slot);
   SlotFrame& info = m_slot_frames[slot.index];
   if (!info.timed) {
-    info.frame.trace_ms = m_ctx->timestamp_period_ns() > 0 ? m_ring->trace_ms(slot) : ms_since(info.submitted);
+    info.frame.trace_ms = m_ctx.timestamp_period_ns() > 0 ? m_ring->trace_ms(slot) : ms_since(info.submitted);
     info.timed = true;
   }
   return {&slot, &info};

@@ -188,6 +188,8 @@ class Renderer {
   /// Records and submits one width x height frame, with the copies `readback` asks for, and
   /// returns at once: it waits only for the frame that used the slot frames_in_flight frames ago.
   FrameTicket submit(std::uint32_t width, std::uint32_t height, Readback readback = Readback::rgba);
+  /// The context this renderer made its objects from: a copy of the one it was given, sharing its device.
+  const Context& context() const noexcept { return m_ctx; }
   /// The number this renderer's tickets carry (FrameTicket::renderer), unique in the process.
   std::uint64_t serial() const { return m_serial; }
   /// Waits for the frame; its times and structure work (its rgba and outputs vectors stay empty).
@@ -277,7 +279,7 @@ class Renderer {
   }
 
   std::uint64_t m_serial = next_serial();
-  const Context* m_ctx;
+  Context m_ctx;  // a copy, first: destroyed after every object made from it (the device outlives them)
   RendererOptions m_options;
   proceduray::Plan m_plan;
   SceneStages m_stages;                 // kept only while a knob change may rebuild the pipeline
