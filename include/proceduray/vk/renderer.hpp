@@ -28,7 +28,8 @@
 //   renderer.image().read();                          // then read the image it traced into
 //
 // Its one input is a Plan (compile(scene), a value): built from a scene, it compiles it first;
-// changing the scene afterwards does not change the renderer.
+// changing the scene afterwards does not change the renderer. It keeps a copy of the Context
+// (a shared handle): the caller's may go first. A ticket names the renderer that issued it.
 // Uniforms and push constants are recorded into each frame, so setting them never waits. The
 // other setters write memory that submitted frames read: they wait for the frames in flight.
 #pragma once
