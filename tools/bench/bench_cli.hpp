@@ -54,6 +54,16 @@ inline std::string read_text(const std::filesystem::path& path, const char* tool
   return s.str();
 }
 
+/// True when the validation layer reported nothing; else prints the count and the first message,
+/// naming `tool` (a message fails a benchmark's run).
+inline bool validation_clean(const proceduray::vk::Context& ctx, const char* tool) {
+  const std::vector<std::string> messages = ctx.validation_messages();
+  if (messages.empty()) return true;
+  std::fprintf(stderr, "%s: the validation layer reported %zu message(s), the first: %s\n", tool, messages.size(),
+               messages.front().c_str());
+  return false;
+}
+
 inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];

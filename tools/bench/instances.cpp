@@ -242,11 +242,7 @@ int main(int argc, char** argv) {
       }
     }
     if (out != nullptr) std::fclose(out);
-    if (!ctx.validation_messages().empty()) {
-      std::fprintf(stderr, "bench_instances: the validation layer reported %zu message(s), the first: %s\n",
-                   ctx.validation_messages().size(), ctx.validation_messages().front().c_str());
-      status = 1;
-    }
+    if (!bench::validation_clean(ctx, "bench_instances")) status = 1;
     return status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());

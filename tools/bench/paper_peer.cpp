@@ -158,11 +158,7 @@ int main(int argc, char** argv) {
                            "not rendering the library's scene\n", 100.0 * over8 / n);
       status = 1;
     }
-    if (!ctx.validation_messages().empty()) {
-      std::fprintf(stderr, "bench_paper_peer: the validation layer reported %zu message(s), the first: %s\n",
-                   ctx.validation_messages().size(), ctx.validation_messages().front().c_str());
-      status = 1;
-    }
+    if (!bench::validation_clean(ctx, "bench_paper_peer")) status = 1;
     return status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
