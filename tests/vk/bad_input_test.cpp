@@ -119,7 +119,7 @@ TEST_CASE("bad input: adding an instance a per-instance buffer is too short for,
   r.remove_instance(floor, 1);
   CHECK_THROWS_WITH_AS(r.remove_instance(floor, 1),
                        Contains("Renderer::remove_instance: instance 1 of geometry \"floor\" was removed"), UsageError);
-  CHECK_THROWS_WITH_AS(r.remove_instance(floor, 2), Contains("has 2 instances, no instance 2"), InvalidGeometryError);
+  CHECK_THROWS_WITH_AS(r.remove_instance(floor, 2), Contains("has 2 instance slots, no instance 2"), InvalidGeometryError);
   CHECK(r.instances(floor) == std::vector<std::uint32_t>{0});
 }
 

@@ -144,7 +144,7 @@ TEST_CASE("renderer bad transforms, instances and boxes fail at the call with In
                message("Renderer::set_transform", 1) + " has a non-finite element at row 1 column 3",
                "give a finite affine transform");
   check_throws([&] { renderer.set_transform(s.ball(), 5, glm::mat4(1.0f)); },
-               "Renderer::set_transform: geometry \"ball\" has 2 instances, no instance 5",
+               "Renderer::set_transform: geometry \"ball\" has 2 instance slots, no instance 5",
                "pass an instance index below 2");
   const glm::mat4 second_tiny[] = {glm::mat4(1.0f), tiny};
   check_throws([&] { renderer.set_transforms(s.ball(), second_tiny); },

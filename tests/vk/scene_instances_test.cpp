@@ -4,6 +4,9 @@
 #include "renderer_scene.hpp"
 #include "test_context.hpp"
 
+#include <algorithm>
+#include <deque>
+
 using namespace proceduray;
 using renderer_scene::RendererScene;
 
@@ -134,10 +137,73 @@ TEST_CASE("scene instances: adds and removes are TLAS builds that keep every oth
                        UsageError);
   CHECK_THROWS_WITH_AS(in.set_transform(s.ball(0), 0, moved, "Renderer::set_transform"), doctest::Contains("was removed"),
                        UsageError);
-  CHECK(in.add(s.ball(0), moved, 0xFF, blas, "test") == 2);  // indices are never reused
-  CHECK(in.list().back().custom_index == before.size() + 1);
+  // The next add takes the freed slot 0 with its next generation, and the freed custom index.
+  const std::uint32_t reused = in.add(s.ball(0), moved, 0xFF, blas, "test");
+  CHECK(reused == (1u << 24 | 0u));
+  CHECK(in.list().back().custom_index == before[k0].custom_index);
+  CHECK(in.custom_index_bound() == before.size() + 1);  // no per-instance storage grows
+  CHECK(in.instances(s.ball(0), "test") == std::vector<std::uint32_t>{reused, 1});
+  CHECK(in.tlas_index(s.ball(0), reused, "test") == before.size());
   const vk::AccelerationStructure rebuilt;
   in.blas_rebuilt(plan.geometry(s.ball(0)).blas, rebuilt);  // reaches the added instances too
   CHECK(in.list()[in.tlas_index(s.ball(0), 1, "test")].blas == &rebuilt);
-  CHECK(in.list()[in.tlas_index(s.ball(0), 2, "test")].blas == &rebuilt);
+  CHECK(in.list()[in.tlas_index(s.ball(0), reused, "test")].blas == &rebuilt);
 }
+
+TEST_CASE("bad input: a removed instance's handle, once its slot holds a new instance, is refused by name") {
+  TestContext t;
+  features_scene::FeaturesScene s;
+  const Plan plan = compile(s.table(t.ctx));
+  vk::SceneInstances in(plan, instances_of(plan));
+  const vk::AccelerationStructure blas;
+  const std::uint32_t first = in.add(s.ball(0), glm::mat4(1.0f), 0xFF, blas, "test");
+  in.remove(s.ball(0), first, "test");
+  const std::uint32_t second = in.add(s.ball(0), glm::mat4(1.0f), 0xFF, blas, "test");
+  REQUIRE((second & 0xFFFFFFu) == (first & 0xFFFFFFu));  // the same slot
+  REQUIRE(second != first);
+  const std::string words = "Renderer::set_visible: instance " + std::to_string(first) + " of geometry \"a\" was removed "
+                            "(remove_instance) and its slot 1 now holds instance " + std::to_string(second);
+  CHECK_THROWS_WITH_AS(in.set_visible(s.ball(0), first, false, "Renderer::set_visible"), doctest::Contains(words.c_str()),
+                       UsageError);
+  CHECK_THROWS_WITH_AS(in.remove(s.ball(0), first, "Renderer::remove_instance"),
+                       doctest::Contains("use a handle of a live instance"), UsageError);
+  CHECK(in.visible(s.ball(0), second, "test"));  // the new one is untouched
+  in.remove(s.ball(0), second, "test");
+  CHECK_THROWS_WITH_AS(in.tlas_index(s.ball(0), second, "Renderer::set_transform"),
+                       doctest::Contains("its slot 1 now holds nothing"), UsageError);
+}
+
+TEST_CASE("scene instances: example 05's add-one-remove-one loop runs 10 million frames in flat memory") {
+  TestContext t;
+  features_scene::FeaturesScene s;
+  const Plan plan = compile(s.table(t.ctx));
+  vk::SceneInstances in(plan, instances_of(plan));
+  const std::size_t declared = in.list().size(), slots = in.slot_count();
+  const vk::AccelerationStructure blas;
+  const glm::mat4 at(1.0f);
+  std::deque<std::uint32_t> live;  // oldest first, at most four, as example 05 keeps its beads
+  std::uint32_t stale = 0;
+  bool any_stale = false;
+  constexpr std::uint32_t frames = 10'000'000;
+  for (std::uint32_t f = 0; f < frames; ++f) {
+    live.push_back(in.add(s.ball(0), at, 0xFF, blas, "test"));
+    if (live.size() > 4) {
+      stale = live.front();
+      any_stale = true;
+      in.remove(s.ball(0), stale, "test");
+      live.pop_front();
+    }
+    in.take();
+    if (f % 1'000'003 == 0 && any_stale) {  // now and then: the handle just removed stays refused
+      CHECK_THROWS_AS(in.set_visible(s.ball(0), stale, false, "test"), UsageError);
+    }
+  }
+  CHECK(in.list().size() == declared + 4);
+  CHECK(in.slot_count() <= slots + 5);             // no slot per add
+  CHECK(in.custom_index_bound() <= declared + 5);  // nor a custom index
+  std::vector<std::uint32_t> handles = in.instances(s.ball(0), "test");
+  handles.erase(handles.begin());  // the declared instance
+  CHECK(std::is_permutation(handles.begin(), handles.end(), live.begin(), live.end()));
+  for (std::uint32_t h : live) CHECK(in.visible(s.ball(0), h, "test"));
+}
+

@@ -144,10 +144,12 @@ PROCEDURAY_DECL std::uint32_t Renderer::add_instance(GeometryId geometry, const 
                                                      std::uint32_t mask) {
   constexpr std::string_view op = "Renderer::add_instance";
   m_ring->wait_all();
-  const std::uint32_t custom = m_structures->instances().next_custom_index();
-  m_bindings->check_instance_count(custom + 1, op);  // throws before any change
+  const SceneInstances& in = m_structures->instances();
+  // Per-instance storage covers every custom index given so far; a reused one needs no more.
+  const std::uint32_t count = std::max(in.next_custom_index() + 1, in.custom_index_bound());
+  m_bindings->check_instance_count(count, op);  // throws before any change
   const std::uint32_t instance = m_structures->add_instance(geometry, object_to_world, mask, op);
-  m_bindings->set_instance_count(custom + 1, op);
+  m_bindings->set_instance_count(count, op);
   if (m_structures->take_tlas_replaced()) m_bindings->write_tlas(m_structures->tlas().structure());
   return instance;
 }

@@ -10,8 +10,8 @@
 //   renderer.set_texture(ground_slot, ground);        // a TextureData (image/texture_data.hpp): mips, sampler
 //   renderer.set_transform(pacman, 1, moved);         // DynamicTransform: TLAS refit, no BLAS work
 //   renderer.set_visible(pacman, 0, false);           // hidden until shown again: a TLAS update
-//   std::uint32_t i = renderer.add_instance(pacman, placed);   // any policy: a TLAS build
-//   renderer.remove_instance(pacman, i);               // a TLAS build; the index is not reused
+//   std::uint32_t i = renderer.add_instance(pacman, placed);   // any policy: a TLAS build; a handle
+//   renderer.remove_instance(pacman, i);               // a TLAS build; i is refused from now on
 //   renderer.set_aabbs(blob, {{box}});                 // DynamicGeometry: BLAS refit (or rebuild), TLAS update
 //   proceduray::vk::Frame frame = renderer.render(1024, 768);
 //   frame.rgba; frame.trace_ms;                       // pixels, GPU time of the trace
@@ -50,6 +50,7 @@
 #include <proceduray/vk/storage_image.hpp>
 #include <proceduray/vk/trace.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstring>
@@ -141,16 +142,18 @@ class Renderer {
   }
   /// Adds an instance of `geometry` (of its BLAS: every geometry sharing it), any policy, with the
   /// hit records of the geometry's instances without entries of their own; no other instance's SBT
-  /// offset changes. A TLAS build before the next trace. Returns its instance index (indices are
-  /// never reused); its gl_InstanceCustomIndexEXT is one past every custom index so far, so a
-  /// per-instance storage buffer must hold that many elements first (else UsageError).
+  /// offset changes. A TLAS build before the next trace. Returns its handle (SceneInstances: a slot
+  /// and a generation; a removed instance's slot is reused). Its gl_InstanceCustomIndexEXT is a
+  /// removed instance's, else one past every custom index so far, so a per-instance storage buffer
+  /// must hold that many elements first (else UsageError).
   std::uint32_t add_instance(GeometryId geometry, const glm::mat4& object_to_world, std::uint32_t mask = 0xFF);
-  /// Removes one instance: a TLAS build. Throws UsageError for one removed already.
+  /// Removes one instance: a TLAS build. Its handle is refused from now on (UsageError), also once
+  /// its slot holds a new instance.
   void remove_instance(GeometryId geometry, std::uint32_t instance) {
     m_ring->wait_all();
     m_structures->remove_instance(geometry, instance, "Renderer::remove_instance");
   }
-  /// The instance indices `geometry` has now, in order.
+  /// The handles of the instances `geometry` has now, in slot order.
   std::vector<std::uint32_t> instances(GeometryId geometry) const {
     return m_structures->instances().instances(geometry, "Renderer::instances");
   }

@@ -11,7 +11,8 @@ namespace proceduray::vk {
 
 PROCEDURAY_DECL SceneInstances::SceneInstances(const proceduray::Plan& plan, std::vector<Instance> list)
     : m_plan(&plan), m_list(std::move(list)), m_hidden(m_list.size(), false),
-      m_slots(plan.blases().size()), m_next_custom(static_cast<std::uint32_t>(m_list.size())) {
+      m_slots(plan.blases().size()), m_free(plan.blases().size()),
+      m_next_custom(static_cast<std::uint32_t>(m_list.size())) {
   const auto planned = plan.instances();
   if (m_list.size() != planned.size()) {
     throw UsageError("SceneInstances: " + std::to_string(m_list.size()) + " instances given, the plan has " +
@@ -21,32 +22,47 @@ PROCEDURAY_DECL SceneInstances::SceneInstances(const proceduray::Plan& plan, std
     m_masks.push_back(m_list[k].mask);
     const std::uint32_t blas = planned[k].blas;
     m_owners.push_back({blas, static_cast<std::uint32_t>(m_slots[blas].size())});
-    m_slots[blas].push_back(k);
+    m_slots[blas].push_back({k, 0});
   }
+}
+
+PROCEDURAY_DECL std::size_t SceneInstances::slot_count() const noexcept {
+  std::size_t n = 0;
+  for (const std::vector<Slot>& slots : m_slots) n += slots.size();
+  return n;
 }
 
 PROCEDURAY_DECL std::uint32_t SceneInstances::tlas_index(GeometryId geometry, std::uint32_t instance,
                                                          std::string_view op) const {
   const PlannedGeometry& g = m_plan->geometry(geometry, op);  // UnknownIdError for another scene's id
-  const std::vector<std::uint32_t>& slots = m_slots[g.blas];
-  if (instance >= slots.size()) {
+  const std::vector<Slot>& slots = m_slots[g.blas];
+  const std::uint32_t slot = instance & slot_mask, generation = instance >> slot_bits;
+  if (slot >= slots.size()) {
     throw InvalidGeometryError(std::string(op) + ": geometry \"" + g.name + "\" has " + std::to_string(slots.size()) +
-                               " instances, no instance " + std::to_string(instance) + "; pass an instance index below " +
-                               std::to_string(slots.size()) + " (GeometryDesc::instances, then the added ones)");
+                               " instance slots, no instance " + std::to_string(instance) + "; pass an instance index below " +
+                               std::to_string(slots.size()) + " (GeometryDesc::instances, then the added ones) or a "
+                               "handle add_instance returned");
   }
-  if (slots[instance] == removed) {
+  const Slot& s = slots[slot];
+  if (s.generation != generation) {
     throw UsageError(std::string(op) + ": instance " + std::to_string(instance) + " of geometry \"" + g.name +
-                     "\" was removed (remove_instance), and an index is never reused; use one of its instances "
-                     "(instances(geometry)), or add_instance for a new one");
+                     "\" was removed (remove_instance) and its slot " + std::to_string(slot) + " now holds " +
+                     (s.tlas == removed ? std::string("nothing") : "instance " + std::to_string(handle(slot, s))) +
+                     "; use a handle of a live instance (instances(geometry)), or add_instance for a new one");
   }
-  return slots[instance];
+  if (s.tlas == removed) {
+    throw UsageError(std::string(op) + ": instance " + std::to_string(instance) + " of geometry \"" + g.name +
+                     "\" was removed (remove_instance); use a handle of a live instance (instances(geometry)), "
+                     "or add_instance for a new one");
+  }
+  return s.tlas;
 }
 
 PROCEDURAY_DECL std::vector<std::uint32_t> SceneInstances::instances(GeometryId geometry, std::string_view op) const {
-  const std::vector<std::uint32_t>& slots = m_slots[m_plan->geometry(geometry, op).blas];
+  const std::vector<Slot>& slots = m_slots[m_plan->geometry(geometry, op).blas];
   std::vector<std::uint32_t> out;
   for (std::uint32_t i = 0; i < slots.size(); ++i) {
-    if (slots[i] != removed) out.push_back(i);
+    if (slots[i].tlas != removed) out.push_back(handle(i, slots[i]));
   }
   return out;
 }
@@ -55,8 +71,10 @@ PROCEDURAY_DECL std::uint32_t SceneInstances::add(GeometryId geometry, const glm
                                                   const AccelerationStructure& blas, std::string_view op) {
   const PlannedGeometry& g = m_plan->geometry(geometry, op);
   const PlannedBlas& planned = m_plan->blases()[g.blas];
-  std::vector<std::uint32_t>& slots = m_slots[g.blas];
-  const auto instance = static_cast<std::uint32_t>(slots.size());
+  std::vector<Slot>& slots = m_slots[g.blas];
+  std::vector<std::uint32_t>& free = m_free[g.blas];
+  const std::uint32_t slot = free.empty() ? static_cast<std::uint32_t>(slots.size()) : free.back();
+  const std::uint32_t instance = slot | (free.empty() ? 0u : slots[slot].generation << slot_bits);
   if (planned.shared_sbt_offset == no_index) {
     throw UsageError(std::string(op) + ": geometry \"" + g.name + "\" has no hit records a new instance could use: " +
                      (planned.instance_count == 0 ? "it declares no instances" : "every instance has entries of its own") +
@@ -67,41 +85,58 @@ PROCEDURAY_DECL std::uint32_t SceneInstances::add(GeometryId geometry, const glm
   check_affine(geometry, instance, object_to_world, op);
   const InstanceTransform rows = instance_transform(object_to_world);
   check_transform(geometry, instance, rows, op);
-  if (!fits_instance_field(m_next_custom)) {
-    throw DeviceLimitError(std::string(op) + ": instance custom index " + std::to_string(m_next_custom) +
-                           " would pass the 24 bits of instanceCustomIndex; the scene has added too many instances");
+  const std::uint32_t custom = next_custom_index();
+  if (!fits_instance_field(custom) || slot > slot_mask) {
+    throw DeviceLimitError(std::string(op) + ": instance custom index " + std::to_string(custom) +
+                           " would pass the 24 bits of instanceCustomIndex: the scene has " +
+                           std::to_string(m_list.size()) + " live instances; remove_instance some before adding more");
   }
   const auto k = static_cast<std::uint32_t>(m_list.size());
-  m_list.push_back({.blas = &blas, .transform = rows, .custom_index = m_next_custom++,
+  m_list.push_back({.blas = &blas, .transform = rows, .custom_index = custom,
                     .sbt_offset = planned.shared_sbt_offset, .mask = static_cast<std::uint8_t>(mask)});
-  m_owners.push_back({g.blas, instance});
+  m_owners.push_back({g.blas, slot});
   m_masks.push_back(static_cast<std::uint8_t>(mask));
   m_hidden.push_back(false);
-  slots.push_back(k);
+  if (m_free_custom.empty()) {
+    ++m_next_custom;
+  } else {
+    m_free_custom.pop_back();
+  }
+  if (free.empty()) {
+    slots.push_back({k, 0});
+  } else {
+    free.pop_back();
+    slots[slot].tlas = k;
+  }
   m_rebuild = true;
   return instance;
 }
 
 PROCEDURAY_DECL void SceneInstances::remove(GeometryId geometry, std::uint32_t instance, std::string_view op) {
   const std::uint32_t k = tlas_index(geometry, instance, op);  // throws for a bad or removed index
+  const std::uint32_t blas = m_plan->geometry(geometry).blas, slot = instance & slot_mask;
+  m_free_custom.push_back(m_list[k].custom_index);
   const auto last = static_cast<std::uint32_t>(m_list.size() - 1);
   // The last entry takes the hole, so the list stays dense; only its gl_InstanceID changes.
   m_list[k] = m_list[last];
   m_owners[k] = m_owners[last];
   m_masks[k] = m_masks[last];
   m_hidden[k] = m_hidden[last];
-  m_slots[m_owners[k].blas][m_owners[k].instance] = k;
+  m_slots[m_owners[k].blas][m_owners[k].slot].tlas = k;
   m_list.pop_back();
   m_owners.pop_back();
   m_masks.pop_back();
   m_hidden.pop_back();
-  m_slots[m_plan->geometry(geometry).blas][instance] = removed;
+  Slot& s = m_slots[blas][slot];
+  s.tlas = removed;
+  s.generation = (s.generation + 1) & (0xFFu);  // the handle just removed no longer matches
+  m_free[blas].push_back(slot);
   m_rebuild = true;
 }
 
 PROCEDURAY_DECL void SceneInstances::blas_rebuilt(std::uint32_t blas, const AccelerationStructure& structure) {
-  for (std::uint32_t k : m_slots[blas]) {
-    if (k != removed) m_list[k].blas = &structure;
+  for (const Slot& s : m_slots[blas]) {
+    if (s.tlas != removed) m_list[s.tlas].blas = &structure;
   }
   m_rebuild = true;
 }
@@ -158,8 +193,8 @@ PROCEDURAY_DECL void SceneInstances::set_transforms(GeometryId geometry, std::sp
     rows[i] = instance_transform(object_to_world[i]);
     check_transform(geometry, live[i], rows[i], op);
   }
-  const std::vector<std::uint32_t>& slots = m_slots[m_plan->geometry(geometry).blas];
-  for (std::size_t i = 0; i < live.size(); ++i) m_list[slots[live[i]]].transform = rows[i];
+  const std::vector<Slot>& slots = m_slots[m_plan->geometry(geometry).blas];
+  for (std::size_t i = 0; i < live.size(); ++i) m_list[slots[live[i] & slot_mask].tlas].transform = rows[i];
   m_update = true;
 }
 
