@@ -84,3 +84,31 @@ TEST_CASE("frame ring bad input: a frame whose slot was reused, or never submitt
   CHECK(ring.slot_of(2, "x").frame == 2);
   CHECK(ring.slot_of(3, "x").frame == 3);
 }
+
+TEST_CASE("frame ring keeps an outgrown readback buffer, unchanged, for one more turn of the ring") {
+  TestContext t;
+  vk::FrameRing ring(t.ctx, 2);
+  auto frame = [&](VkDeviceSize bytes, std::uint32_t value) {
+    vk::FrameSlot& slot = ring.begin();
+    vk::Buffer& buffer = ring.readback(slot, bytes);
+    vkCmdFillBuffer(slot.cmd, buffer.get(), 0, VK_WHOLE_SIZE, value);
+    return ring.submit(slot);
+  };
+  frame(64, 1);
+  frame(64, 2);
+  vk::FrameSlot& one = ring.slot_of(1, "test");
+  ring.wait(one);
+  const auto* old = static_cast<const std::uint32_t*>(one.readback->data());
+  REQUIRE(old[0] == 1u);
+  frame(256, 3);  // frame 1's slot, grown: the 64-byte buffer is kept
+  CHECK(ring.retired() == 1);
+  ring.wait_all();
+  CHECK(old[0] == 1u);  // still frame 1's words
+  frame(256, 4);  // frame 2's slot grows too
+  CHECK(ring.retired() == 2);
+  frame(256, 5);  // a turn past frame 3: no view of frame 1 can be valid, its buffer goes
+  CHECK(ring.retired() == 1);
+  frame(256, 6);
+  CHECK(ring.retired() == 0);
+  ring.wait_all();
+}

@@ -130,8 +130,13 @@ PROCEDURAY_DECL double FrameRing::trace_ms(const FrameSlot& slot) const {
 }
 
 PROCEDURAY_DECL Buffer& FrameRing::readback(FrameSlot& slot, VkDeviceSize bytes) {
+  // Outgrown buffers go once the ring is a full turn past them: no view of them is valid then.
+  const std::uint64_t next = m_submitted + 1;
+  std::erase_if(m_retired, [&](const Retired& r) { return next >= r.at + m_slots.size(); });
   if (!slot.readback || slot.readback->size() < bytes) {
-    slot.readback = std::make_unique<Buffer>(*m_ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, Buffer::host_cached);
+    auto grown = std::make_unique<Buffer>(*m_ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, Buffer::host_cached);
+    if (slot.readback) m_retired.push_back({std::move(slot.readback), next});
+    slot.readback = std::move(grown);
   }
   return *slot.readback;
 }

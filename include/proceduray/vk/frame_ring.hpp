@@ -73,15 +73,26 @@ class FrameRing {
   /// GPU milliseconds between the slot's two timestamps (after wait); 0 without timestamps.
   double trace_ms(const FrameSlot& slot) const;
   /// The slot's readback buffer, grown to at least `bytes` (waits for nothing: call on a begun slot).
+  /// A buffer it outgrows is kept, unchanged, until the ring has gone round once more, so a view
+  /// of an earlier frame read a little too late (after a submit at a larger size) still reads
+  /// that frame's pixels rather than freed memory.
   Buffer& readback(FrameSlot& slot, VkDeviceSize bytes);
+  /// Outgrown readback buffers still kept (see readback()).
+  std::size_t retired() const noexcept { return m_retired.size(); }
 
  private:
   void wait_all_noexcept() noexcept;
+  /// A readback buffer outgrown at submit `at` (the frame number the slot's next frame gets).
+  struct Retired {
+    std::unique_ptr<Buffer> buffer;
+    std::uint64_t at = 0;
+  };
 
   const Context* m_ctx;
   DeviceHandle<VkCommandPool> m_pool;
   DeviceHandle<VkQueryPool> m_queries;  // two timestamps per slot; null when the queue has none
   std::vector<FrameSlot> m_slots;
+  std::vector<Retired> m_retired;
   std::uint64_t m_submitted = 0;
 };
 
