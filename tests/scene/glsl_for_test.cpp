@@ -154,7 +154,8 @@ TEST_CASE("glsl_for gives tracing stages a trace function per ray type") {
                     "direction, tmax, 1); }"));
     // The explicit-payload form copies p in and returns what the shaders left.
     CHECK(has(glsl, "Shadow trace_shadow_ray(vec3 origin, float tmin, vec3 direction, float tmax, Shadow p) { "
-                    "shadow_ray = p; trace_shadow_ray(origin, tmin, direction, tmax); return shadow_ray; }"));
+                    "shadow_ray = p; traceRayEXT(tlas, shadow_ray_flags, shadow_ray_mask, shadow_ray_ray, ray_count, "
+                    "shadow_ray_ray, origin, tmin, direction, tmax, 1); return shadow_ray; }"));
   }
   CHECK_FALSE(has(f(ShaderStage::intersection, "ball.rint"), "traceRayEXT"));  // the fixture has no any-hit shader
 }

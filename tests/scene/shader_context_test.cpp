@@ -1,5 +1,6 @@
 // scene/shader_context.hpp: who uses a failing stage, and why a generated name a shader calls is missing.
 #include <proceduray/scene/compile.hpp>
+#include <proceduray/scene/glsl_for.hpp>
 #include <proceduray/scene/shader_context.hpp>
 #include <proceduray/shader/field_list.hpp>
 
@@ -88,4 +89,25 @@ TEST_CASE("generated_name_hint names the ray a trace function lacks, and the dec
   const std::string unnamed = generated_name_hint(plan_of(false), ShaderStage::raygen,
                                                   "ERROR: x:2: 'trace_light' : undeclared identifier");
   CHECK(has(unnamed, "names no acceleration structure binding"));
+}
+
+TEST_CASE("bad input: a ray with no miss shader traced without a payload is refused, naming the fix") {
+  TestScene scene;
+  auto light = scene.add_ray<Light>("light", {});  // no miss shader
+  scene.add_hit_group<Hit>("ball", {.kind = HitGroupKind::procedural, .closest_hit = "ball.rchit", .intersection = "ball.rint"});
+  auto ball = scene.add_geometry("ball", GeometryDesc::procedural({Aabb{}}));
+  auto global = scene.add_global_signature("global", {.bindings = {{BindingKind::acceleration_structure, 0, 0, 1, "tlas"}}});
+  scene.add_raygen("main.rgen");
+  scene.set_global_signature(global);
+  scene.add_hit(light, scene.hit_group_id("ball"), ball);
+  const Plan plan = compile(scene);
+  // Only the form whose payload a miss returns: a miss can never hand back uninitialised memory.
+  const std::string glsl = glsl_for(plan, ShaderStage::raygen, "main.rgen");
+  CHECK(has(glsl, "Light trace_light(vec3 origin, float tmin, vec3 direction, float tmax, Light p) { light = p; "));
+  CHECK_FALSE(has(glsl, "void trace_light("));
+  const std::string hint = generated_name_hint(plan, ShaderStage::raygen,
+                                               "ERROR: x.rgen:4: 'trace_light' : no matching overloaded function found");
+  CHECK(has(hint, "trace_light(origin, tmin, direction, tmax) is not generated: ray \"light\" has no miss shader, so a "
+                  "miss would leave its payload uninitialised; pass the payload a miss returns, "
+                  "trace_light(origin, tmin, direction, tmax, p), or give the ray a miss shader (RayDesc::miss)"));
 }

@@ -83,6 +83,16 @@ PROCEDURAY_DECL std::string generated_name_hint(const Plan& plan, ShaderStage st
     return fn + " is not generated: the global signature names no acceleration structure binding to trace; give "
            "one a name (the default global signature calls it \"tlas\")";
   }
+  for (std::uint32_t r = 0; r < plan.ray_count(); ++r) {
+    if (glsl_identifier(plan.ray_name(r)) != name) continue;
+    bool miss = false;
+    for (const SbtRecord& rec : plan.records(SbtRegionKind::miss)) miss |= rec.ray == r && rec.group != no_index;
+    if (!miss) {
+      return fn + "(origin, tmin, direction, tmax) is not generated: ray \"" + plan.ray_name(r) + "\" has no miss "
+             "shader, so a miss would leave its payload uninitialised; pass the payload a miss returns, " + fn +
+             "(origin, tmin, direction, tmax, p), or give the ray a miss shader (RayDesc::miss)";
+    }
+  }
   return {};
 }
 
