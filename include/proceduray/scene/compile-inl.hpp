@@ -23,6 +23,21 @@ PROCEDURAY_DECL void PlanBuilder::outputs() {
   });
 }
 
+PROCEDURAY_DECL void PlanBuilder::depth_counter() {
+  // A derived depth is exact; a declared one may be less than shaders that trace in a cycle would
+  // nest, and past the pipeline's depth a trace crashes the device. The counter image stops them.
+  if (!s.max_recursion_depth() || !out.m_global) return;
+  bool tlas = false;
+  std::uint32_t next = 0;
+  for (const Binding& b : out.m_global->bindings) {
+    tlas |= b.kind == BindingKind::acceleration_structure && !b.name.empty();
+    if (b.set == 0) next = std::max(next, b.binding + 1);
+  }
+  if (!tlas) return;  // no trace functions are generated
+  out.m_depth_binding = next;
+  out.m_global->bindings.push_back({BindingKind::output_image, next, 0, 1, "", nullptr});
+}
+
 PROCEDURAY_DECL void PlanBuilder::check_parameter(const DistanceField& f, const FieldParameter& p) const {
   if (p.record) return;  // add_distance_field checked the records' type
   for (const Binding& b : out.m_global->bindings) {
@@ -71,6 +86,7 @@ PROCEDURAY_DECL void PlanBuilder::pipeline() {
   plan.global_signature = s.pipeline_global_signature();
   if (plan.global_signature.valid()) out.m_global = s.global_signature(plan.global_signature).desc;
   outputs();
+  depth_counter();
   // A stage is shared by every group that names it, except that an intersection shader gets one
   // stage per any-hit shader it is paired with: lavapipe (Mesa 25.0) binds the any-hit of the
   // first group to an intersection stage for every group sharing it.

@@ -237,6 +237,7 @@ struct PlanBuilder {
 
   void pipeline();
   void outputs();
+  void depth_counter();
   void fields();
   /// Throws SceneError unless the global signature declares the uniform `p` reads.
   void check_parameter(const DistanceField& f, const FieldParameter& p) const;

@@ -121,9 +121,32 @@ PROCEDURAY_DECL std::string trace_target(const Plan& plan) {
   return {};
 }
 
-PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene, const Plan& plan) {
+PROCEDURAY_DECL std::string depth_counter(const Plan& plan, bool raygen) {
+  if (plan.depth_binding() == no_index) return {};
+  // The nesting of the running shader, per pixel: raygen's traces are level 1; a nested trace
+  // reads its level, refuses past the pipeline's depth, and puts it back when the trace returns.
+  const std::string image = "proceduray_depth_image", at = "ivec2(gl_LaunchIDEXT.xy)";
+  std::string out = "layout(set = 0, binding = " + std::to_string(plan.depth_binding()) + ", r32ui) uniform coherent "
+                    "uimage2D " + image + ";\nconst uint proceduray_max_depth = " +
+                    std::to_string(plan.pipeline().max_recursion_depth) + "u;\n";
+  if (raygen) {
+    return out + "bool proceduray_enter() { imageStore(" + image + ", " + at + ", uvec4(1u)); return true; }\n"
+                 "void proceduray_leave() {}\n";
+  }
+  return out + "uint proceduray_level = 0u;\n"
+               "bool proceduray_enter() {\n"
+               "  proceduray_level = imageLoad(" + image + ", " + at + ").x;\n"
+               "  if (proceduray_level >= proceduray_max_depth) { output_flags(output_flag_depth); return false; }\n"
+               "  imageStore(" + image + ", " + at + ", uvec4(proceduray_level + 1u));\n"
+               "  return true;\n"
+               "}\n"
+               "void proceduray_leave() { imageStore(" + image + ", " + at + ", uvec4(proceduray_level)); }\n";
+}
+
+PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene, const Plan& plan, bool raygen) {
   std::string out;
   const std::string tlas = trace_target(plan);
+  if (!tlas.empty()) out += depth_counter(plan, raygen);
   for (std::uint32_t r = 0; r < scene.rays().size(); ++r) {
     const std::string name = glsl_identifier(scene.rays().name(r));
     const TypeOps& payload = *scene.ray(RayId<>(r)).payload_glsl;
@@ -131,11 +154,16 @@ PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene,
     if (tlas.empty()) continue;
     const std::string type(payload.glsl_name), params = "vec3 origin, float tmin, vec3 direction, float tmax";
     // traceRayEXT(tlas, flags, mask, sbt offset, sbt stride, miss index, ..., payload location)
-    out += "void trace_" + name + "(" + params + ") { traceRayEXT(" + tlas + ", " + name + "_flags, " + name +
-           "_mask, " + name + "_ray, ray_count, " + name + "_ray, origin, tmin, direction, tmax, " +
-           std::to_string(r) + "); }\n";
-    out += type + " trace_" + name + "(" + params + ", " + type + " p) { " + name + " = p; trace_" + name +
-           "(origin, tmin, direction, tmax); return " + name + "; }\n";
+    std::string trace = "traceRayEXT(" + tlas + ", " + name + "_flags, " + name + "_mask, " + name +
+                        "_ray, ray_count, " + name + "_ray, origin, tmin, direction, tmax, " + std::to_string(r) + ");";
+    // Past the declared depth the trace is skipped: the payload keeps what it held (a miss
+    // without a miss shader) and the pixel's flags output gets output_flag_depth.
+    if (plan.depth_binding() != no_index) trace = "if (proceduray_enter()) { " + trace + " proceduray_leave(); }";
+    // Without a miss shader a miss leaves the payload as it was: only the form that takes the
+    // payload is generated, so a miss returns what the caller passed, never uninitialised memory.
+    if (!scene.ray(RayId<>(r)).desc.miss.empty()) out += "void trace_" + name + "(" + params + ") { " + trace + " }\n";
+    out += type + " trace_" + name + "(" + params + ", " + type + " p) { " + name + " = p; " + trace + " return " +
+           name + "; }\n";
   }
   return out;
 }
@@ -169,7 +197,7 @@ PROCEDURAY_DECL std::string hit_declarations(const detail::SceneCore& scene, con
   if (const TypeOps* a = one_type(attributes, shader, "hit attribute"); a != nullptr) out += glsl_hit_attribute(*a, "hit");
   out += record_block(records, shader);
   if (stage != ShaderStage::intersection) out += glsl_output_hit(plan.outputs());
-  if (stage == ShaderStage::closest_hit) out += tracing_declarations(scene, plan) + callable_data(scene, no_index);
+  if (stage == ShaderStage::closest_hit) out += tracing_declarations(scene, plan, false) + callable_data(scene, no_index);
   return out;
 }
 
@@ -180,7 +208,7 @@ PROCEDURAY_DECL std::string stage_declarations(const detail::SceneCore& scene, c
   std::uint32_t location = no_index;
   switch (stage) {
     case ShaderStage::raygen:
-      out += tracing_declarations(scene, plan);
+      out += tracing_declarations(scene, plan, true);
       for (const SbtRecord& rec : plan.records(SbtRegionKind::raygen)) {
         if (plan.pipeline().groups[rec.group].name == shader) records.push_back(arguments_type(scene, plan, rec));
       }
@@ -194,7 +222,7 @@ PROCEDURAY_DECL std::string stage_declarations(const detail::SceneCore& scene, c
       if (const TypeOps* p = one_type(payloads, shader, "payload"); p != nullptr) {
         out += glsl_ray_payload(rays, *p, "payload", true);
       }
-      return out + record_block(records, shader) + tracing_declarations(scene, plan) + callable_data(scene, no_index);
+      return out + record_block(records, shader) + tracing_declarations(scene, plan, false) + callable_data(scene, no_index);
     case ShaderStage::closest_hit:
     case ShaderStage::any_hit:
     case ShaderStage::intersection: return out + hit_declarations(scene, plan, stage, shader);

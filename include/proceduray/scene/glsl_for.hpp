@@ -26,7 +26,11 @@
 //                 which fill flags, mask, SBT offset and stride, miss index and payload location
 //                 from the ray's declaration; the second copies p in and returns what the shaders
 //                 left. A closest-hit shader has an outgoing payload of its own ray type too, so a
-//                 reflection needs no save and restore of `payload`.
+//                 reflection needs no save and restore of `payload`. A ray with no miss shader
+//                 gets only the second (a miss returns p, never uninitialised memory). When the
+//                 scene declares a recursion depth, a trace nested past it is skipped (the
+//                 payload keeps what it held) and sets output_flag_depth: shaders that trace in
+//                 a cycle cannot pass the pipeline's depth and crash the device.
 //   calling stages (raygen, miss, closest hit, callable)
 //                 `callableDataEXT <Data> <id>_data` per callable, at location = its index, and
 //                   <Data> <id>_call(<Data> d)   (copies d in, executeCallableEXT, returns the data)
@@ -91,9 +95,13 @@ PROCEDURAY_DECL std::string callable_data(const detail::SceneCore& scene, std::u
 /// first named one, or "" (then there are no trace functions).
 PROCEDURAY_DECL std::string trace_target(const Plan& plan);
 
+/// The depth counter of a scene with a declared depth (Plan::depth_binding): its image, the
+/// pipeline's depth, and proceduray_enter()/proceduray_leave() around each trace; "" without one.
+PROCEDURAY_DECL std::string depth_counter(const Plan& plan, bool raygen);
+
 /// What a tracing stage (raygen, miss, closest hit) gets: every ray's outgoing payload, at
-/// location = ray index, and its two trace functions.
-PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene, const Plan& plan);
+/// location = ray index, and its trace functions (with the depth counter's checks).
+PROCEDURAY_DECL std::string tracing_declarations(const detail::SceneCore& scene, const Plan& plan, bool raygen);
 
 /// The root arguments type of a record, or nullptr.
 PROCEDURAY_DECL const TypeOps* arguments_type(const detail::SceneCore& scene, const Plan& plan, const SbtRecord& record);

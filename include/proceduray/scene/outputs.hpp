@@ -41,6 +41,8 @@ inline constexpr std::uint32_t output_count = 5;
 inline constexpr std::uint32_t output_flag_nan = 1u << 0;             ///< a NaN or Inf appeared on the way
 inline constexpr std::uint32_t output_flag_exhausted = 1u << 1;       ///< a march ran out of steps
 inline constexpr std::uint32_t output_flag_started_inside = 1u << 2;  ///< a march started inside its surface
+/// a trace_<ray> call past the scene's declared recursion depth was refused (glsl_for.hpp)
+inline constexpr std::uint32_t output_flag_depth = 1u << 3;
 
 /// The GLSL name of an output ("t", "normal", ...).
 inline constexpr std::string_view name(Output o) {

@@ -38,7 +38,8 @@ namespace proceduray {
 PROCEDURAY_DECL std::string glsl_outputs(std::span<const PlannedOutput> planned) {
   std::string out = "#define output_flag_nan " + std::to_string(output_flag_nan) + "u\n" +
                     "#define output_flag_exhausted " + std::to_string(output_flag_exhausted) + "u\n" +
-                    "#define output_flag_started_inside " + std::to_string(output_flag_started_inside) + "u\n";
+                    "#define output_flag_started_inside " + std::to_string(output_flag_started_inside) + "u\n" +
+                    "#define output_flag_depth " + std::to_string(output_flag_depth) + "u\n";
   if (!planned.empty()) out += "#define PROCEDURAY_OUTPUTS 1\n";
   for (std::uint32_t i = 0; i < output_count; ++i) {
     const Output o = static_cast<Output>(i);

@@ -148,6 +148,10 @@ class Plan {
   /// The per-pixel outputs the scene asked for, in Output order, with their bindings in set 0
   /// (also in global_signature() as BindingKind::output_image).
   std::span<const PlannedOutput> outputs() const { return m_outputs; }
+  /// The binding (set 0) of the image that counts how deep each pixel's rays nest, so that the
+  /// generated trace_<ray> functions refuse to pass the declared depth (glsl_for.hpp); no_index
+  /// when the scene declares no depth (a derived depth is exact) or names no TLAS to trace.
+  std::uint32_t depth_binding() const { return m_depth_binding; }
   /// The distance fields (Scene::fields), in order: field i reads proceduray_fields.data[i].
   std::span<const PlannedField> fields() const { return m_fields; }
   /// The binding (set 0) of the fields' settings buffer (FieldSettings[]); no_index without fields.
@@ -269,6 +273,7 @@ class Plan {
   std::vector<SceneConstant> m_constants;
   std::vector<PlannedField> m_fields;
   std::uint32_t m_field_binding = no_index;
+  std::uint32_t m_depth_binding = no_index;
 };
 
 }  // namespace proceduray

@@ -38,17 +38,25 @@ PROCEDURAY_DECL VkFormat output_format(Output o);
 /// One storage image per planned output.
 class OutputImages {
  public:
-  OutputImages(const Context& ctx, std::span<const PlannedOutput> planned)
-      : m_ctx(&ctx), m_planned(planned.begin(), planned.end()) {}
+  /// `depth_binding`: Plan::depth_binding(), the depth counter's image, or no_index. The library's
+  /// own: cleared to level 1 once when made (so a raw traceRayEXT in raygen counts as level 1),
+  /// then kept there by the trace functions, never copied or read on the host.
+  OutputImages(const Context& ctx, std::span<const PlannedOutput> planned, std::uint32_t depth_binding = no_index)
+      : m_ctx(&ctx), m_planned(planned.begin(), planned.end()), m_depth_binding(depth_binding) {}
 
   /// Makes the images for width x height (when the size changed) and binds them in `bindings`.
   void resize(std::uint32_t width, std::uint32_t height, Bindings& bindings) {
-    if (m_planned.empty() || (m_width == width && m_height == height)) return;
+    if ((m_planned.empty() && m_depth_binding == no_index) || (m_width == width && m_height == height)) return;
     m_images.clear();
     for (const PlannedOutput& p : m_planned) {
       m_images.push_back(
           std::make_unique<StorageImage>(*m_ctx, width, height, output_format(p.output), StorageImage::recorded));
       bindings.bind_output(p.binding, m_images.back()->view());
+    }
+    if (m_depth_binding != no_index) {
+      m_depth = std::make_unique<StorageImage>(*m_ctx, width, height, VK_FORMAT_R32_UINT, StorageImage::recorded);
+      bindings.bind_output(m_depth_binding, m_depth->view());
+      m_depth_fresh = true;
     }
     m_width = width;
     m_height = height;
@@ -56,6 +64,11 @@ class OutputImages {
   /// Records the layout transitions of images resize() made (nothing for those done before).
   void record_init(VkCommandBuffer cmd) {
     for (auto& image : m_images) image->record_init(cmd);
+    if (m_depth && m_depth_fresh) {
+      m_depth->record_init(cmd);
+      m_depth->record_clear(cmd, VkClearColorValue{.uint32 = {1u, 0u, 0u, 0u}});
+      m_depth_fresh = false;
+    }
   }
   /// Bytes of all the images, packed one after another in the planned order.
   VkDeviceSize bytes() const noexcept {
@@ -120,6 +133,9 @@ class OutputImages {
   const Context* m_ctx;
   std::vector<PlannedOutput> m_planned;
   std::vector<std::unique_ptr<StorageImage>> m_images;  // m_planned's order
+  std::uint32_t m_depth_binding = no_index;
+  std::unique_ptr<StorageImage> m_depth;  // the depth counter's, when planned
+  bool m_depth_fresh = false;             // made by resize(), not yet initialised
   std::uint32_t m_width = 0, m_height = 0;
 };
 

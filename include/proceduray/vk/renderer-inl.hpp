@@ -51,7 +51,7 @@ PROCEDURAY_DECL Renderer::Renderer(const Context& ctx, proceduray::Plan plan, Re
   m_timings.spirv_compiled = pipeline.spirv_compiled;
   // Only a specialized pipeline is built again: the general one keeps no SPIR-V.
   if (!m_options.specialize_fields || m_plan.fields().empty()) m_stages = {};
-  m_outputs = std::make_unique<OutputImages>(m_ctx, m_plan.outputs());
+  m_outputs = std::make_unique<OutputImages>(m_ctx, m_plan.outputs(), m_plan.depth_binding());
 }
 
 PROCEDURAY_DECL void Renderer::build_pipeline(PipelineTimings* timings) {
