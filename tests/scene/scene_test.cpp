@@ -326,7 +326,11 @@ TEST_CASE("scene set_global_signature with a desc registers it and selects it") 
   Plan plan = compile(s);
   CHECK(plan.pipeline().global_signature == g);
   REQUIRE(plan.global_signature() != nullptr);
-  CHECK(*plan.global_signature() == default_global_signature());
+  // The scene declares a recursion depth: compile() adds the depth counter's image after the bindings.
+  REQUIRE(s.max_recursion_depth().has_value());
+  GlobalSignatureDesc expected = default_global_signature();
+  expected.bindings.push_back({BindingKind::output_image, plan.depth_binding(), 0, 1, "", nullptr});
+  CHECK(*plan.global_signature() == expected);
   // Registered once: the same id again is a duplicate, and the selection stays.
   CHECK_THROWS_AS(s.set_global_signature(default_global_signature()), DuplicateIdError);
   CHECK(s.pipeline_global_signature() == g);

@@ -3,7 +3,7 @@
 //   bench_soak [--frames 10000] [--size 64x64] [--every 1000] [--max-growth 1] [--device cpu|gpu|auto] [--validation]
 //   MALLOC_ARENA_MAX=1 bench_soak                         # one malloc arena: RSS without steps (see below)
 //   bench_soak --frames 500 --every 100 --validation      # a short run under the Khronos validation layer
-//   MALLOC_ARENA_MAX=1 bench_soak --pattern beads --frames 100000 --every 10000 --max-growth 0.1 --max-rss-growth 0.1
+//   MALLOC_ARENA_MAX=1 bench_soak --pattern beads --frames 100000 --every 10000 --max-growth 0.1 --max-rss-growth 0.1 --trim
 //                                                          # example 05's add-one-remove-one, for ever
 //
 // One scene, every kind of update the renderer has, in rotation (frame f, 1-based):
@@ -163,6 +163,7 @@ struct Options {
   std::uint32_t every = 1000;
   double max_growth = 1.0;
   double max_rss_growth = -1;  // < 0: not checked
+  bool trim = false;
   std::string pattern = "all";
   std::string device = "auto";
   bool validation = false;
@@ -347,6 +348,7 @@ int run(const Options& o, std::uint32_t width, std::uint32_t height) {
     const auto now = std::chrono::steady_clock::now();
     const double ms = std::chrono::duration<double, std::milli>(now - interval).count() / o.every;
     interval = now;
+    if (o.trim) malloc_trim(0);  // freed pages back to the system: RSS then counts what is in use
     memory.last_heap = heap_bytes();
     memory.last_rss = rss_bytes();
     if (f == o.every) {  // the end of the warm-up: the baseline
@@ -376,6 +378,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1e6))->capture_default_str();
   app.add_option("--max-rss-growth", o.max_rss_growth, "RSS growth after the warm-up, in percent, that fails the run "
                  "(default: not checked; see above for why RSS steps without a leak)")->check(CLI::Range(0.0, 1e6));
+  app.add_flag("--trim", o.trim, "malloc_trim(0) before each sample, so RSS counts pages in use, not the allocator's "
+               "free pages (a heap whose top moved up steps RSS without a leak)");
   app.add_option("--pattern", o.pattern, "all: every kind of update in turn; beads: example 05's add and remove")
       ->check(CLI::IsMember({"all", "beads"}))->capture_default_str();
   app.add_option("--device", o.device, "cpu (lavapipe), gpu or auto")->check(CLI::IsMember({"cpu", "gpu", "auto"}))

@@ -15,6 +15,7 @@
 
 #include <proceduray/config.hpp>
 
+#include <proceduray/scene/entry.hpp>
 #include <proceduray/scene/outputs.hpp>
 #include <proceduray/vk/bindings.hpp>
 #include <proceduray/vk/frame.hpp>
