@@ -2,6 +2,7 @@
 // of the intersection it is the closest of, not those of another box's later report (a driver bug
 // on some implementations, VK-GL-CTS#580). Checked per pixel against the closed form of five
 // overlapping balls, each in its own AABB of one geometry, under orthographic rays.
+#include "renderer_scene.hpp"
 #include "test_context.hpp"
 #include "test_paths.hpp"
 
@@ -18,14 +19,8 @@
 
 namespace overlap_test {
 namespace pr = proceduray;
-struct Colour {
-  glm::vec3 rgb;
-};
-PROCEDURAY_STRUCT(Colour, scalar, rgb);
-struct BallHit {
-  glm::vec3 normal;
-};
-PROCEDURAY_STRUCT(BallHit, scalar, normal);
+using renderer_scene::BallHit;  // the renderer tests' attributes (a normal) and payload (a colour)
+using renderer_scene::Colour;
 using SceneInterface = proceduray::ShaderInterface<proceduray::Payload<Colour>, proceduray::RootComponent<>,
                                                    proceduray::RootArguments<>, proceduray::Attributes<BallHit>>;
 using Scene = proceduray::Scene<SceneInterface>;
