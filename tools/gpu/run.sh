@@ -6,6 +6,7 @@
 #   bash tools/gpu/run.sh              # everything
 #   bash tools/gpu/run.sh tests        # only the test binaries
 #   bash tools/gpu/run.sh bench        # only the benchmarks
+#   bash tools/gpu/run.sh must         # only what issue #30's must-holds read (about 4 minutes)
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 what=${1:-all}
@@ -38,6 +39,25 @@ step() {  # step NAME COMMAND...: runs it, its output in NAME.txt, one summary l
     "$(grep -E 'test cases:|Status:' "$out/$name.txt" | tr '\n' ' ')" >> "$log"
 }
 (nvidia-smi --query-gpu=name,driver_version --format=csv,noheader || true) > "$out/gpu.txt" 2>&1
+if [ "$what" = must ]; then
+  step bench_peak gpu/bench_peak --device gpu && grep -h "FMAs" "$out/bench_peak.txt" >> "$log"
+  export XDG_CACHE_HOME=/tmp/proceduray-cache-must
+  for s in 02_paper_scene 03_d3d12_scene; do
+    rm -rf "$XDG_CACHE_HOME"
+    step "${s}_cold" "gpu/$s" --device gpu --frames 1 --out "/tmp/$s.png"
+    for i in 1 2; do step "${s}_warm_$i" "gpu/$s" --device gpu --frames 1 --out "/tmp/$s.png"; done
+    grep -H "shader and pipeline work" "$out/${s}"_cold.txt "$out/${s}"_warm_*.txt >> "$log"
+    for i in 1 2; do step "${s}_1080p_$i" "gpu/$s" --device gpu --size 1920x1080 --frames 200 --out "/tmp/$s.png"; done
+    grep -H "^trace" "$out/${s}"_1080p_*.txt >> "$log"
+  done
+  step paper_peer gpu/bench_paper_peer --device gpu --size 1920x1080 --frames 200 && cat "$out/paper_peer.txt" >> "$log"
+  flops=$(gpu/bench_flops --size 256x256 | awk 'tolower($1) == "mandelbulb" { print $2 }')
+  peak=$(grep -o '[0-9.]* GFLOP/s' "$out/bench_peak.txt" | sort -g | tail -n 1 | cut -d' ' -f1)
+  step bench_instances gpu/bench_instances --device gpu --size 1920x1080 --frames 20 --flops-per-eval "$flops" \
+    --peak-gflops "$peak" --csv "$out/instances.csv" && cat "$out/bench_instances.txt" >> "$log"
+  cat "$out/gpu.txt" "$log"
+  exit 0
+fi
 if [ "$what" = all ] || [ "$what" = tests ]; then
   for t in gpu/proceduray_*_tests; do step "$(basename "$t")" "$t"; done
 fi
