@@ -26,14 +26,11 @@ PROCEDURAY_DECL void PlanBuilder::outputs() {
 PROCEDURAY_DECL void PlanBuilder::depth_counter() {
   // A derived depth is exact; a declared one may be less than shaders that trace in a cycle would
   // nest, and past the pipeline's depth a trace crashes the device. The counter image stops them.
-  if (!s.max_recursion_depth() || !out.m_global) return;
-  bool tlas = false;
+  if (!s.max_recursion_depth() || detail::trace_target(out).empty()) return;  // no depth, or no trace functions
   std::uint32_t next = 0;
   for (const Binding& b : out.m_global->bindings) {
-    tlas |= b.kind == BindingKind::acceleration_structure && !b.name.empty();
     if (b.set == 0) next = std::max(next, b.binding + 1);
   }
-  if (!tlas) return;  // no trace functions are generated
   out.m_depth_binding = next;
   out.m_global->bindings.push_back({BindingKind::output_image, next, 0, 1, "", nullptr});
 }
