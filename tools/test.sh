@@ -7,7 +7,8 @@
 #      built against the installed package (CMake and Meson)
 #   3. CTest (GCC)
 #   4. CMake build with the second compiler (Debian's clang, -O2, -Werror) and CTest again: every
-#      header, every usage block and every test compiled and run by both compilers
+#      header, every usage block and every test compiled and run by both compilers (the
+#      one-header-alone checks only by GCC: they test the includes, not the compiler)
 #   5. Meson build of the examples (clang, -Werror) and its smoke test (each example renders)
 #   6. sanitizers: an ASan+UBSan (GCC) build of the non-Vulkan tests and of a Vulkan subset
 #      (proceduray_vk_sanitize_tests), run with leak detection on and no suppressions
@@ -81,7 +82,9 @@ if want clang; then
     "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG" -DPROCEDURAY_WERROR=ON -DPROCEDURAY_BUILD_BENCHES=OFF >/dev/null
   grep -q "clang++" "$out/clang/CMakeCache.txt" || { echo "the second build is not using clang++"; exit 1; }
   cmake --build "$out/clang" -j"$jobs"
-  ctest --test-dir "$out/clang" -j"$jobs" --output-on-failure
+  # "compiles alone" checks include-completeness against the same libstdc++ and were run with GCC;
+  # clang still parses every header (each test binary's precompiled header holds the umbrella).
+  ctest --test-dir "$out/clang" -j"$jobs" --output-on-failure -E "^headers: .* compiles alone$"
 fi
 
 if want meson; then
