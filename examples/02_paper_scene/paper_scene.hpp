@@ -16,6 +16,7 @@
 
 #include "../common/paths.hpp"
 #include "paper_types.hpp"
+#include "world.hpp"
 
 #include <string>
 
@@ -26,8 +27,10 @@ inline constexpr pr::UniformSlot<SceneConstants> constants_slot{.binding = 2, .n
 /// The scene: its entities and entries, each type from its category of paper::Interface.
 struct PaperScene : pr::Scene<Interface> {
   /// `outputs`: per-pixel outputs besides colour (the accuracy tool asks for t, normal, steps, flags).
+  /// `world`: where the scene stands and the origin of its float coordinates (world.hpp); the
+  /// frame's constants then go through World::place.
   explicit PaperScene(pr::OutputSet outputs = {}, Tracing tracing = Tracing::recursive,
-                      std::uint32_t depth_limit = max_depth_limit) {
+                      std::uint32_t depth_limit = max_depth_limit, const World& world = {}) {
     if (depth_limit == 0 || depth_limit > max_depth_supported) {
       throw pr::UsageError("PaperScene: depth limit " + std::to_string(depth_limit) + " is out of range; give 1 to " +
                            std::to_string(max_depth_supported) + " radiance segments (primary included)");
@@ -47,9 +50,9 @@ struct PaperScene : pr::Scene<Interface> {
     add_constant("max_depth_limit", depth_limit);
     if (tracing == Tracing::iterative) add_define("PAPER_ITERATIVE");
     const std::vector<pr::RayShader> shade{{radiance, "shade.rchit"}};
-    pr::add_object(*this, "plane", {.geometry = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max)),
-                                    .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
-    const auto pacmen = pr::GeometryDesc::procedural({pacman_aabb}, pr::transforms(pacman_placements));
+    const auto plane = pr::GeometryDesc::triangles(pr::quad_xz(plane_min, plane_max), {world.transform({})});
+    pr::add_object(*this, "plane", {.geometry = plane, .closest_hit = {{radiance, "plane.rchit"}}}, material, {plane_material});
+    const auto pacmen = pr::GeometryDesc::procedural({pacman_aabb}, world.transforms(pacman_placements));
     pr::add_object<pr::FieldHit>(*this, "pacman", {.geometry = pacmen, .intersection = "pacman.rint", .closest_hit = shade},
                                  material, pacman_materials);
     // The fractals are distance fields (shaders/fractals.glsl): the library marches them, with
@@ -59,12 +62,12 @@ struct PaperScene : pr::Scene<Interface> {
     pr::add_distance_field(*this, "julia", {.glsl = "fractals.glsl", .function = "julia_field", .aabb = julia_aabb,
                                             .lipschitz = 1.0f, .iterations = julia_knobs.iterations, .parameters = {time, cuts},
                                             .knobs = julia_knobs, .normal = "julia_field_normal",
-                                            .instances = {julia_placement.transform()}, .closest_hit = shade},
+                                            .instances = {world.transform(julia_placement)}, .closest_hit = shade},
                            material, {julia_material});
     pr::add_distance_field(*this, "mandelbulb", {.glsl = "fractals.glsl", .function = "mandelbulb_field",
                                                  .aabb = mandelbulb_aabb, .lipschitz = 1.0f,
                                                  .iterations = mandelbulb_knobs.iterations, .parameters = {time},
-                                                 .knobs = mandelbulb_knobs, .instances = {mandelbulb_placement.transform()},
+                                                 .knobs = mandelbulb_knobs, .instances = {world.transform(mandelbulb_placement)},
                                                  .closest_hit = shade},
                            material, {mandelbulb_material});
   }

@@ -137,9 +137,12 @@ inline const glm::vec4 julia_cut{0.27617f, 0.27617f, 0.92057f, 0.1f};
 /// SceneConstants::pacman_mouth).
 inline constexpr float pacman_mouth = 0.6f;
 
+/// Where default_constants' camera stands (world.hpp takes its origin there).
+inline constexpr glm::vec3 default_eye{0.0f, 2.5f, 8.0f};
+
 /// Camera framing all four objects, default light, at `time` seconds.
 inline SceneConstants default_constants(std::uint32_t width, std::uint32_t height, float time) {
-  SceneConstants c{pr::look_at({0.0f, 2.5f, 8.0f}, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
+  SceneConstants c{pr::look_at(default_eye, {0.0f, 0.9f, 0.0f}, 50.0f, width, height),
                    {-6.0f, 8.0f, 5.0f}, 0.15f, glm::vec3(1.0f), time, {0.45f, 0.62f, 0.9f},
                    3, flag_shadows | flag_reflections, 0.05f, {}, pacman_mouth};
   c.julia_cuts = pr::make_cut_planes({julia_cut});

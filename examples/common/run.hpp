@@ -6,9 +6,11 @@
 //   examples::print_run(run, o);
 //   examples::write_last(run, o);   // PNG, then its path
 //
-//   // or all of the above for a proceduray::Scene<Interface> type with renderer_options(cache), in one call:
-//   return examples::run_scene<MyScene>(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
-//                                       [](const examples::Options& o, std::uint32_t frame) { return constants(o, frame); });
+//   // or all of the above for a proceduray::Scene<Interface> with renderer_options(cache), in one call:
+//   return examples::run_scene(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
+//                              [](const examples::Options& o, std::uint32_t frame) { return constants(o, frame); },
+//                              [] { return MyScene(); },                  // made once the options are parsed
+//                              [&](CLI::App& app) { app.add_flag("--mine", mine); });   // its own options, or {}
 #pragma once
 
 #include "cli.hpp"
@@ -67,19 +69,20 @@ inline void write_last(const Run& run, const Options& o) {
   std::printf("%s\n", std::filesystem::absolute(o.out).string().c_str());
 }
 
-/// A scene example's whole program: options, device, the renderer of Scene (a proceduray::Scene<Interface> with
-/// renderer_options(cache)), the build report, o.frames frames with `slot` set to constants(o, frame)
-/// before each (and before the warm-up), their medians, the SBT and the PNG. Returns the exit code:
-/// 1 on an exception (printed with the program's name) or a validation message, else 0.
-template <class Scene, class T, class Constants>
+/// A scene example's whole program: options (the shared ones and `extra`'s), device, the renderer of
+/// make_scene()'s scene (a proceduray::Scene<Interface> with renderer_options(cache)), the build
+/// report, o.frames frames with `slot` set to constants(o, frame) before each (and before the
+/// warm-up), their medians, the SBT and the PNG. Returns the exit code: 1 on an exception (printed
+/// with the program's name) or a validation message, else 0.
+template <class T, class Constants, class MakeScene>
 int run_scene(int argc, char** argv, const char* program, Options defaults, proceduray::UniformSlot<T> slot,
-              Constants constants) {
-  const Options o = parse(argc, argv, program, defaults);
+              Constants constants, MakeScene make_scene, const std::function<void(CLI::App&)>& extra = {}) {
+  const Options o = parse(argc, argv, program, defaults, extra);
   if (o.exit) return *o.exit;
   try {
     proceduray::check_writable(o.out);  // fail before the expensive part
     proceduray::vk::Context ctx({.device = o.device, .validation = o.validation});
-    Scene scene;
+    const auto scene = make_scene();
     proceduray::vk::Renderer renderer(ctx, scene, renderer_options(o, scene.renderer_options(o.cache)));
     set_constants(renderer, slot, constants(o, 0u));
     print_build(ctx, renderer);

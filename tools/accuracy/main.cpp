@@ -30,6 +30,7 @@
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -52,6 +53,8 @@ struct Knobs {
   double spacing = 1.0e-3;   // reference spacing, footprints (paper scene)
   std::uint32_t iteration_factor = 1;
   std::uint32_t stride = 1;  // paper scene: the truth of one pixel in this many outside the silhouette band
+  std::vector<double> origin;  // paper scene: placed at X,Y,Z (examples/02_paper_scene/world.hpp); empty: at 0
+  bool raw_floats = false;     // with origin: no WorldOrigin at the camera
 };
 
 namespace acc = proceduray::accuracy;
@@ -154,11 +157,16 @@ std::vector<acc::Label> knob_labels(const Constants& c) {
 }
 
 Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
-  const paper::PaperScene scene(paper::accuracy_outputs);
+  // The scene may stand far from (0, 0, 0); its truth is the scene at 0: a translation moves no t.
+  const paper::World world = k.origin.empty() ? paper::World{}
+      : paper::World::at({k.origin[0], k.origin[1], k.origin[2]}, k.raw_floats ? paper::Reorigin::off : paper::Reorigin::on);
+  const paper::PaperScene scene(paper::accuracy_outputs, paper::Tracing::recursive, paper::max_depth_limit, world);
   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::Frame constants = paper::default_frame(width, height, k.time);
   apply(k, constants);
-  const auto [frame, samples] = render(renderer, paper::constants_slot, constants, width, height);
+  paper::Frame placed = constants;
+  world.place(placed);
+  const auto [frame, samples] = render(renderer, paper::constants_slot, placed, width, height);
   const auto start = std::chrono::steady_clock::now();
   const paper::ReferenceOptions options{.spacing = k.spacing, .iteration_factor = k.iteration_factor};
   const paper::ReferenceImage truth = k.stride > 1
@@ -173,6 +181,10 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
   out.settings = format("scene: paper, %ux%u, time %.2f s; Mandelbulb knobs: %s", width, height,
                         static_cast<double>(k.time), proceduray::describe(constants.knobs[paper::mandelbulb_id]).c_str());
+  if (!k.origin.empty()) {
+    out.settings += format("; placed at (%g, %g, %g), %s", world.offset.x, world.offset.y, world.offset.z,
+                           k.raw_floats ? "raw float coordinates" : "WorldOrigin at the camera");
+  }
   out.trace_ms = frame.trace_ms;
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
   out.all = examples::measure_frame(truth.frame(), samples, truth.pixels, truth.weights, truth.stride);
@@ -282,6 +294,11 @@ int run(const Knobs& k) {
     std::fprintf(stderr, "proceduray_accuracy: --size '%s' is not WxH with positive numbers, e.g. 320x240\n", k.size.c_str());
     return 2;
   }
+  if (!k.origin.empty() && k.scene != "paper") {
+    std::fprintf(stderr, "proceduray_accuracy: --origin places the paper scene only, not '%s'; drop it or pass "
+                 "--scene paper\n", k.scene.c_str());
+    return 2;
+  }
   if (!k.classes_object.empty()) {  // refused before the truth is computed, not after
     std::vector<std::string> names;
     if (k.scene == "d3d12") {
@@ -385,6 +402,11 @@ int main(int argc, char** argv) {
   app.add_option("--stride", k.stride, "paper scene: the truth of every pixel near a silhouette and one in this many "
                  "elsewhere, counted that many times (accuracy/stratified.hpp); 1: every pixel")
       ->check(CLI::Range(1u, 1024u))->capture_default_str();
+  CLI::Option* origin = app.add_option("--origin", k.origin, "paper scene: place it at X,Y,Z (world units, e.g. 1e6,0,0), "
+                                       "drawn relative to a WorldOrigin at the camera; the truth stays at 0")
+                            ->expected(3)->delimiter(',');
+  app.add_flag("--raw-floats", k.raw_floats, "with --origin: float coordinates from (0, 0, 0), the error WorldOrigin removes")
+      ->needs(origin);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(k);

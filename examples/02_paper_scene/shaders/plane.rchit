@@ -1,5 +1,6 @@
 #version 460
-// The ground: two triangles in the object-space plane y = 0, checkered by world position.
+// The ground: two triangles in the object-space plane y = 0, checkered in object space, so the
+// checker stays on the plane when the scene is drawn relative to another origin (world.hpp).
 #include "surface.glsl"
 
 void main() {
@@ -10,7 +11,8 @@ void main() {
 #endif
   vec3 albedo = arguments.albedo;
   if (arguments.checker_size > 0.0) {
-    ivec2 cell = ivec2(floor(vec2(p.x, p.z) / arguments.checker_size));
+    vec3 q = gl_WorldToObjectEXT * vec4(p, 1.0);
+    ivec2 cell = ivec2(floor(q.xz / arguments.checker_size));
     if (((cell.x + cell.y) & 1) != 0) albedo = arguments.albedo_alt;
   }
   vec3 colour = shade_surface(p, n, albedo, 0.0);
