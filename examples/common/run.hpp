@@ -9,8 +9,8 @@
 //   // or all of the above for a proceduray::Scene<Interface> with renderer_options(cache), in one call:
 //   return examples::run_scene(argc, argv, "my_example", {.width = 1024, .height = 768}, slot,
 //                              [](const examples::Options& o, std::uint32_t frame) { return constants(o, frame); },
-//                              [] { return MyScene(); },                  // made once the options are parsed
-//                              [&](CLI::App& app) { app.add_flag("--mine", mine); });   // its own options, or {}
+//                              [] { return MyScene(); },   // made once the options are parsed
+//                              {});                         // or its own options: [&](CLI::App& app) {...}
 #pragma once
 
 #include "cli.hpp"
