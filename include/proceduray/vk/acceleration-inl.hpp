@@ -19,7 +19,7 @@ PROCEDURAY_DECL AccelerationStructure::AccelerationStructure(const Context& ctx,
   info.type = type;
   VkAccelerationStructureKHR raw = VK_NULL_HANDLE;
   check(ctx.rt().create_acceleration_structure(ctx.device(), &info, nullptr, &raw), "vkCreateAccelerationStructureKHR");
-  m_handle = own(ctx.device(), raw, ctx.rt().destroy_acceleration_structure);
+  m_handle = own(ctx, raw, ctx.rt().destroy_acceleration_structure);
   auto where = make<VkAccelerationStructureDeviceAddressInfoKHR>(VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR);
   where.accelerationStructure = raw;
   m_address = ctx.rt().get_acceleration_structure_device_address(ctx.device(), &where);
@@ -130,7 +130,7 @@ PROCEDURAY_DECL std::vector<AccelerationStructure> build_structures(const Contex
     query_info.queryCount = n;
     VkQueryPool raw = VK_NULL_HANDLE;
     check(vkCreateQueryPool(ctx.device(), &query_info, nullptr, &raw), "vkCreateQueryPool");
-    pool = own(ctx.device(), raw, vkDestroyQueryPool);
+    pool = own(ctx, raw, vkDestroyQueryPool);
   }
   ctx.submit([&](VkCommandBuffer cmd) {
     if (compact) vkCmdResetQueryPool(cmd, pool.get(), 0, n);

@@ -19,7 +19,7 @@ PROCEDURAY_DECL Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUs
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   VkBuffer raw = VK_NULL_HANDLE;
   check(vkCreateBuffer(ctx.device(), &info, nullptr, &raw), "vkCreateBuffer", std::to_string(size) + " bytes");
-  m_buffer = own(ctx.device(), raw, vkDestroyBuffer);
+  m_buffer = own(ctx, raw, vkDestroyBuffer);
 
   VkMemoryRequirements needs{};
   vkGetBufferMemoryRequirements(ctx.device(), raw, &needs);
@@ -39,7 +39,7 @@ PROCEDURAY_DECL Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUs
   m_device = ctx.device();
   VkDeviceMemory mem = VK_NULL_HANDLE;
   check(vkAllocateMemory(ctx.device(), &alloc, nullptr, &mem), "vkAllocateMemory", std::to_string(needs.size) + " bytes");
-  m_memory = own(ctx.device(), mem, vkFreeMemory);
+  m_memory = own(ctx, mem, vkFreeMemory);
   check(vkBindBufferMemory(ctx.device(), raw, mem, 0), "vkBindBufferMemory");
   if (memory != device_local) {
     check(vkMapMemory(ctx.device(), mem, 0, VK_WHOLE_SIZE, 0, &m_mapped), "vkMapMemory");

@@ -198,12 +198,22 @@ class Context {
   std::uint64_t submit_count() const noexcept { return m_state->submit_count(); }
   std::vector<std::string> validation_messages() const { return m_state->validation_messages(); }
   bool validation_enabled() const noexcept { return m_state->validation_enabled(); }
-  /// How many Context copies share this device now (the Renderers made from it hold one each).
+  /// How many shares of this device there are now: the Context copies (a Renderer holds one) and
+  /// the device objects made with own(ctx, ...), each of which keeps the device alive.
   long use_count() const noexcept { return m_state.use_count(); }
+  /// A share of the device, for an object that must not outlive it (own(ctx, ...)).
+  std::shared_ptr<const void> share() const noexcept { return m_state; }
 
  private:
   std::shared_ptr<ContextState> m_state;
 };
+
+/// Takes ownership of `handle`, made on ctx's device; the handle keeps the device alive until it
+/// is destroyed, so a Buffer, Texture or pipeline may outlive every Context copy.
+template <class Handle>
+DeviceHandle<Handle> own(const Context& ctx, Handle handle, DestroyFn<Handle> destroy) {
+  return own(ctx.device(), handle, destroy, ctx.share());
+}
 
 // ---------------------------------------------------------------------------------------------
 

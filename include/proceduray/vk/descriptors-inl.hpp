@@ -24,7 +24,7 @@ PROCEDURAY_DECL DescriptorSet::DescriptorSet(const Context& ctx, const std::vect
   info.pBindings = described.data();
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
   check(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &layout), "vkCreateDescriptorSetLayout");
-  m_layout = own(ctx.device(), layout, vkDestroyDescriptorSetLayout);
+  m_layout = own(ctx, layout, vkDestroyDescriptorSetLayout);
 
   std::vector<VkDescriptorPoolSize> sizes;
   for (auto [type, count] : counts) sizes.push_back({type, count});
@@ -34,7 +34,7 @@ PROCEDURAY_DECL DescriptorSet::DescriptorSet(const Context& ctx, const std::vect
   pool_info.pPoolSizes = sizes.data();
   VkDescriptorPool pool = VK_NULL_HANDLE;
   check(vkCreateDescriptorPool(ctx.device(), &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
-  m_pool = own(ctx.device(), pool, vkDestroyDescriptorPool);
+  m_pool = own(ctx, pool, vkDestroyDescriptorPool);
 
   auto alloc = make<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
   alloc.descriptorPool = pool;

@@ -19,7 +19,7 @@ PROCEDURAY_DECL FrameRing::FrameRing(const Context& ctx, std::uint32_t frames_in
   pool_info.queueFamilyIndex = ctx.queue_family();
   VkCommandPool pool = VK_NULL_HANDLE;
   check(vkCreateCommandPool(ctx.device(), &pool_info, nullptr, &pool), "vkCreateCommandPool", "frame ring");
-  m_pool = own(ctx.device(), pool, vkDestroyCommandPool);
+  m_pool = own(ctx, pool, vkDestroyCommandPool);
 
   std::vector<VkCommandBuffer> cmds(frames_in_flight);
   auto alloc = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
@@ -33,7 +33,7 @@ PROCEDURAY_DECL FrameRing::FrameRing(const Context& ctx, std::uint32_t frames_in
     auto fence_info = make<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
     VkFence fence = VK_NULL_HANDLE;
     check(vkCreateFence(ctx.device(), &fence_info, nullptr, &fence), "vkCreateFence", "frame ring");
-    m_slots[i].fence = own(ctx.device(), fence, vkDestroyFence);
+    m_slots[i].fence = own(ctx, fence, vkDestroyFence);
     m_slots[i].cmd = cmds[i];
     m_slots[i].index = i;
   }
@@ -43,7 +43,7 @@ PROCEDURAY_DECL FrameRing::FrameRing(const Context& ctx, std::uint32_t frames_in
     info.queryCount = 2 * frames_in_flight;
     VkQueryPool queries = VK_NULL_HANDLE;
     check(vkCreateQueryPool(ctx.device(), &info, nullptr, &queries), "vkCreateQueryPool", "frame ring");
-    m_queries = own(ctx.device(), queries, vkDestroyQueryPool);
+    m_queries = own(ctx, queries, vkDestroyQueryPool);
   }
 }
 

@@ -83,7 +83,7 @@ PROCEDURAY_DECL VkPipeline create_pipeline(const Context& ctx, const PipelineDes
     info.pCode = shader.spirv.data();
     VkShaderModule module = VK_NULL_HANDLE;
     check(vkCreateShaderModule(ctx.device(), &info, nullptr, &module), "vkCreateShaderModule");
-    modules.push_back(own(ctx.device(), module, vkDestroyShaderModule));
+    modules.push_back(own(ctx, module, vkDestroyShaderModule));
     auto stage = make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     stage.stage = detail::vk_stage(shader.stage);
     stage.module = module;
@@ -182,10 +182,10 @@ PROCEDURAY_DECL Pipeline::Pipeline(const Context& ctx, const PipelineDesc& desc)
   layout_info.pPushConstantRanges = &push;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
-  m_layout = own(ctx.device(), layout, vkDestroyPipelineLayout);
+  m_layout = own(ctx, layout, vkDestroyPipelineLayout);
 
   const VkPipeline pipeline = detail::create_pipeline(ctx, desc, layout);
-  m_pipeline = own(ctx.device(), pipeline, vkDestroyPipeline);
+  m_pipeline = own(ctx, pipeline, vkDestroyPipeline);
   m_stack_size = detail::default_stack_size(ctx, desc, pipeline);
   m_handles.resize(std::size_t{m_group_count} * m_handle_size);
   if (m_group_count > 0) {

@@ -36,7 +36,7 @@ PROCEDURAY_DECL PipelineCache::PipelineCache(const Context& ctx, std::filesystem
   info.pInitialData = data.empty() ? nullptr : data.data();
   VkPipelineCache cache = VK_NULL_HANDLE;
   check(vkCreatePipelineCache(ctx.device(), &info, nullptr, &cache), "vkCreatePipelineCache");
-  m_cache = own(ctx.device(), cache, vkDestroyPipelineCache);
+  m_cache = own(ctx, cache, vkDestroyPipelineCache);
   m_loaded = !data.empty();
 }
 

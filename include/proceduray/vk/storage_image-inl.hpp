@@ -47,7 +47,7 @@ PROCEDURAY_DECL StorageImage::StorageImage(const Context& ctx, std::uint32_t wid
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkImage image = VK_NULL_HANDLE;
   check(vkCreateImage(ctx.device(), &info, nullptr, &image), "vkCreateImage");
-  m_image = own(ctx.device(), image, vkDestroyImage);
+  m_image = own(ctx, image, vkDestroyImage);
 
   VkMemoryRequirements needs{};
   vkGetImageMemoryRequirements(ctx.device(), image, &needs);
@@ -56,7 +56,7 @@ PROCEDURAY_DECL StorageImage::StorageImage(const Context& ctx, std::uint32_t wid
   alloc.memoryTypeIndex = ctx.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   VkDeviceMemory memory = VK_NULL_HANDLE;
   check(vkAllocateMemory(ctx.device(), &alloc, nullptr, &memory), "vkAllocateMemory", "storage image");
-  m_memory = own(ctx.device(), memory, vkFreeMemory);
+  m_memory = own(ctx, memory, vkFreeMemory);
   // m_memory is declared first so the image is destroyed before its memory is freed.
   check(vkBindImageMemory(ctx.device(), image, memory, 0), "vkBindImageMemory");
 
@@ -67,7 +67,7 @@ PROCEDURAY_DECL StorageImage::StorageImage(const Context& ctx, std::uint32_t wid
   view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(ctx.device(), &view_info, nullptr, &view), "vkCreateImageView");
-  m_view = own(ctx.device(), view, vkDestroyImageView);
+  m_view = own(ctx, view, vkDestroyImageView);
 
   if (init == now) ctx.submit([&](VkCommandBuffer cmd) { record_init(cmd); });
 }

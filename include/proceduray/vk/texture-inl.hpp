@@ -82,7 +82,7 @@ PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, co
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkImage image = VK_NULL_HANDLE;
   check(vkCreateImage(ctx.device(), &info, nullptr, &image), "vkCreateImage");
-  m_image = own(ctx.device(), image, vkDestroyImage);
+  m_image = own(ctx, image, vkDestroyImage);
   VkMemoryRequirements needs{};
   vkGetImageMemoryRequirements(ctx.device(), image, &needs);
   auto alloc = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
@@ -90,7 +90,7 @@ PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, co
   alloc.memoryTypeIndex = ctx.memory_type(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   VkDeviceMemory memory = VK_NULL_HANDLE;
   check(vkAllocateMemory(ctx.device(), &alloc, nullptr, &memory), "vkAllocateMemory", "texture");
-  m_memory = own(ctx.device(), memory, vkFreeMemory);
+  m_memory = own(ctx, memory, vkFreeMemory);
   check(vkBindImageMemory(ctx.device(), image, memory, 0), "vkBindImageMemory");
   upload(ctx, data, image);
 
@@ -101,7 +101,7 @@ PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, co
   view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, m_levels, 0, m_layers};
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(ctx.device(), &view_info, nullptr, &view), "vkCreateImageView");
-  m_view = own(ctx.device(), view, vkDestroyImageView);
+  m_view = own(ctx, view, vkDestroyImageView);
 
   constexpr VkSamplerAddressMode modes[] = {VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
                                             VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT};
@@ -115,7 +115,7 @@ PROCEDURAY_DECL Texture::Texture(const Context& ctx, const TextureData& data, co
   s.maxLod = static_cast<float>(m_levels);
   VkSampler handle = VK_NULL_HANDLE;
   check(vkCreateSampler(ctx.device(), &s, nullptr, &handle), "vkCreateSampler");
-  m_sampler = own(ctx.device(), handle, vkDestroySampler);
+  m_sampler = own(ctx, handle, vkDestroySampler);
 }
 
 PROCEDURAY_DECL void Texture::upload(const Context& ctx, const TextureData& data, VkImage image) {
