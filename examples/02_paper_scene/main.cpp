@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
         ->needs(origin);
   };
   const auto scene = [&] {
-    if (!at.empty()) world = paper::World::at({at[0], at[1], at[2]}, raw_floats ? paper::Reorigin::off : paper::Reorigin::on);
+    world = paper::World::from_options(at, raw_floats);
     return paper::PaperScene({}, paper::Tracing::recursive, paper::max_depth_limit, world);
   };
   const auto constants = [&](const examples::Options& o, std::uint32_t frame) {

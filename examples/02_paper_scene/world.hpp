@@ -47,6 +47,15 @@ struct World {
     return {offset, reorigin == Reorigin::on ? pr::WorldOrigin(eye) : pr::WorldOrigin()};
   }
 
+  /// What the tools' `--origin X,Y,Z` (`xyz`, empty: not given) and `--raw-floats` ask for.
+  static World from_options(const std::vector<double>& xyz, bool raw_floats) {
+    if (xyz.empty()) return {};
+    if (xyz.size() != 3) {
+      throw pr::UsageError("paper::World: --origin takes 3 numbers X,Y,Z, not " + std::to_string(xyz.size()));
+    }
+    return at({xyz[0], xyz[1], xyz[2]}, raw_floats ? Reorigin::off : Reorigin::on);
+  }
+
   /// An instance placed in the scene's own coordinates, moved to the world and made relative to
   /// the origin, in double before the one rounding to float.
   pr::InstanceTransform transform(const pr::Placement& p) const {

@@ -158,8 +158,7 @@ std::vector<acc::Label> knob_labels(const Constants& c) {
 
 Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
   // The scene may stand far from (0, 0, 0); its truth is the scene at 0: a translation moves no t.
-  const paper::World world = k.origin.empty() ? paper::World{}
-      : paper::World::at({k.origin[0], k.origin[1], k.origin[2]}, k.raw_floats ? paper::Reorigin::off : paper::Reorigin::on);
+  const paper::World world = paper::World::from_options(k.origin, k.raw_floats);
   const paper::PaperScene scene(paper::accuracy_outputs, paper::Tracing::recursive, paper::max_depth_limit, world);
   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::Frame constants = paper::default_frame(width, height, k.time);

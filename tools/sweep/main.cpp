@@ -69,6 +69,8 @@ struct Options {
   std::uint32_t stride = 1;  // paper: the truth of one pixel in this many off the silhouette band
   unsigned frames = 9;
   unsigned warmup = 3;
+  std::vector<double> origin;  // paper: placed at X,Y,Z (examples/02_paper_scene/world.hpp); empty: at 0
+  bool raw_floats = false;     // with origin: no WorldOrigin at the camera
 };
 
 /// A usage error of the tool: printed with its name, exit status 2.
@@ -407,7 +409,10 @@ struct Sweep {
 };
 
 void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
-  const paper::PaperScene measured_scene(paper::accuracy_outputs), timed_scene;
+  // The scene may stand far from (0, 0, 0); its truth is the scene at 0: a translation moves no t.
+  const paper::World world = paper::World::from_options(sw.o.origin, sw.o.raw_floats);
+  const paper::PaperScene measured_scene(paper::accuracy_outputs, paper::Tracing::recursive, paper::max_depth_limit, world);
+  const paper::PaperScene timed_scene({}, paper::Tracing::recursive, paper::max_depth_limit, world);
   pr::vk::Renderer measured(sw.ctx, measured_scene, general(measured_scene.renderer_options()));
   pr::vk::Renderer timed(sw.ctx, timed_scene, timed_scene.renderer_options());
   paper::Frame base = paper::default_frame(sw.width, sw.height, sw.o.time);
@@ -421,6 +426,7 @@ void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
     paper::Frame c = base;
     std::vector<std::uint32_t> ids;
     const auto taken = sw.apply(c, objects, p, ids);
+    world.place(c);
     const double ms = time_frames(timed, paper::constants_slot, c, sw.o, sw.width, sw.height);
     const auto results = measure(
         measured, paper::constants_slot, c, truth, sw.width, sw.height, ids,
@@ -488,6 +494,9 @@ int run(const Options& o) {
     throw BadInput("--shard '" + o.shard + "' is not i/n with 1 <= i <= n, e.g. 1/4");
   }
   if (o.alone && o.scene != "d3d12") throw BadInput("--alone renders the D3D12 primitives one by one; use --scene d3d12");
+  if (!o.origin.empty() && o.scene != "paper") {
+    throw BadInput("--origin places the paper scene only, not '" + o.scene + "'; drop it or pass --scene paper");
+  }
   if (!o.preset.empty() && !o.vary.empty()) throw BadInput("give --preset or --vary, not both");
   const std::vector<Object> objects = selected(scene_objects(o.scene), o.objects);
   const std::vector<Point> all = o.preset == "methods" ? methods_preset() : grid(o.vary);
@@ -569,6 +578,11 @@ int main(int argc, char** argv) {
   app.add_option("--spacing", o.spacing, "paper reference sample spacing in footprints")->check(CLI::Range(1e-6, 1.0))
       ->capture_default_str();
   app.add_flag("--validation", o.validation, "enable the Khronos validation layer");
+  CLI::Option* origin = app.add_option("--origin", o.origin, "paper scene: place it at X,Y,Z (world units, e.g. 1e6,0,0), "
+                                       "drawn relative to a WorldOrigin at the camera; the truth stays at 0")
+                            ->expected(3)->delimiter(',');
+  app.add_flag("--raw-floats", o.raw_floats, "with --origin: float coordinates from (0, 0, 0), the error WorldOrigin removes")
+      ->needs(origin);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(o);
