@@ -5,7 +5,7 @@
 //   paper::PaperScene scene({}, paper::Tracing::recursive, paper::max_depth_limit, far);
 //   paper::SceneConstants c = paper::default_constants(1024, 768, 0.0f);
 //   far.place(c);                                                       // eye and light, moved the same
-//   paper::World::at(p, paper::Reorigin::off)                           // raw floats: what WorldOrigin removes
+//   paper::World::at({1e6, 0.0, 0.0}, paper::Reorigin::off)             // raw floats: what WorldOrigin removes
 //
 // Why: a float world coordinate of 1e6 is rounded to 0.06 units, dozens of pixel footprints at
 // this camera's distances. Every world point the GPU sees goes through one WorldOrigin, in
