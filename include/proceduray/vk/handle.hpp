@@ -1,12 +1,12 @@
 // Move-only ownership of Vulkan device objects: std::unique_ptr with the destroy call as deleter.
 //
-//   proceduray::vk::DeviceHandle<VkBuffer> buffer = proceduray::vk::own(ctx, raw, vkDestroyBuffer);
+//   proceduray::vk::DeviceHandle<VkBuffer> buffer = proceduray::vk::own(device, raw, vkDestroyBuffer);
 //   buffer.get();   // the VkBuffer; destroyed when `buffer` goes out of scope
 //
-// A handle made with own(ctx, ...) (context.hpp) holds a share of its Context's device, as
-// Vulkan-Hpp's RAII children hold their parent: the device goes only after the last object made
-// on it, whatever order the caller destroys things in. own(device, ...) holds none: for the
-// Context's own objects, which the device must not wait for.
+// The library's objects use own(ctx, raw, destroy) (context.hpp): that handle holds a share of
+// its Context's device, as Vulkan-Hpp's RAII children hold their parent, so the device goes only
+// after the last object made on it, whatever order the caller destroys things in. own(device, ...)
+// holds none: for the Context's own objects, which the device must not wait for.
 // Members of a class holding several handles are destroyed in reverse declaration order,
 // so declare what others depend on (memory) before them (the buffer bound to it).
 #pragma once
