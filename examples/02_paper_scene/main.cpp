@@ -4,23 +4,14 @@
 // camera (world.hpp); --raw-floats drops the re-origin, to see the error it removes.
 #include "../common/run.hpp"
 #include "paper_scene.hpp"
-
-#include <CLI/CLI.hpp>
-
-#include <vector>
+#include "world_options.hpp"
 
 int main(int argc, char** argv) {
-  std::vector<double> at;
-  bool raw_floats = false;
+  paper::WorldOptions where;
   paper::World world;
-  const auto options = [&](CLI::App& app) {
-    CLI::Option* origin = app.add_option("--origin", at, "place the scene at X,Y,Z (world units), e.g. 1e6,0,0")
-                              ->expected(3)->delimiter(',');
-    app.add_flag("--raw-floats", raw_floats, "with --origin: float coordinates from (0, 0, 0), not from the camera")
-        ->needs(origin);
-  };
+  const auto options = [&](CLI::App& app) { paper::add_world_options(app, where); };
   const auto scene = [&] {
-    world = paper::World::from_options(at, raw_floats);
+    world = where.world();
     return paper::PaperScene({}, paper::Tracing::recursive, paper::max_depth_limit, world);
   };
   const auto constants = [&](const examples::Options& o, std::uint32_t frame) {

@@ -13,6 +13,7 @@
 // ray's: evaluations per ray, a cost that does not depend on the machine.
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/accuracy.hpp"
+#include "02_paper_scene/world_options.hpp"
 #include "common/set_constants.hpp"
 #include "field/field_tool.hpp"
 #include "02_paper_scene/reference.hpp"
@@ -53,8 +54,7 @@ struct Knobs {
   double spacing = 1.0e-3;   // reference spacing, footprints (paper scene)
   std::uint32_t iteration_factor = 1;
   std::uint32_t stride = 1;  // paper scene: the truth of one pixel in this many outside the silhouette band
-  std::vector<double> origin;  // paper scene: placed at X,Y,Z (examples/02_paper_scene/world.hpp); empty: at 0
-  bool raw_floats = false;     // with origin: no WorldOrigin at the camera
+  paper::WorldOptions where;  // paper scene: --origin, --raw-floats (examples/02_paper_scene/world_options.hpp)
 };
 
 namespace acc = proceduray::accuracy;
@@ -158,7 +158,7 @@ std::vector<acc::Label> knob_labels(const Constants& c) {
 
 Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned width, unsigned height) {
   // The scene may stand far from (0, 0, 0); its truth is the scene at 0: a translation moves no t.
-  const paper::World world = paper::World::from_options(k.origin, k.raw_floats);
+  const paper::World world = k.where.world();
   const paper::PaperScene scene(paper::accuracy_outputs, paper::Tracing::recursive, paper::max_depth_limit, world);
   proceduray::vk::Renderer renderer(ctx, scene, scene.renderer_options());
   paper::Frame constants = paper::default_frame(width, height, k.time);
@@ -180,9 +180,9 @@ Measurement measure_paper(proceduray::vk::Context& ctx, const Knobs& k, unsigned
                static_cast<double>(truth.evaluations), k.spacing, k.iteration_factor);
   out.settings = format("scene: paper, %ux%u, time %.2f s; Mandelbulb knobs: %s", width, height,
                         static_cast<double>(k.time), proceduray::describe(constants.knobs[paper::mandelbulb_id]).c_str());
-  if (!k.origin.empty()) {
+  if (k.where.given()) {
     out.settings += format("; placed at (%g, %g, %g), %s", world.offset.x, world.offset.y, world.offset.z,
-                           k.raw_floats ? "raw float coordinates" : "WorldOrigin at the camera");
+                           k.where.raw_floats ? "raw float coordinates" : "WorldOrigin at the camera");
   }
   out.trace_ms = frame.trace_ms;
   out.steps.assign(frame.outputs.steps.begin(), frame.outputs.steps.end());
@@ -293,7 +293,7 @@ int run(const Knobs& k) {
     std::fprintf(stderr, "proceduray_accuracy: --size '%s' is not WxH with positive numbers, e.g. 320x240\n", k.size.c_str());
     return 2;
   }
-  if (!k.origin.empty() && k.scene != "paper") {
+  if (k.where.given() && k.scene != "paper") {
     std::fprintf(stderr, "proceduray_accuracy: --origin places the paper scene only, not '%s'; drop it or pass "
                  "--scene paper\n", k.scene.c_str());
     return 2;
@@ -401,11 +401,7 @@ int main(int argc, char** argv) {
   app.add_option("--stride", k.stride, "paper scene: the truth of every pixel near a silhouette and one in this many "
                  "elsewhere, counted that many times (accuracy/stratified.hpp); 1: every pixel")
       ->check(CLI::Range(1u, 1024u))->capture_default_str();
-  CLI::Option* origin = app.add_option("--origin", k.origin, "paper scene: place it at X,Y,Z (world units, e.g. 1e6,0,0), "
-                                       "drawn relative to a WorldOrigin at the camera; the truth stays at 0")
-                            ->expected(3)->delimiter(',');
-  app.add_flag("--raw-floats", k.raw_floats, "with --origin: float coordinates from (0, 0, 0), the error WorldOrigin removes")
-      ->needs(origin);
+  paper::add_world_options(app, k.where);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(k);

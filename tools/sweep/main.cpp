@@ -24,6 +24,7 @@
 #include "field/field_tool.hpp"
 #include "02_paper_scene/paper_scene.hpp"
 #include "02_paper_scene/reference.hpp"
+#include "02_paper_scene/world_options.hpp"
 #include "03_d3d12_scene/accuracy.hpp"
 
 #include <proceduray/accuracy/report.hpp>
@@ -69,8 +70,7 @@ struct Options {
   std::uint32_t stride = 1;  // paper: the truth of one pixel in this many off the silhouette band
   unsigned frames = 9;
   unsigned warmup = 3;
-  std::vector<double> origin;  // paper: placed at X,Y,Z (examples/02_paper_scene/world.hpp); empty: at 0
-  bool raw_floats = false;     // with origin: no WorldOrigin at the camera
+  paper::WorldOptions where;  // paper: --origin, --raw-floats (examples/02_paper_scene/world_options.hpp)
 };
 
 /// A usage error of the tool: printed with its name, exit status 2.
@@ -410,7 +410,7 @@ struct Sweep {
 
 void sweep_paper(Sweep& sw, const std::vector<Object>& objects) {
   // The scene may stand far from (0, 0, 0); its truth is the scene at 0: a translation moves no t.
-  const paper::World world = paper::World::from_options(sw.o.origin, sw.o.raw_floats);
+  const paper::World world = sw.o.where.world();
   const paper::PaperScene measured_scene(paper::accuracy_outputs, paper::Tracing::recursive, paper::max_depth_limit, world);
   const paper::PaperScene timed_scene({}, paper::Tracing::recursive, paper::max_depth_limit, world);
   pr::vk::Renderer measured(sw.ctx, measured_scene, general(measured_scene.renderer_options()));
@@ -494,7 +494,7 @@ int run(const Options& o) {
     throw BadInput("--shard '" + o.shard + "' is not i/n with 1 <= i <= n, e.g. 1/4");
   }
   if (o.alone && o.scene != "d3d12") throw BadInput("--alone renders the D3D12 primitives one by one; use --scene d3d12");
-  if (!o.origin.empty() && o.scene != "paper") {
+  if (o.where.given() && o.scene != "paper") {
     throw BadInput("--origin places the paper scene only, not '" + o.scene + "'; drop it or pass --scene paper");
   }
   if (!o.preset.empty() && !o.vary.empty()) throw BadInput("give --preset or --vary, not both");
@@ -578,11 +578,7 @@ int main(int argc, char** argv) {
   app.add_option("--spacing", o.spacing, "paper reference sample spacing in footprints")->check(CLI::Range(1e-6, 1.0))
       ->capture_default_str();
   app.add_flag("--validation", o.validation, "enable the Khronos validation layer");
-  CLI::Option* origin = app.add_option("--origin", o.origin, "paper scene: place it at X,Y,Z (world units, e.g. 1e6,0,0), "
-                                       "drawn relative to a WorldOrigin at the camera; the truth stays at 0")
-                            ->expected(3)->delimiter(',');
-  app.add_flag("--raw-floats", o.raw_floats, "with --origin: float coordinates from (0, 0, 0), the error WorldOrigin removes")
-      ->needs(origin);
+  paper::add_world_options(app, o.where);
   CLI11_PARSE(app, argc, argv);
   try {
     return run(o);
